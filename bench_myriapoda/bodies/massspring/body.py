@@ -1,0 +1,167 @@
+"""``massspring``: Miller's cube-lattice body (Miller 1988), orchestration only.
+
+Units.  Miller gives k and D "per unit mass" in his own units.  We read them
+as accelerations per unit length in units where time is one animation frame
+(``frame_rate_hz``, 30 by default): a spring between masses m carries
+k_SI = k * fps^2 * m [N/m] and D_SI = D * fps * m [N s/m].  The presets keep
+Miller's numbers (worm k = 1.5, D = 0.9, 10 substeps per frame; snake k = 0.5,
+D = 3.5, 25 substeps; caterpillar k = 0.3, D = 0.6) and the default time step
+is one substep, dt = 1 / (fps * substeps).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...controllers.muscle_waves import wave_table
+from ...core.registry import BodySpec, register_body
+from ...core.schema import rng
+from ...world.terrain import terrain_from_scenario
+from ...world.terrain_kernels import signed_distance
+from ..friction_kernels import friction_params
+from ..observation import Observation
+from . import kernels as K
+from .lattice import build_lattice
+
+
+@dataclass(frozen=True)
+class MassSpringConfig:
+    """Keys of ``[bodies.massspring]`` in a creature file (and ``--set body.KEY``)."""
+
+    name: str = rng("massspring")
+    preset: str = rng("", doc="name of the Miller preset these constants come from (documentation only)")
+    stiffness: float = rng(1.5, ge=0.0, doc="Miller's k per unit mass [1/frame^2]")
+    damping: float = rng(0.9, ge=0.0, doc="Miller's D per unit mass [1/frame]")
+    frame_rate_hz: float = rng(60.0, gt=0.0, doc="animation frame rate that defines Miller's time unit [Hz]")
+    substeps_per_frame: int = rng(10, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
+    integrator: str = rng("symplectic", choices=("symplectic", "euler"),
+                          doc="semi-implicit Euler, or Miller's explicit Euler x += v dt + a dt^2/2")
+
+
+def default_dt(cfg: MassSpringConfig) -> float:
+    return 1.0 / (cfg.frame_rate_hz * cfg.substeps_per_frame)
+
+
+class BodyMassSpring:
+    """A creature as a Miller cube lattice on a terrain.
+
+    State: ``x``, ``v`` (n_nodes, 3) [m], [m/s].  The body is built lying
+    along +x (head first) with its underside ``start_height_m`` above the
+    terrain, turned to lie along a slope if the terrain is one.
+    """
+
+    name = "massspring"
+
+    def __init__(self, case):
+        cre = case.creature
+        cfg: MassSpringConfig = case.body
+        self.case = case
+        self.lattice = lat = build_lattice(cre.segments, cre.segment_length_m, cre.width_m, cre.height_m)
+        n = lat.n_nodes
+        m_node = cre.mass_kg / n
+        self.mass = np.full(n, m_node)
+        self.inv_mass = 1.0 / self.mass
+        fps = cfg.frame_rate_hz
+        self.stiffness = np.full(lat.n_springs, cfg.stiffness * fps * fps * m_node)
+        self.damping = np.full(lat.n_springs, cfg.damping * fps * m_node)
+        self.s_seg = (np.arange(cre.segments) + 0.5) * cre.segment_length_m
+        self.waves = wave_table(case.gait, cre.body_length_m, passive=case.scenario.passive)
+        self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
+        self.fric_model, self.fric = friction_params(case.friction)
+        phys = np.zeros(K.N_PHYS)
+        phys[K.GRAVITY] = case.scenario.gravity_m_s2
+        phys[K.DT] = case.dt
+        phys[K.RAMP_S] = case.gait.ramp_s
+        phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
+        phys[K.R_N] = case.collision.r_n
+        phys[K.R_T] = case.collision.r_t
+        phys[K.MAX_SPEED] = case.stability.max_speed_m_s
+        phys[K.MAX_PEN] = case.stability.max_penetration_m
+        phys[K.INTEGRATOR] = K.EULER if cfg.integrator == "euler" else K.SYMPLECTIC
+        self.phys = phys
+        self.x = self._initial_positions(case)
+        self.v = np.zeros_like(self.x)
+        # work arrays and accumulators for the kernel
+        self._force = np.zeros_like(self.x)
+        self._act = np.zeros((cre.segments, 3))
+        self._rest = lat.rest_length.copy()
+        self._face_scale = np.ones(cre.segments + 1)
+        self._spine = np.zeros((cre.segments + 1, 3))
+        self.acc = np.zeros(K.N_ACC)
+
+    # ------------------------------------------------------------------ set-up
+    def _initial_positions(self, case) -> np.ndarray:
+        x = self.lattice.rest_nodes.copy()
+        sc = case.scenario
+        if sc.terrain == "slope":
+            # lie along the incline, head uphill: rotate about z by the slope angle
+            a = math.radians(sc.slope_deg)
+            c, s = math.cos(a), math.sin(a)
+            x = x @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
+        x[:, 0] += sc.start_x_m
+        phi = np.array([signed_distance(self.terr_kind, self.terr, *p) for p in x])
+        # clearance of the underside: shift along the surface normal direction (y for flat kinds)
+        if sc.terrain == "slope":
+            a = math.radians(sc.slope_deg)
+            nrm = np.array([-math.sin(a), math.cos(a), 0.0])
+        else:
+            nrm = np.array([0.0, 1.0, 0.0])
+        x += (sc.start_height_m - phi.min()) * nrm
+        return np.ascontiguousarray(x)
+
+    # ------------------------------------------------------------------ stepping
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        """Run ``n_steps`` steps from time t0 [s] in one kernel call; return (steps done, status code)."""
+        lat = self.lattice
+        return K.advance(self.x, self.v, self.inv_mass, lat.springs, self.stiffness, self.damping, lat.kind, lat.seg,
+                         lat.corner_a, lat.corner_b, lat.L0, lat.Lc, self.s_seg, self.waves, self.fric_model,
+                         self.fric, self.terr_kind, self.terr, self.phys, t0, n_steps,
+                         self._force, self._act, self._rest, self._face_scale, self._spine, self.acc)
+
+    def compile(self) -> None:
+        """Trigger (or load from cache) the JIT compilation without changing the state."""
+        x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
+        self.advance(0.0, 1)
+        self.energy(0.0)
+        self.x[:], self.v[:], self.acc[:] = x, v, acc
+
+    @staticmethod
+    def status_text(code: int) -> str:
+        return K.STATUS_TEXT.get(code, f"status {code}")
+
+    # ------------------------------------------------------------------ observation
+    def observe(self, t: float, with_nodes: bool = False) -> Observation:
+        x = self.x
+        faces = x.reshape(-1, 4, 3).mean(axis=1)
+        seg = 0.5 * (faces[:-1] + faces[1:])
+        com = (self.mass[:, None] * x).sum(axis=0) / self.mass.sum()
+        return Observation(t=t, segment_centers=seg, com=com, head=faces[0], tail=faces[-1],
+                           energy=np.array(self.energy(t)), nodes=x.copy() if with_nodes else None)
+
+    def energy(self, t: float) -> tuple[float, float, float]:
+        """(kinetic, elastic, gravitational) [J] with the rest lengths of time t."""
+        from ...controllers.muscle_waves import segment_activation
+        lat = self.lattice
+        segment_activation(self.waves, self.phys[K.RAMP_S], self.s_seg, t, self._act)
+        K.lattice_rest_lengths(self._act, self.phys[K.VOLUME] != 0.0, lat.kind, lat.seg, lat.corner_a,
+                               lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._rest)
+        return K.lattice_energy(self.x, self.v, self.mass, lat.springs, self.stiffness, self._rest,
+                                self.phys[K.GRAVITY])
+
+    def contact_fraction_mean(self) -> float:
+        return float(self.acc[K.ACC_CONTACT_SUM] / max(self.acc[K.ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        return float(self.acc[K.ACC_MAX_PEN])
+
+
+register_body(BodySpec(
+    name="massspring",
+    description="Miller 1988: cube lattice of point masses, edge and face-diagonal springs, directional friction",
+    config_cls=MassSpringConfig,
+    factory=BodyMassSpring,
+    capabilities=frozenset({"muscles", "friction:miller", "friction:coulomb", "friction:stick"}),
+    default_dt=default_dt,
+))

@@ -1,0 +1,251 @@
+"""Numba kernels of Miller's mass-spring body (Miller 1988 Sec. 3-4).
+
+``advance`` runs many time steps per call.  One step:
+
+1. muscle activation of every segment from the wave table (``segment_activation``);
+2. spring rest lengths from the activation (``lattice_rest_lengths``);
+3. spring forces f = k (L - l) - D dl/dt along each spring (Miller Sec. 3), plus gravity;
+4. velocity update, then ground friction for masses within the contact
+   distance (``friction_kernels.ground_friction``);
+5. position update: semi-implicit (symplectic) Euler x += dt v_new, or
+   Miller's Euler x += dt v + a dt^2 / 2 (here written dt (v_old + v_new) / 2
+   so that friction's velocity change also applies to the position);
+6. collisions as in Miller Sec. 3, Fig. 1: the path of a mass over the step is
+   intersected with the terrain and the part beyond the surface is reflected
+   with r_n along the normal and kept with r_t along the tangent;
+7. blow-up checks: non-finite values, a mass faster than a limit, a mass deeper
+   inside the terrain than a limit.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ...controllers.muscle_waves import segment_activation
+from ...world.terrain_kernels import segment_surface_intersection, signed_distance, surface_normal
+from ..friction_kernels import CONTACT_DISTANCE, MILLER, ground_friction
+from .lattice import AXIAL, CROSS
+
+# scalar parameter vector layout (``phys``)
+GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
+N_PHYS = 10
+SYMPLECTIC, EULER = 0, 1
+
+# status codes returned by ``advance``
+OK, NONFINITE, RUNAWAY_SPEED, DEEP_PENETRATION = 0, 1, 2, 3
+STATUS_TEXT = {OK: "ok", NONFINITE: "non-finite position or velocity", RUNAWAY_SPEED: "runaway speed",
+               DEEP_PENETRATION: "deep penetration"}
+
+# accumulator layout (``acc``): statistics gathered inside the step loop
+ACC_CONTACT_SUM, ACC_STEPS, ACC_MAX_PEN = range(3)
+N_ACC = 4
+
+MIN_STRETCH = 0.1  # a fibre never shortens below 10 % of its rest length (keeps springs non-degenerate)
+
+
+@njit(cache=True)
+def fibre_stretch(act, i, c):
+    """Stretch of the fibre at corner c of segment i: 1 + axial + lateral z_s + dorsal y_s."""
+    zs = 1.0 if (c & 1) else -1.0
+    ys = 1.0 if (c & 2) else -1.0
+    s = 1.0 + act[i, 0] + act[i, 1] * zs + act[i, 2] * ys
+    return max(s, MIN_STRETCH)
+
+
+@njit(cache=True)
+def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face_scale, out):
+    """Overwrite ``out`` (n_springs,) with spring rest lengths [m] for activation ``act`` (n_seg, 3).
+
+    face_scale (n_seg + 1,) is overwritten with each cross-section face's
+    circumferential scale: 1 / sqrt(mean axial stretch of its segments) when
+    ``volume_conserving`` (Miller Sec. 4), else 1.
+    """
+    n_seg = act.shape[0]
+    for j in range(n_seg + 1):
+        if volume_conserving:
+            tot = 0.0
+            cnt = 0
+            if j > 0:
+                tot += max(1.0 + act[j - 1, 0], MIN_STRETCH)
+                cnt += 1
+            if j < n_seg:
+                tot += max(1.0 + act[j, 0], MIN_STRETCH)
+                cnt += 1
+            face_scale[j] = 1.0 / math.sqrt(tot / cnt)
+        else:
+            face_scale[j] = 1.0
+    for e in range(kind.shape[0]):
+        k = kind[e]
+        i = seg[e]
+        if k == AXIAL:
+            out[e] = L0[e] * fibre_stretch(act, i, ca[e])
+        elif k == CROSS:
+            out[e] = Lc[e] * face_scale[i]
+        else:
+            axial = L0[e] * 0.5 * (fibre_stretch(act, i, ca[e]) + fibre_stretch(act, i, cb[e]))
+            cross = Lc[e] * 0.5 * (face_scale[i] + face_scale[i + 1])
+            out[e] = math.sqrt(axial * axial + cross * cross)
+
+
+@njit(cache=True)
+def spring_forces(x, v, springs, stiffness, damping, rest, out):
+    """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``out`` (n_nodes, 3).
+
+    x, v: (n_nodes, 3) [m], [m/s]; springs: (n_springs, 2); stiffness [N/m],
+    damping [N s/m], rest [m]: (n_springs,).
+    """
+    for e in range(springs.shape[0]):
+        i = springs[e, 0]
+        j = springs[e, 1]
+        dx = x[j, 0] - x[i, 0]
+        dy = x[j, 1] - x[i, 1]
+        dz = x[j, 2] - x[i, 2]
+        length = math.sqrt(dx * dx + dy * dy + dz * dz)
+        if length < 1e-12:
+            continue
+        ux, uy, uz = dx / length, dy / length, dz / length
+        ldot = (v[j, 0] - v[i, 0]) * ux + (v[j, 1] - v[i, 1]) * uy + (v[j, 2] - v[i, 2]) * uz
+        f = stiffness[e] * (rest[e] - length) - damping[e] * ldot
+        out[i, 0] -= f * ux
+        out[i, 1] -= f * uy
+        out[i, 2] -= f * uz
+        out[j, 0] += f * ux
+        out[j, 1] += f * uy
+        out[j, 2] += f * uz
+
+
+@njit(cache=True)
+def spine_vectors(x, n_faces, out):
+    """Overwrite ``out`` (n_faces, 3) with the unit spine vector of each face.
+
+    Miller Sec. 4: s = (x_{p+1} - x_{p-1}) / |...| from the centres of the next
+    and last segments; here the faces ahead and behind, pointing toward the head
+    (face 0).  The end faces use themselves in place of the missing neighbour.
+    """
+    for j in range(n_faces):
+        a = j - 1 if j > 0 else 0
+        b = j + 1 if j < n_faces - 1 else n_faces - 1
+        sx = sy = sz = 0.0
+        for c in range(4):
+            sx += x[4 * a + c, 0] - x[4 * b + c, 0]
+            sy += x[4 * a + c, 1] - x[4 * b + c, 1]
+            sz += x[4 * a + c, 2] - x[4 * b + c, 2]
+        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+        if nrm > 0.0:
+            out[j, 0], out[j, 1], out[j, 2] = sx / nrm, sy / nrm, sz / nrm
+        else:
+            out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
+
+
+@njit(cache=True)
+def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, Lc, s_seg, waves,
+            fric_model, fric, terr_kind, terr, phys, t0, n_steps,
+            force, act, rest, face_scale, spine, acc):
+    """Advance the lattice ``n_steps`` steps from time t0 [s]; return (steps done, status).
+
+    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  ``force``,
+    ``act``, ``rest``, ``face_scale``, ``spine`` are work arrays (overwritten).
+    ``acc`` accumulates statistics (contact count, steps, max penetration).
+    A step that ends in a blow-up stops the loop and returns its status code.
+    """
+    n_nodes = x.shape[0]
+    n_faces = n_nodes // 4
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
+    for step in range(n_steps):
+        t = t0 + step * dt
+        segment_activation(waves, phys[RAMP_S], s_seg, t, act)
+        lattice_rest_lengths(act, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, rest)
+        force[:, :] = 0.0
+        spring_forces(x, v, springs, stiffness, damping, rest, force)
+        spine_vectors(x, n_faces, spine)
+        n_contact = 0
+        for n in range(n_nodes):
+            im = inv_mass[n]
+            vx = v[n, 0] + dt * force[n, 0] * im
+            vy = v[n, 1] + dt * (force[n, 1] * im - g)
+            vz = v[n, 2] + dt * force[n, 2] * im
+            px, py, pz = x[n, 0], x[n, 1], x[n, 2]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+                nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
+                # Normal impulse per unit mass the surface must deliver to stop
+                # the mass moving into it (and bounce it with r_n).
+                vn = vx * nx + vy * ny + vz * nz
+                jn = -(1.0 + r_n) * vn if vn < 0.0 else 0.0
+                f = n // 4
+                vx, vy, vz = ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz,
+                                             spine[f, 0], spine[f, 1], spine[f, 2], jn)
+            if euler:
+                qx = px + 0.5 * dt * (v[n, 0] + vx)
+                qy = py + 0.5 * dt * (v[n, 1] + vy)
+                qz = pz + 0.5 * dt * (v[n, 2] + vz)
+            else:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            if signed_distance(terr_kind, terr, qx, qy, qz) < 0.0:
+                # Miller Sec. 3: intersect the path with the surface, reflect the rest.
+                s = segment_surface_intersection(terr_kind, terr, px, py, pz, qx, qy, qz)
+                ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
+                nx, ny, nz = surface_normal(terr_kind, terr, ix, iy, iz)
+                dx, dy, dz = qx - ix, qy - iy, qz - iz
+                dn = dx * nx + dy * ny + dz * nz
+                tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
+                qx = ix - r_n * dn * nx + r_t * tx
+                qy = iy - r_n * dn * ny + r_t * ty
+                qz = iz - r_n * dn * nz + r_t * tz
+                vn = vx * nx + vy * ny + vz * nz
+                if vn < 0.0:
+                    wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
+                    vx, vy, vz = r_t * wx - r_n * vn * nx, r_t * wy - r_n * vn * ny, r_t * wz - r_n * vn * nz
+                # A curved surface can leave the reflected point inside: push it out along the normal.
+                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi_q < 0.0:
+                    mx, my, mz = surface_normal(terr_kind, terr, qx, qy, qz)
+                    qx, qy, qz = qx - phi_q * mx, qy - phi_q * my, qz - phi_q * mz
+            x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
+            v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
+        # Blow-up checks (status codes, never an exception).
+        status = OK
+        for n in range(n_nodes):
+            a = x[n, 0] + x[n, 1] + x[n, 2] + v[n, 0] + v[n, 1] + v[n, 2]
+            if not math.isfinite(a):
+                status = NONFINITE
+                break
+            sp2 = v[n, 0] * v[n, 0] + v[n, 1] * v[n, 1] + v[n, 2] * v[n, 2]
+            if sp2 > phys[MAX_SPEED] * phys[MAX_SPEED]:
+                status = RUNAWAY_SPEED
+                break
+            pen = -signed_distance(terr_kind, terr, x[n, 0], x[n, 1], x[n, 2])
+            if pen > acc[ACC_MAX_PEN]:
+                acc[ACC_MAX_PEN] = pen
+            if pen > phys[MAX_PEN]:
+                status = DEEP_PENETRATION
+                break
+        acc[ACC_CONTACT_SUM] += n_contact / n_nodes
+        acc[ACC_STEPS] += 1.0
+        if status != OK:
+            return step + 1, status
+    return n_steps, OK
+
+
+@njit(cache=True)
+def lattice_energy(x, v, mass, springs, stiffness, rest, g):
+    """(kinetic, elastic, gravitational) energy [J]; gravitational measured from y = 0."""
+    ke = 0.0
+    pe_g = 0.0
+    for n in range(x.shape[0]):
+        ke += 0.5 * mass[n] * (v[n, 0] ** 2 + v[n, 1] ** 2 + v[n, 2] ** 2)
+        pe_g += mass[n] * g * x[n, 1]
+    pe_el = 0.0
+    for e in range(springs.shape[0]):
+        i = springs[e, 0]
+        j = springs[e, 1]
+        length = math.sqrt((x[j, 0] - x[i, 0]) ** 2 + (x[j, 1] - x[i, 1]) ** 2 + (x[j, 2] - x[i, 2]) ** 2)
+        pe_el += 0.5 * stiffness[e] * (length - rest[e]) ** 2
+    return ke, pe_el, pe_g

@@ -1,0 +1,235 @@
+"""``bench-myriapoda``: the command line.
+
+    bench-myriapoda                      run the default quick set of cases, print a table, store results
+    bench-myriapoda list [--json]        creatures, bodies, gaits, scenarios, supported combinations
+    bench-myriapoda run --creature C --body B --scenario S [...]   one case
+
+Bad input gives one line on stderr naming the file or flag, the key and what
+is allowed, and exit code 2, before anything is written.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any, Sequence
+
+from .core import registry
+from .core.config import creature_names, load_creature_file, resolve_case, scenario_paths
+from .core.errors import InputError
+from .harness.progress import ProgressBar
+
+EXIT_OK, EXIT_FAIL, EXIT_BAD_INPUT = 0, 1, 2
+
+# The default quick set: one case per creature and gait across Miller's scenarios.
+QUICK_CASES = (
+    ("worm", "massspring", "flat", "rectilinear", 20.0),
+    ("worm", "massspring", "cliff", "rectilinear", 30.0),
+    ("snake", "massspring", "flat", "lateral-undulation", 16.0),
+    ("snake", "massspring", "flat", "sidewinding", 16.0),
+    ("caterpillar", "massspring", "slope", "arching", 16.0),
+)
+
+TABLE_METRICS = ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg", "slip_ratio",
+                 "path_following_error_bl", "contact_fraction", "t_fail_s")
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that reports bad flags as an InputError (one line, exit 2)."""
+
+    def error(self, message: str):
+        raise InputError(self.prog, None, message)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="bench-myriapoda", description="Benchmark suite for simulated myriapods, worms and snakes.")
+    sub = p.add_subparsers(dest="command", parser_class=_Parser)
+
+    ls = sub.add_parser("list", help="creatures, bodies, gaits, scenarios and supported combinations")
+    ls.add_argument("--json", action="store_true", help="print one JSON object")
+
+    run = sub.add_parser("run", help="run one case")
+    run.add_argument("--creature", required=True, help="creature name (models/NAME.toml) or a .toml path")
+    run.add_argument("--body", required=True, help="body model: " + ", ".join(sorted(_bodies())))
+    run.add_argument("--scenario", required=True, help="scenario name (scenarios/NAME.toml) or a .toml path")
+    run.add_argument("--gait", help="gait (default: the creature's default gait)")
+    run.add_argument("--duration", type=float, metavar="SECONDS", help="simulated time [s]")
+    run.add_argument("--dt", type=float, metavar="SECONDS", help="time step [s]")
+    run.add_argument("--seed", type=int, metavar="N", help="random seed")
+    run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                     help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2")
+    run.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    run.add_argument("--record", metavar="FILE.npz", help="save the recorded time series (all node positions)")
+    run.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    run.add_argument("--no-store", action="store_true", help="do not record the run in the results database")
+    run.add_argument("--strict", action="store_true", help="exit 1 when the run is unstable")
+
+    q = sub.add_parser("quick", help="run the default quick set of cases (also what no arguments do)")
+    q.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    q.add_argument("--json", action="store_true", help="print one JSON object per case, one per line")
+    return p
+
+
+def _bodies() -> list[str]:
+    registry.load_all()
+    return list(registry.BODIES)
+
+
+# --------------------------------------------------------------------------- list
+
+def catalogue() -> dict[str, Any]:
+    """Everything ``list`` reports, as plain data."""
+    registry.load_all()
+    creatures, combos = {}, []
+    for name in creature_names():
+        path, data = load_creature_file(name)
+        c = data["creature"]
+        gaits = list(c.get("gaits", [c.get("default_gait")]))
+        bodies = sorted(data.get("bodies", {}))
+        creatures[name] = {"description": c.get("description", ""), "default_gait": c.get("default_gait"),
+                           "gaits": gaits, "bodies": bodies, "file": str(path)}
+        for b in bodies:
+            for g in gaits:
+                if not (registry.GAITS[g].requires - registry.BODIES[b].capabilities):
+                    combos.append({"creature": name, "body": b, "gait": g})
+    scenarios = {}
+    from .core.config import read_toml
+    for name, path in scenario_paths().items():
+        scenarios[name] = {"description": read_toml(path).get("scenario", {}).get("description", ""), "file": str(path)}
+    return {
+        "creatures": creatures,
+        "bodies": {n: {"description": s.description, "capabilities": sorted(s.capabilities)}
+                   for n, s in sorted(registry.BODIES.items())},
+        "gaits": {n: {"description": s.description, "requires": sorted(s.requires)} for n, s in sorted(registry.GAITS.items())},
+        "scenarios": scenarios,
+        "supported": combos,
+    }
+
+
+def cmd_list(args) -> int:
+    cat = catalogue()
+    if args.json:
+        print(json.dumps(cat, indent=2))
+        return EXIT_OK
+    print("creatures:")
+    for n, c in cat["creatures"].items():
+        print(f"  {n:<14} gaits: {', '.join(c['gaits'])} (default {c['default_gait']}); bodies: {', '.join(c['bodies'])}")
+    print("bodies:")
+    for n, b in cat["bodies"].items():
+        print(f"  {n:<14} {b['description']}")
+    print("gaits:")
+    for n, g in cat["gaits"].items():
+        print(f"  {n:<20} {g['description']}")
+    print("scenarios:")
+    for n, s in cat["scenarios"].items():
+        print(f"  {n:<14} {s['description']}")
+    print("supported (creature, body, gait):")
+    for c in cat["supported"]:
+        print(f"  {c['creature']}, {c['body']}, {c['gait']}")
+    return EXIT_OK
+
+
+# --------------------------------------------------------------------------- run
+
+def _fmt(v: Any) -> str:
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "-"
+    if isinstance(v, float):
+        return f"{v:.4g}"
+    return str(v)
+
+
+def print_result_table(result) -> None:
+    d = result.to_json_dict()
+    c = d["case"]
+    print(f"case {result.case.case_hash()}: {c['creature']['name']} / {c['body']['name']} / {c['gait']['name']} / "
+          f"{c['scenario']['name']}  dt={c['dt']:.3g} s  duration={c['duration']:.3g} s")
+    print(f"status: {d['status']}" + (f" ({result.message})" if result.message else ""))
+    width = max(len(k) for k in d["metrics"]) if d["metrics"] else 10
+    for k in sorted(d["metrics"]):
+        print(f"  {k:<{width}}  {_fmt(d['metrics'][k])}")
+    t = d["timings"]
+    print(f"  {'steps':<{width}}  {t['steps']}   steps/s {_fmt(t['steps_per_s'])}   realtime x{_fmt(t['realtime_factor'])}"
+          f"   compile {_fmt(t['compile_s'])} s   wall {_fmt(t['wall_s'])} s")
+
+
+def cmd_run(args) -> int:
+    from .harness.recorder import save_npz
+    from .harness.runner import run_case
+    from .harness.store import DEFAULT_STORE, record_run
+
+    if args.record and not args.record.endswith(".npz"):
+        raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
+    case = resolve_case(args.creature, args.body, args.scenario, args.gait, duration=args.duration, dt=args.dt,
+                        seed=args.seed, overrides=args.set)
+    bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(), label=f"{args.creature}/{args.body}")
+    result = run_case(case, progress=bar.update, keep_nodes=bool(args.record))
+    bar.close()
+    if not args.no_store:
+        record_run(args.store or DEFAULT_STORE, result)
+    if args.record and result.series is not None:
+        save_npz(Path(args.record), result.series, case.to_dict())
+    if args.json:
+        print(json.dumps(result.to_json_dict()))
+    else:
+        print_result_table(result)
+    if result.status == "error":
+        print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
+        return EXIT_FAIL
+    if result.status == "unstable" and args.strict:
+        return EXIT_FAIL
+    return EXIT_OK
+
+
+def cmd_quick(args) -> int:
+    from .harness.runner import run_case
+    from .harness.store import DEFAULT_STORE, record_run
+
+    cases = [resolve_case(c, b, s, g, duration=d) for c, b, s, g, d in QUICK_CASES]  # validate all first
+    store = args.store or DEFAULT_STORE
+    rows, worst = [], EXIT_OK
+    for case in cases:
+        bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(),
+                          label=f"{case.creature.name}/{case.gait.name}/{case.scenario.name}")
+        result = run_case(case, progress=bar.update)
+        bar.close()
+        record_run(store, result)
+        if args.json:
+            print(json.dumps(result.to_json_dict()))
+        rows.append(result)
+        if result.status == "error":
+            worst = EXIT_FAIL
+    if not args.json:
+        head = ["creature", "body", "gait", "scenario", "status", *TABLE_METRICS, "steps_per_s"]
+        table = [head]
+        for r in rows:
+            m = r.to_json_dict()["metrics"]
+            table.append([r.case.creature.name, r.case.body.name, r.case.gait.name, r.case.scenario.name, r.status,
+                          *(_fmt(m.get(k)) for k in TABLE_METRICS), _fmt(r.timings.get("steps_per_s"))])
+        widths = [max(len(str(row[i])) for row in table) for i in range(len(head))]
+        for row in table:
+            print("  ".join(str(v).ljust(w) for v, w in zip(row, widths)))
+        print(f"results stored in {store}")
+    return worst
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv or ["quick"])
+        if args.command is None:
+            args = parser.parse_args(["quick", *argv])
+        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick}[args.command](args)
+    except InputError as exc:
+        print(f"bench-myriapoda: error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        print("bench-myriapoda: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

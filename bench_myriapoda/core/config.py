@@ -1,0 +1,271 @@
+"""Loading creature and scenario files and resolving one case.
+
+Layers, later ones win:
+
+1. the defaults of each section (``schema.py``, the backend's config class);
+2. the creature file ``models/<creature>.toml`` (its ``[gaits.<gait>]`` and
+   ``[bodies.<body>]`` tables fill the ``gait`` and ``body`` sections);
+3. the scenario file ``scenarios/<scenario>.toml``;
+4. command-line flags ``--duration``, ``--dt``, ``--seed``;
+5. ``--set KEY=VALUE`` overrides by dotted path.
+
+Every layer is validated where it comes from, so an error names the file or
+flag that introduced it.  Nothing here touches the results store.
+"""
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Iterable, Mapping
+
+from . import registry
+from .errors import InputError
+from .paths import models_dir, scenarios_dir
+from .schema import (SECTIONS, TOP_LEVEL_SCALARS, CollisionConfig, CreatureConfig, FrictionConfig, GaitConfig,
+                     MetricsConfig, RecordConfig, ScenarioConfig, StabilityConfig, check_range, check_section,
+                     coerce_value, field_types)
+
+CREATURE_FILE_TABLES = {"creature", "friction", "collision", "gaits", "bodies", "record", "stability", "metrics"}
+SCENARIO_FILE_TABLES = {"scenario", "friction", "collision", "record", "stability", "metrics"}
+NAME_KEYS = {"creature.name": "--creature", "body.name": "--body", "gait.name": "--gait", "scenario.name": "--scenario"}
+
+
+@dataclass(frozen=True)
+class Case:
+    """A fully resolved case: everything a run needs, nothing implicit."""
+
+    creature: CreatureConfig
+    body: Any
+    gait: GaitConfig
+    friction: FrictionConfig
+    collision: CollisionConfig
+    scenario: ScenarioConfig
+    record: RecordConfig
+    stability: StabilityConfig
+    metrics: MetricsConfig
+    dt: float
+    duration: float
+    seed: int
+
+    def to_dict(self) -> dict[str, Any]:
+        d = dataclasses.asdict(self)
+        d["creature"]["gaits"] = list(d["creature"]["gaits"])
+        return d
+
+    def case_hash(self) -> str:
+        """sha256 of the canonical JSON of the resolved configuration (first 16 hex digits)."""
+        blob = json.dumps(self.to_dict(), sort_keys=True, separators=(",", ":"))
+        return hashlib.sha256(blob.encode()).hexdigest()[:16]
+
+    @property
+    def steps(self) -> int:
+        return int(round(self.duration / self.dt))
+
+
+# --------------------------------------------------------------------------- files
+
+def read_toml(path: Path) -> dict[str, Any]:
+    try:
+        with open(path, "rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError:
+        raise InputError(str(path), None, "file not found") from None
+    except OSError as exc:
+        raise InputError(str(path), None, f"cannot read file ({exc.strerror})") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(path), None, f"malformed TOML: {exc}") from None
+
+
+def _available(directory: Path, pattern: str) -> list[str]:
+    return sorted(p.stem for p in directory.glob(pattern)) if directory.is_dir() else []
+
+
+def creature_names() -> list[str]:
+    return _available(models_dir(), "*.toml")
+
+
+def scenario_paths() -> dict[str, Path]:
+    """Scenario name -> file, for scenarios/*.toml and scenarios/paper/*.toml."""
+    out: dict[str, Path] = {}
+    for sub in ("", "paper"):
+        d = scenarios_dir() / sub
+        if d.is_dir():
+            for p in sorted(d.glob("*.toml")):
+                out.setdefault(p.stem, p)
+    return out
+
+
+def _locate(name: str, kind: str, flag: str, known: Mapping[str, Path]) -> Path:
+    if name.endswith(".toml"):
+        return Path(name)
+    if name not in known:
+        raise InputError(flag, None, f"unknown {kind} {name!r}; choose one of {', '.join(sorted(known)) or '(none found)'}")
+    return known[name]
+
+
+def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
+    path = _locate(name, "creature", "--creature", {n: models_dir() / f"{n}.toml" for n in creature_names()})
+    data = read_toml(path)
+    src = str(path)
+    for table in data:
+        if table not in CREATURE_FILE_TABLES:
+            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(CREATURE_FILE_TABLES))}")
+    if "creature" not in data:
+        raise InputError(src, "creature", "missing table [creature]")
+    check_section(CreatureConfig, data["creature"], src, "creature")
+    for table in ("friction", "collision", "record", "stability", "metrics"):
+        if table in data:
+            check_section(SECTIONS[table], data[table], src, table)
+    for gait, table in data.get("gaits", {}).items():
+        if gait not in registry.GAITS:
+            raise InputError(src, f"gaits.{gait}", f"unknown gait; choose one of {', '.join(sorted(registry.GAITS))}")
+        check_section(GaitConfig, table, src, f"gaits.{gait}")
+    for body, table in data.get("bodies", {}).items():
+        if body not in registry.BODIES:
+            raise InputError(src, f"bodies.{body}", f"unknown body model; choose one of {', '.join(sorted(registry.BODIES))}")
+        check_section(registry.BODIES[body].config_cls, table, src, f"bodies.{body}")
+    c = data["creature"]
+    for gait in list(c.get("gaits", ())) + ([c["default_gait"]] if "default_gait" in c else []):
+        if gait not in registry.GAITS:
+            raise InputError(src, "creature.gaits", f"unknown gait {gait!r}; choose from {', '.join(sorted(registry.GAITS))}")
+    return path, data
+
+
+def load_scenario_file(name: str) -> tuple[Path, dict[str, Any]]:
+    path = _locate(name, "scenario", "--scenario", scenario_paths())
+    data = read_toml(path)
+    src = str(path)
+    for table in data:
+        if table not in SCENARIO_FILE_TABLES:
+            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(SCENARIO_FILE_TABLES))}")
+    if "scenario" not in data:
+        raise InputError(src, "scenario", "missing table [scenario]")
+    for table in data:
+        check_section(SECTIONS[table], data[table], src, table)
+    return path, data
+
+
+# --------------------------------------------------------------------------- overrides
+
+def parse_set(item: str) -> tuple[str, Any]:
+    """``KEY=VALUE`` with VALUE read as a TOML value, or as a bare string."""
+    if "=" not in item:
+        raise InputError("--set", item, "expected KEY=VALUE, e.g. --set friction.mu_transverse=0.2")
+    key, raw = item.split("=", 1)
+    key = key.strip()
+    try:
+        value = tomllib.loads(f"v = {raw}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = raw.strip()
+    return key, value
+
+
+def _section_cls(section: str, body_name: str):
+    if section == "body":
+        return registry.BODIES[body_name].config_cls
+    return SECTIONS.get(section)
+
+
+def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, body_name: str) -> None:
+    """Validate one dotted override and write it into the nested ``layers``."""
+    if key in NAME_KEYS:
+        raise InputError(source, key, f"names are chosen with {NAME_KEYS[key]}, not by override")
+    parts = key.split(".")
+    allowed_sections = sorted(list(SECTIONS) + ["body"])
+    if len(parts) == 1:
+        if key not in TOP_LEVEL_SCALARS:
+            raise InputError(source, key, f"unknown key; allowed: {', '.join(sorted(TOP_LEVEL_SCALARS))} "
+                                          f"or SECTION.KEY with SECTION one of {', '.join(allowed_sections)}")
+        tp, meta = TOP_LEVEL_SCALARS[key]
+        v = coerce_value(value, {"float": float, "int": int}[tp], source, key)
+        check_range(v, meta, source, key)
+        layers[key] = v
+        return
+    if len(parts) != 2:
+        raise InputError(source, key, "expected SECTION.KEY (one dot)")
+    section, name = parts
+    cls = _section_cls(section, body_name)
+    if cls is None:
+        raise InputError(source, key, f"unknown section {section!r}; choose one of {', '.join(allowed_sections)}")
+    checked = check_section(cls, {name: value}, source, section)
+    layers.setdefault(section, {}).update(checked)
+
+
+# --------------------------------------------------------------------------- resolution
+
+def resolve_case(creature: str, body: str, scenario: str, gait: str | None = None, *,
+                 duration: float | None = None, dt: float | None = None, seed: int | None = None,
+                 overrides: Iterable[str] = ()) -> Case:
+    """Resolve names, files and overrides into a validated :class:`Case`.
+
+    Raises :class:`InputError` for anything a user could have typed wrong,
+    including a (creature, body, gait) combination that is not supported.
+    """
+    registry.load_all()
+    if body not in registry.BODIES:
+        raise InputError("--body", None, f"unknown body model {body!r}; choose one of {', '.join(sorted(registry.BODIES))}")
+    if gait is not None and gait not in registry.GAITS:
+        raise InputError("--gait", None, f"unknown gait {gait!r}; choose one of {', '.join(sorted(registry.GAITS))}")
+    cpath, cdata = load_creature_file(creature)
+    spath, sdata = load_scenario_file(scenario)
+    spec = registry.BODIES[body]
+    cre = dict(cdata["creature"])
+    cre.setdefault("name", cpath.stem)
+    gait = gait or cre.get("default_gait")
+    if not gait:
+        raise InputError("--gait", None, f"creature {cre['name']!r} has no default gait; pass --gait")
+    supported_gaits = cre.get("gaits", [gait])
+    if gait not in supported_gaits:
+        raise InputError("--gait", None, f"unsupported combination: creature {cre['name']!r} does not support gait "
+                                         f"{gait!r}; supported: {', '.join(supported_gaits)}")
+    if body not in cdata.get("bodies", {}):
+        raise InputError("--body", None, f"unsupported combination: creature {cre['name']!r} has no {body!r} body "
+                                         f"model; available: {', '.join(sorted(cdata.get('bodies', {}))) or 'none'}")
+    missing = registry.GAITS[gait].requires - spec.capabilities
+    if missing:
+        raise InputError("--gait", None, f"unsupported combination: body {body!r} cannot honour gait {gait!r} "
+                                         f"(needs {', '.join(sorted(missing))})")
+
+    layers: dict[str, Any] = {
+        "creature": cre,
+        "body": {"name": body, **cdata["bodies"][body]},
+        "gait": {"name": gait, **cdata.get("gaits", {}).get(gait, {})},
+        "scenario": {"name": spath.stem, **sdata["scenario"]},
+    }
+    for table in ("friction", "collision", "record", "stability", "metrics"):
+        layers[table] = {**cdata.get(table, {}), **sdata.get(table, {})}
+    friction_model = layers["friction"].get("model", FrictionConfig.model)
+    if f"friction:{friction_model}" not in spec.capabilities:
+        raise InputError(str(cpath), "friction.model", f"unsupported combination: body {body!r} has no "
+                                                       f"{friction_model!r} friction")
+    if duration is not None:
+        apply_override(layers, "duration", duration, "--duration", body)
+    if dt is not None:
+        apply_override(layers, "dt", dt, "--dt", body)
+    if seed is not None:
+        apply_override(layers, "seed", seed, "--seed", body)
+    for item in overrides:
+        key, value = parse_set(item)
+        apply_override(layers, key, value, "--set", body)
+    friction_model = layers["friction"].get("model", FrictionConfig.model)
+    if f"friction:{friction_model}" not in spec.capabilities:
+        raise InputError("--set", "friction.model", f"unsupported combination: body {body!r} has no {friction_model!r} friction")
+
+    sections = {name: cls(**layers.get(name, {})) for name, cls in SECTIONS.items()}
+    body_cfg = spec.config_cls(**layers["body"])
+    scen: ScenarioConfig = sections["scenario"]
+    case = Case(
+        creature=sections["creature"], body=body_cfg, gait=sections["gait"], friction=sections["friction"],
+        collision=sections["collision"], scenario=scen, record=sections["record"],
+        stability=sections["stability"], metrics=sections["metrics"],
+        dt=layers.get("dt", spec.default_dt(body_cfg)),
+        duration=layers.get("duration", scen.duration_s),
+        seed=layers.get("seed", 0),
+    )
+    if case.dt > case.duration:
+        raise InputError("--dt", "dt", f"{case.dt} is longer than the duration {case.duration} s")
+    return case

@@ -1,0 +1,20 @@
+"""The one error type for bad input.
+
+Every problem with what a user typed or wrote in a file (unknown name, unknown
+key, wrong type, out-of-range value, unreadable TOML, unsupported combination)
+becomes an ``InputError`` that names where it came from (a file path or a
+command-line flag), the key, and what is allowed.  The CLI prints it as one
+line and exits with code 2 before anything is written.
+"""
+from __future__ import annotations
+
+
+class InputError(Exception):
+    """Bad user input.  ``source`` is a file path or a flag such as ``--set``."""
+
+    def __init__(self, source: str, key: str | None, message: str):
+        self.source = source
+        self.key = key
+        self.message = message
+        where = f"{source}: {key}" if key else source
+        super().__init__(f"{where}: {message}")

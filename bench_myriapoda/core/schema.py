@@ -1,0 +1,242 @@
+"""Typed, validated configuration: the resolved description of one case.
+
+Each section of a case is a frozen dataclass.  Field metadata states the
+allowed range (``ge``, ``gt``, ``le``, ``lt``) or the allowed values
+(``choices``); :func:`check_section` enforces them with messages that name the
+source and the dotted key.  Units are in the field names (``_m``, ``_s``,
+``_hz``, ``_deg``) or stated in the comments; everything is SI.
+
+Body-model sections are registered by each backend (see
+``bench_myriapoda.core.registry``) because their keys differ per backend.
+"""
+from __future__ import annotations
+
+import dataclasses
+import typing
+from dataclasses import dataclass, field
+from typing import Any, Mapping
+
+from .errors import InputError
+
+
+def rng(default, *, ge=None, gt=None, le=None, lt=None, choices=None, doc=""):
+    """A dataclass field with range metadata."""
+    return field(default=default, metadata=dict(ge=ge, gt=gt, le=le, lt=lt, choices=choices, doc=doc))
+
+
+@dataclass(frozen=True)
+class CreatureConfig:
+    """Morphology of a segmented creature; segment 0 is the head."""
+
+    name: str = rng("", doc="creature name")
+    description: str = rng("")
+    segments: int = rng(10, ge=1, le=1000, doc="number of body segments")
+    segment_length_m: float = rng(0.05, gt=0.0, doc="rest length of one segment along the body [m]")
+    width_m: float = rng(0.05, gt=0.0, doc="segment width (side to side) [m]")
+    height_m: float = rng(0.05, gt=0.0, doc="segment height (belly to back) [m]")
+    mass_kg: float = rng(1.0, gt=0.0, doc="total body mass [kg]")
+    default_gait: str = rng("", doc="gait used when --gait is not given")
+    gaits: tuple = rng((), doc="gaits this creature supports")
+
+    @property
+    def body_length_m(self) -> float:
+        return self.segments * self.segment_length_m
+
+
+@dataclass(frozen=True)
+class GaitConfig:
+    """A travelling muscle wave (Miller Sec. 4).
+
+    The wave on a channel is ``amplitude * sin(d * 2 pi s / wavelength - 2 pi f t + phase)``
+    with s the rest arc length of a segment centre from the head and d = +1
+    for a wave travelling head to tail, -1 tail to head.  Amplitudes are
+    strains of the muscle fibres (dimensionless).
+    """
+
+    name: str = rng("", doc="gait (controller) name")
+    amplitude: float = rng(0.2, ge=0.0, lt=0.95, doc="main channel strain amplitude")
+    wavelength_bl: float = rng(0.5, gt=0.0, doc="wavelength in body lengths (undeformed)")
+    frequency_hz: float = rng(1.0, gt=0.0, doc="wave frequency [Hz]")
+    phase_deg: float = rng(0.0, doc="phase offset of the main wave [deg]")
+    direction: str = rng("head-to-tail", choices=("head-to-tail", "tail-to-head"))
+    vertical_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="sidewinding: vertical wave strain amplitude")
+    vertical_phase_deg: float = rng(90.0, doc="sidewinding: phase of the vertical wave relative to the lateral wave [deg]")
+    axial_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="arching: axial strain amplitude of the contraction coupled to the arch")
+    axial_phase_deg: float = rng(180.0, doc="arching: phase of the axial wave relative to the arch (180: arched segments are shortest)")
+    profile: str = rng("sine", choices=("sine", "raised"), doc="'raised' keeps the wave one-sided (arching only upward)")
+    volume_conserving: bool = rng(False, doc="scale circumferential rest lengths by 1/sqrt(axial stretch) (Miller Sec. 4)")
+    ramp_s: float = rng(0.5, ge=0.0, doc="amplitude ramps linearly from 0 over this time [s]")
+
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.frequency_hz
+
+
+@dataclass(frozen=True)
+class FrictionConfig:
+    """Ground friction.
+
+    * ``miller``  -- Miller's rule (Sec. 4): within ``contact_distance_m`` of the
+      ground, the backward component of a mass's velocity along the local spine
+      vector is removed.  No coefficients.
+    * ``coulomb`` -- anisotropic Coulomb friction with forward, backward and
+      transverse coefficients, static and kinetic (after Hu et al., PNAS 2009).
+      A static coefficient of -1 means "same as kinetic".
+    * ``stick``   -- Miller's caterpillar: masses in contact get no tangential motion.
+    """
+
+    model: str = rng("coulomb", choices=("miller", "coulomb", "stick"))
+    contact_distance_m: float = rng(0.002, ge=0.0, doc="a mass this close to the surface is in contact [m]")
+    mu_forward: float = rng(0.1, ge=0.0)
+    mu_backward: float = rng(0.3, ge=0.0)
+    mu_transverse: float = rng(0.5, ge=0.0)
+    mu_static_forward: float = rng(-1.0, ge=-1.0)
+    mu_static_backward: float = rng(-1.0, ge=-1.0)
+    mu_static_transverse: float = rng(-1.0, ge=-1.0)
+
+
+@dataclass(frozen=True)
+class CollisionConfig:
+    """Miller Sec. 3 reflection coefficients for a point crossing a surface."""
+
+    r_n: float = rng(0.0, ge=0.0, le=1.0, doc="normal reflection coefficient (0 = inelastic)")
+    r_t: float = rng(1.0, ge=0.0, le=1.0, doc="fraction of the tangential travel kept after impact (1 = frictionless)")
+
+
+@dataclass(frozen=True)
+class ScenarioConfig:
+    """Where the creature starts and what it stands on."""
+
+    name: str = rng("")
+    description: str = rng("")
+    terrain: str = rng("plane", choices=("plane", "slope", "slab"))
+    ground_height_m: float = rng(0.0)
+    slope_deg: float = rng(0.0, ge=-80.0, le=80.0, doc="slope: incline rising toward +x [deg]")
+    slab_height_m: float = rng(0.3, gt=0.0, doc="slab: height of Miller's book [m]")
+    slab_edge_x_m: float = rng(0.0, doc="slab: x of the book's edge (slab at x <= edge) [m]")
+    slab_edge_radius_m: float = rng(0.02, gt=0.0, doc="slab: radius of the rounded edge [m]")
+    start_height_m: float = rng(0.0, ge=0.0, doc="clearance of the body's underside above the surface at t=0 [m]")
+    start_x_m: float = rng(0.0, doc="x of the head at t=0 (creatures face +x) [m]")
+    gravity_m_s2: float = rng(9.81, ge=0.0)
+    passive: bool = rng(False, doc="muscles off (for energy checks)")
+    duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
+
+
+@dataclass(frozen=True)
+class RecordConfig:
+    sample_hz: float = rng(60.0, gt=0.0, doc="observation samples per simulated second")
+
+
+@dataclass(frozen=True)
+class StabilityConfig:
+    """Blow-up detection: a run exceeding these limits ends with status 'unstable'."""
+
+    max_speed_m_s: float = rng(50.0, gt=0.0, doc="any mass faster than this is a blow-up [m/s]")
+    max_penetration_m: float = rng(0.05, gt=0.0, doc="a mass deeper than this inside the terrain is a blow-up [m]")
+
+
+@dataclass(frozen=True)
+class MetricsConfig:
+    warmup_cycles: float = rng(2.0, ge=0.0, doc="gait cycles skipped before locomotion metrics are measured")
+
+
+SECTIONS: dict[str, type] = {
+    "creature": CreatureConfig,
+    "gait": GaitConfig,
+    "friction": FrictionConfig,
+    "collision": CollisionConfig,
+    "scenario": ScenarioConfig,
+    "record": RecordConfig,
+    "stability": StabilityConfig,
+    "metrics": MetricsConfig,
+}
+TOP_LEVEL_SCALARS = {
+    "dt": ("float", dict(gt=0.0, doc="time step [s]; default from the body model")),
+    "duration": ("float", dict(gt=0.0, doc="simulated time [s]; default from the scenario")),
+    "seed": ("int", dict(ge=0, doc="random seed")),
+}
+
+
+def _type_name(tp) -> str:
+    return {float: "a number", int: "an integer", str: "a string", bool: "true or false", tuple: "a list"}.get(tp, str(tp))
+
+
+def field_types(cls) -> dict[str, Any]:
+    hints = typing.get_type_hints(cls)
+    return {f.name: hints[f.name] for f in dataclasses.fields(cls)}
+
+
+def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
+    """Check ``value`` against type ``tp``; ints are accepted for floats, lists for tuples."""
+    if tp is float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+        value = float(value)
+        if value != value or value in (float("inf"), float("-inf")):
+            raise InputError(source, key, f"expected a finite number, got {value!r}")
+        return value
+    if tp is int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            if isinstance(value, float) and value.is_integer():
+                return int(value)
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+        return value
+    if tp is bool:
+        if not isinstance(value, bool):
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+        return value
+    if tp is str:
+        if not isinstance(value, str):
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+        return value
+    if tp is tuple:
+        if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
+            raise InputError(source, key, f"expected a list of names, got {value!r}")
+        return tuple(value)
+    raise TypeError(tp)
+
+
+def check_range(value: Any, meta: Mapping[str, Any], source: str, key: str) -> None:
+    choices = meta.get("choices")
+    if choices is not None and value not in choices:
+        raise InputError(source, key, f"{value!r} is not allowed; choose one of {', '.join(map(str, choices))}")
+    for op, test, word in (("ge", lambda a, b: a >= b, ">="), ("gt", lambda a, b: a > b, ">"),
+                           ("le", lambda a, b: a <= b, "<="), ("lt", lambda a, b: a < b, "<")):
+        bound = meta.get(op)
+        if bound is not None and not test(value, bound):
+            raise InputError(source, key, f"{value!r} is out of range; must be {word} {bound}")
+
+
+def check_section(cls, data: Mapping[str, Any], source: str, prefix: str) -> dict[str, Any]:
+    """Validate a (partial) mapping for section ``cls``; return the coerced mapping.
+
+    Unknown keys, wrong types and out-of-range values raise ``InputError``.
+    """
+    if not isinstance(data, Mapping):
+        raise InputError(source, prefix, f"expected a table of keys, got {data!r}")
+    types = field_types(cls)
+    metas = {f.name: f.metadata for f in dataclasses.fields(cls)}
+    out: dict[str, Any] = {}
+    for key, value in data.items():
+        dotted = f"{prefix}.{key}" if prefix else key
+        if key not in types:
+            raise InputError(source, dotted, f"unknown key; allowed keys of [{prefix}]: {', '.join(sorted(types))}")
+        v = coerce_value(value, types[key], source, dotted)
+        check_range(v, metas[key], source, dotted)
+        out[key] = v
+    return out
+
+
+def build_section(cls, data: Mapping[str, Any], source: str, prefix: str):
+    return cls(**check_section(cls, data, source, prefix))
+
+
+def describe_section(cls) -> list[dict[str, Any]]:
+    """Key, type, default and allowed range of a section, for ``list`` and docs."""
+    rows = []
+    types = field_types(cls)
+    for f in dataclasses.fields(cls):
+        m = f.metadata
+        allowed = {k: m[k] for k in ("ge", "gt", "le", "lt", "choices") if m.get(k) is not None}
+        rows.append(dict(key=f.name, type=_type_name(types[f.name]), default=f.default, allowed=allowed, doc=m.get("doc", "")))
+    return rows

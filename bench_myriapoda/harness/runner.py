@@ -1,0 +1,100 @@
+"""Run one resolved case: build the body, step it in chunks, sample, measure.
+
+The body's kernel runs many steps per call (one chunk per observation
+sample), so Python is touched only at the sample rate.  A blow-up inside the
+kernel comes back as a status code: the run ends with status ``unstable``
+and ``t_fail_s``, and everything measured until then is kept.  An exception
+anywhere in the run becomes status ``error`` with its message.
+"""
+from __future__ import annotations
+
+import math
+import time
+import traceback
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from ..core import registry
+from ..core.config import Case
+from ..metrics.locomotion import energy_metrics, locomotion_metrics
+from .recorder import Recorder, Series
+
+
+@dataclass
+class RunResult:
+    case: Case
+    status: str  # "ok" | "unstable" | "error"
+    metrics: dict[str, float]
+    timings: dict[str, float]
+    message: str = ""
+    series: Series | None = None
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def to_json_dict(self) -> dict[str, Any]:
+        def clean(v):
+            if isinstance(v, float) and not math.isfinite(v):
+                return None
+            return v
+        return {"case": self.case.to_dict(), "status": self.status,
+                "metrics": {k: clean(v) for k, v in self.metrics.items()},
+                "timings": {k: clean(v) for k, v in self.timings.items()},
+                **({"message": self.message} if self.message else {})}
+
+
+def wave_speed(case: Case) -> float:
+    """Speed of the muscle wave along the undeformed body [m/s]: wavelength * frequency."""
+    return case.gait.wavelength_bl * case.creature.body_length_m * case.gait.frequency_hz
+
+
+def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False) -> RunResult:
+    """Simulate ``case`` and return its status, metrics and timings.
+
+    ``progress`` is called with the fraction done after each chunk.
+    """
+    wall0 = time.perf_counter()
+    timings = {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
+               "compile_s": float("nan"), "wall_s": float("nan")}
+    try:
+        registry.load_all()
+        body = registry.BODIES[case.body.name].factory(case)
+        c0 = time.perf_counter()
+        body.compile()
+        timings["compile_s"] = time.perf_counter() - c0
+        recorder = Recorder(keep_nodes=keep_nodes)
+        recorder.add(body.observe(0.0, keep_nodes))
+        total = case.steps
+        chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
+        done = 0
+        status, t_fail, message = "ok", None, ""
+        sim_wall = 0.0
+        while done < total:
+            n = min(chunk, total - done)
+            s0 = time.perf_counter()
+            k, code = body.advance(done * case.dt, n)
+            sim_wall += time.perf_counter() - s0
+            done += k
+            t = done * case.dt
+            if code != 0:
+                status, t_fail, message = "unstable", t, body.status_text(code)
+                break
+            recorder.add(body.observe(t, keep_nodes))
+            if progress is not None:
+                progress(done / total)
+        series = recorder.series()
+        metrics: dict[str, float] = {}
+        metrics.update(locomotion_metrics(series, case, wave_speed(case)))
+        metrics.update(energy_metrics(series))
+        metrics["contact_fraction"] = body.contact_fraction_mean()
+        metrics["max_penetration_m"] = body.max_penetration()
+        metrics["body_length_m"] = case.creature.body_length_m
+        metrics["wave_speed_m_per_s"] = wave_speed(case)
+        metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
+        timings["steps"] = done
+        timings["steps_per_s"] = done / sim_wall if sim_wall > 0 else float("nan")
+        timings["realtime_factor"] = done * case.dt / sim_wall if sim_wall > 0 else float("nan")
+        timings["wall_s"] = time.perf_counter() - wall0
+        return RunResult(case, status, metrics, timings, message, series)
+    except Exception as exc:  # a bug or an unforeseen failure: recorded, not raised
+        timings["wall_s"] = time.perf_counter() - wall0
+        msg = f"{type(exc).__name__}: {exc}"
+        return RunResult(case, "error", {}, timings, msg, None, {"traceback": traceback.format_exc()})

@@ -1,0 +1,89 @@
+"""The SQLite results store.
+
+One row per run in ``runs`` (resolved configuration and metrics as JSON, plus
+the most-queried fields as columns) and one row per metric in ``metrics``,
+written in a single transaction so an interrupted run leaves no partial row.
+Both tables read directly with ``pandas.read_sql``::
+
+    pd.read_sql("SELECT * FROM runs", sqlite3.connect("reports/results.sqlite"))
+"""
+from __future__ import annotations
+
+import json
+import math
+import sqlite3
+import time
+from pathlib import Path
+from typing import Any
+
+from .machine import git_commit, machine_fingerprint
+
+DEFAULT_STORE = Path("reports") / "results.sqlite"
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS runs (
+    id INTEGER PRIMARY KEY AUTOINCREMENT,
+    case_hash TEXT NOT NULL,
+    creature TEXT, body TEXT, gait TEXT, scenario TEXT,
+    status TEXT NOT NULL,
+    message TEXT,
+    case_json TEXT NOT NULL,
+    metrics_json TEXT NOT NULL,
+    timings_json TEXT NOT NULL,
+    steps INTEGER, steps_per_s REAL, realtime_factor REAL, compile_s REAL, wall_s REAL,
+    git_commit TEXT,
+    git_dirty INTEGER,
+    machine_json TEXT NOT NULL,
+    cpu_model TEXT, cpu_count INTEGER, python_version TEXT, numpy_version TEXT, numba_version TEXT,
+    timestamp TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS runs_case_hash ON runs(case_hash);
+CREATE TABLE IF NOT EXISTS metrics (
+    run_id INTEGER NOT NULL REFERENCES runs(id),
+    name TEXT NOT NULL,
+    value REAL,
+    PRIMARY KEY (run_id, name)
+);
+"""
+
+
+def _finite(v: Any) -> Any:
+    return None if isinstance(v, float) and not math.isfinite(v) else v
+
+
+def connect(path: Path | str = DEFAULT_STORE) -> sqlite3.Connection:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    con = sqlite3.connect(path, timeout=60)
+    con.executescript(SCHEMA)
+    return con
+
+
+def record_run(path: Path | str, result) -> int:
+    """Insert a ``RunResult`` in one transaction; return its run id."""
+    case = result.case.to_dict()
+    mach = machine_fingerprint()
+    commit, dirty = git_commit()
+    metrics = {k: _finite(v) for k, v in result.metrics.items()}
+    timings = {k: _finite(v) for k, v in result.timings.items()}
+    con = connect(path)
+    try:
+        with con:  # one transaction: both tables or nothing
+            cur = con.execute(
+                "INSERT INTO runs (case_hash, creature, body, gait, scenario, status, message, case_json, metrics_json,"
+                " timings_json, steps, steps_per_s, realtime_factor, compile_s, wall_s, git_commit, git_dirty,"
+                " machine_json, cpu_model, cpu_count, python_version, numpy_version, numba_version, timestamp)"
+                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                (result.case.case_hash(), case["creature"]["name"], case["body"]["name"], case["gait"]["name"],
+                 case["scenario"]["name"], result.status, result.message, json.dumps(case, sort_keys=True),
+                 json.dumps(metrics, sort_keys=True), json.dumps(timings, sort_keys=True), timings.get("steps"),
+                 timings.get("steps_per_s"), timings.get("realtime_factor"), timings.get("compile_s"),
+                 timings.get("wall_s"), commit, None if dirty is None else int(dirty), json.dumps(mach, sort_keys=True),
+                 mach["cpu_model"], mach["cpu_count"], mach["python"], mach["numpy"], mach["numba"],
+                 time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())))
+            run_id = cur.lastrowid
+            con.executemany("INSERT INTO metrics (run_id, name, value) VALUES (?,?,?)",
+                            [(run_id, k, v if isinstance(v, (int, float)) else None) for k, v in metrics.items()])
+        return run_id
+    finally:
+        con.close()

@@ -1,0 +1,108 @@
+"""Locomotion and stability metrics of a legless creature, from a recorded run.
+
+All metrics are flat scalars (JSON names as in the issue list).  Locomotion
+metrics are measured over a window that skips ``metrics.warmup_cycles`` gait
+cycles so the gait is steady; directions are taken relative to the *mean body
+axis* over that window (unit vector from tail to head, averaged), so a
+sidewinder's diagonal travel shows up as a travel angle.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..harness.recorder import Series
+
+UP = np.array([0.0, 1.0, 0.0])
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = np.linalg.norm(v)
+    return v / n if n > 0 else v
+
+
+def measurement_window(series: Series, period_s: float, warmup_cycles: float) -> tuple[int, int]:
+    """Index range [i0, i1] of samples after the warm-up; falls back to the second half of a short run."""
+    t = series.t
+    i1 = len(t) - 1
+    t0 = warmup_cycles * period_s
+    if t[-1] - t0 < 0.5 * period_s:
+        t0 = 0.5 * t[-1]
+    i0 = int(np.searchsorted(t, t0))
+    return min(i0, max(i1 - 1, 0)), i1
+
+
+def distance_to_polyline(points: np.ndarray, path: np.ndarray) -> np.ndarray:
+    """Distance of each point (m, 3) to the polyline ``path`` (k, 3) [m]."""
+    a = path[:-1][None, :, :]
+    b = path[1:][None, :, :]
+    p = points[:, None, :]
+    ab = b - a
+    denom = np.einsum("ijk,ijk->ij", ab, ab)
+    s = np.clip(np.einsum("ijk,ijk->ij", p - a, ab) / np.where(denom > 0, denom, 1.0), 0.0, 1.0)
+    closest = a + s[..., None] * ab
+    return np.linalg.norm(p - closest, axis=2).min(axis=1)
+
+
+def path_following_error(series: Series, i0: int, i1: int, body_length: float, n_eval: int = 25) -> float:
+    """Mean distance of the segment centres from the head's path, in body lengths.
+
+    The head's path is its trajectory so far, extended backward by the
+    initial body centre line (where the head "was" before t = 0).  Distances
+    are horizontal (the path is projected on the ground plane).
+    """
+    flat = np.array([1.0, 0.0, 1.0])
+    start_line = series.segment_centers[0][::-1] * flat
+    errs = []
+    for i in np.unique(np.linspace(i0, i1, n_eval).astype(int)):
+        path = np.vstack([start_line, series.head[: i + 1] * flat])
+        if len(path) > 400:  # keep the cost bounded: subsample the path, keep its end points
+            keep = np.unique(np.concatenate([np.linspace(0, len(path) - 1, 400).astype(int)]))
+            path = path[keep]
+        errs.append(distance_to_polyline(series.segment_centers[i][1:] * flat, path).mean())
+    return float(np.mean(errs) / body_length)
+
+
+def locomotion_metrics(series: Series, case, wave_speed_m_s: float) -> dict[str, float]:
+    """Speed, direction and gait-following metrics over the steady window."""
+    out: dict[str, float] = {}
+    if len(series.t) < 3:
+        return out
+    period = case.gait.period_s
+    L = case.creature.body_length_m
+    i0, i1 = measurement_window(series, period, case.metrics.warmup_cycles)
+    dt = series.t[i1] - series.t[i0]
+    if dt <= 0:
+        return out
+    axes = np.array([_unit(h - tl) for h, tl in zip(series.head[i0:i1 + 1], series.tail[i0:i1 + 1])])
+    axis = _unit(axes.mean(axis=0))
+    # the ground's "up" for direction decomposition: perpendicular component of the axis removed
+    right = _unit(np.cross(axis, UP)) if abs(axis @ UP) < 0.99 else np.array([0.0, 0.0, 1.0])
+    disp = series.com[i1] - series.com[i0]
+    forward = float(disp @ axis)
+    lateral = float(disp @ right)
+    speed = forward / dt
+    out["speed_m_per_s"] = speed
+    out["lateral_speed_m_per_s"] = lateral / dt
+    out["displacement_per_cycle_m"] = speed * period
+    out["speed_bl_per_cycle"] = speed * period / L
+    out["speed_bl_per_s"] = speed / L
+    out["travel_angle_deg"] = math.degrees(math.atan2(lateral, forward)) if math.hypot(forward, lateral) > 0 else 0.0
+    out["slip_ratio"] = 1.0 - speed / wave_speed_m_s if wave_speed_m_s > 0 else float("nan")
+    out["path_following_error_bl"] = path_following_error(series, i0, i1, L)
+    out["cycles_measured"] = dt / period
+    out["com_height_change_m"] = float(series.com[-1, 1] - series.com[0, 1])
+    return out
+
+
+def energy_metrics(series: Series) -> dict[str, float]:
+    """Relative change of total mechanical energy over the run (meaningful for passive, undamped cases)."""
+    e = series.energy.sum(axis=1)
+    finite = np.isfinite(e)
+    if finite.sum() < 2:
+        return {}
+    e = e[finite]
+    scale = max(abs(e[0]), np.abs(series.energy[finite][0]).sum(), 1e-300)
+    return {"energy_drift_rel": float((e[-1] - e[0]) / scale),
+            "energy_max_dev_rel": float(np.max(np.abs(e - e[0])) / scale)}

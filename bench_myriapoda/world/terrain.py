@@ -1,0 +1,24 @@
+"""Terrains of a scenario as the (kind, parameters) pair that kernels query."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .terrain_kernels import N_TERRAIN_PARAMS, PLANE, SLAB, SLOPE
+
+TERRAIN_KINDS = {"plane": PLANE, "slope": SLOPE, "slab": SLAB}
+
+
+def terrain_from_scenario(sc) -> tuple[int, np.ndarray]:
+    """(kind code, float64 parameter vector) of a ``ScenarioConfig``'s terrain (see terrain_kernels)."""
+    f = np.zeros(N_TERRAIN_PARAMS)
+    f[0] = sc.ground_height_m
+    kind = TERRAIN_KINDS[sc.terrain]
+    if kind == SLOPE:
+        f[1] = math.radians(sc.slope_deg)
+    elif kind == SLAB:
+        f[1] = sc.ground_height_m + sc.slab_height_m
+        f[2] = sc.slab_edge_x_m
+        f[3] = min(sc.slab_edge_radius_m, sc.slab_height_m)
+    return kind, f
