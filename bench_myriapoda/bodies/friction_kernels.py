@@ -45,7 +45,7 @@ def friction_params(cfg) -> tuple[int, np.ndarray]:
     return FRICTION_MODELS[cfg.model], p
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ground_friction(model, p, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn):
     """New velocity (vx, vy, vz) [m/s] of a mass in contact.
 

@@ -72,7 +72,7 @@ def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) ->
     return table
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def segment_activation(waves, ramp_s, s_seg, t, out):
     """Overwrite ``out`` (n_seg, 3) with the channel strains of every segment at time t [s].
 

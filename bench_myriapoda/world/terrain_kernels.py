@@ -34,7 +34,7 @@ SLAB = 2
 N_TERRAIN_PARAMS = 8
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _slab_phi(f, x, y):
     """Signed distance to the union of the ground and a rounded-edge slab (2D in x-y)."""
     ground = y - f[0]
@@ -48,7 +48,7 @@ def _slab_phi(f, x, y):
     return min(ground, slab)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def signed_distance(kind, f, x, y, z):
     """phi(p) [m]: distance of point p above the terrain surface (negative inside)."""
     if kind == PLANE:
@@ -61,7 +61,7 @@ def signed_distance(kind, f, x, y, z):
         return _slab_phi(f, x, y)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def surface_normal(kind, f, x, y, z):
     """Unit outward normal (nx, ny, nz) of the terrain surface nearest to p."""
     if kind == PLANE:
@@ -86,7 +86,7 @@ def surface_normal(kind, f, x, y, z):
         return 0.0, 1.0, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def segment_surface_intersection(kind, f, x0, y0, z0, x1, y1, z1):
     """Fraction s in [0, 1] along p0 -> p1 where the path first meets the surface.
 
@@ -95,8 +95,13 @@ def segment_surface_intersection(kind, f, x0, y0, z0, x1, y1, z1):
     planar kinds the root is exact; for the slab the signed distance is piecewise
     smooth, so a few bisection-secant (Illinois) iterations resolve it to 1e-12 m.
     """
-    phi0 = signed_distance(kind, f, x0, y0, z0)
-    phi1 = signed_distance(kind, f, x1, y1, z1)
+    return path_surface_fraction(kind, f, x0, y0, z0, x1, y1, z1, signed_distance(kind, f, x0, y0, z0),
+                                 signed_distance(kind, f, x1, y1, z1))
+
+
+@njit(cache=True, error_model="numpy")
+def path_surface_fraction(kind, f, x0, y0, z0, x1, y1, z1, phi0, phi1):
+    """``segment_surface_intersection`` given the end points' signed distances phi0 >= 0 > phi1."""
     if phi0 <= 0.0:
         return 0.0
     if kind != SLAB:

@@ -88,6 +88,7 @@ class BodyMassSpring:
         self._act = np.zeros((cre.segments, 3))
         self._rest = lat.rest_length.copy()
         self._face_scale = np.ones(cre.segments + 1)
+        self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(K.N_ACC)
 
@@ -118,7 +119,8 @@ class BodyMassSpring:
         return K.advance(self.x, self.v, self.inv_mass, lat.springs, self.stiffness, self.damping, lat.kind, lat.seg,
                          lat.corner_a, lat.corner_b, lat.L0, lat.Lc, self.s_seg, self.waves, self.fric_model,
                          self.fric, self.terr_kind, self.terr, self.phys, t0, n_steps,
-                         self._force, self._act, self._rest, self._face_scale, self._spine, self.acc)
+                         self._force, self._act, self._rest, self._face_scale, self._stretch, self._spine,
+                         self.acc)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""
@@ -146,7 +148,7 @@ class BodyMassSpring:
         lat = self.lattice
         segment_activation(self.waves, self.phys[K.RAMP_S], self.s_seg, t, self._act)
         K.lattice_rest_lengths(self._act, self.phys[K.VOLUME] != 0.0, lat.kind, lat.seg, lat.corner_a,
-                               lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._rest)
+                               lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._stretch, self._rest)
         return K.lattice_energy(self.x, self.v, self.mass, lat.springs, self.stiffness, self._rest,
                                 self.phys[K.GRAVITY])
 

@@ -23,7 +23,7 @@ import math
 from numba import njit
 
 from ...controllers.muscle_waves import segment_activation
-from ...world.terrain_kernels import segment_surface_intersection, signed_distance, surface_normal
+from ...world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
 from ..friction_kernels import CONTACT_DISTANCE, MILLER, ground_friction
 from .lattice import AXIAL, CROSS
 
@@ -53,15 +53,20 @@ def fibre_stretch(act, i, c):
     return max(s, MIN_STRETCH)
 
 
-@njit(cache=True)
-def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face_scale, out):
+@njit(cache=True, error_model="numpy")
+def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face_scale, stretch, out):
     """Overwrite ``out`` (n_springs,) with spring rest lengths [m] for activation ``act`` (n_seg, 3).
 
     face_scale (n_seg + 1,) is overwritten with each cross-section face's
     circumferential scale: 1 / sqrt(mean axial stretch of its segments) when
-    ``volume_conserving`` (Miller Sec. 4), else 1.
+    ``volume_conserving`` (Miller Sec. 4), else 1.  stretch (n_seg, 4) is
+    overwritten with the fibre stretches (computed once per segment, used by
+    every spring of the segment).
     """
     n_seg = act.shape[0]
+    for i in range(n_seg):
+        for c in range(4):
+            stretch[i, c] = fibre_stretch(act, i, c)
     for j in range(n_seg + 1):
         if volume_conserving:
             tot = 0.0
@@ -79,16 +84,16 @@ def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face
         k = kind[e]
         i = seg[e]
         if k == AXIAL:
-            out[e] = L0[e] * fibre_stretch(act, i, ca[e])
+            out[e] = L0[e] * stretch[i, ca[e]]
         elif k == CROSS:
             out[e] = Lc[e] * face_scale[i]
         else:
-            axial = L0[e] * 0.5 * (fibre_stretch(act, i, ca[e]) + fibre_stretch(act, i, cb[e]))
+            axial = L0[e] * 0.5 * (stretch[i, ca[e]] + stretch[i, cb[e]])
             cross = Lc[e] * 0.5 * (face_scale[i] + face_scale[i + 1])
             out[e] = math.sqrt(axial * axial + cross * cross)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def spring_forces(x, v, springs, stiffness, damping, rest, out):
     """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``out`` (n_nodes, 3).
 
@@ -138,14 +143,14 @@ def spine_vectors(x, n_faces, out):
             out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, Lc, s_seg, waves,
             fric_model, fric, terr_kind, terr, phys, t0, n_steps,
-            force, act, rest, face_scale, spine, acc):
+            force, act, rest, face_scale, stretch, spine, acc):
     """Advance the lattice ``n_steps`` steps from time t0 [s]; return (steps done, status).
 
     State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  ``force``,
-    ``act``, ``rest``, ``face_scale``, ``spine`` are work arrays (overwritten).
+    ``act``, ``rest``, ``face_scale``, ``stretch``, ``spine`` are work arrays (overwritten).
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
@@ -160,11 +165,13 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
     for step in range(n_steps):
         t = t0 + step * dt
         segment_activation(waves, phys[RAMP_S], s_seg, t, act)
-        lattice_rest_lengths(act, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, rest)
+        lattice_rest_lengths(act, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, stretch, rest)
         force[:, :] = 0.0
         spring_forces(x, v, springs, stiffness, damping, rest, force)
         spine_vectors(x, n_faces, spine)
         n_contact = 0
+        status = OK
+        max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
         for n in range(n_nodes):
             im = inv_mass[n]
             vx = v[n, 0] + dt * force[n, 0] * im
@@ -188,9 +195,10 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
                 qz = pz + 0.5 * dt * (v[n, 2] + vz)
             else:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            if signed_distance(terr_kind, terr, qx, qy, qz) < 0.0:
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
                 # Miller Sec. 3: intersect the path with the surface, reflect the rest.
-                s = segment_surface_intersection(terr_kind, terr, px, py, pz, qx, qy, qz)
+                s = path_surface_fraction(terr_kind, terr, px, py, pz, qx, qy, qz, phi, phi_q)
                 ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
                 nx, ny, nz = surface_normal(terr_kind, terr, ix, iy, iz)
                 dx, dy, dz = qx - ix, qy - iy, qz - iz
@@ -203,30 +211,24 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
                 if vn < 0.0:
                     wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
                     vx, vy, vz = r_t * wx - r_n * vn * nx, r_t * wy - r_n * vn * ny, r_t * wz - r_n * vn * nz
-                # A curved surface can leave the reflected point inside: push it out along the normal.
-                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi_q < 0.0:
+                # A curved surface can leave the reflected point inside: push it out along the
+                # normal.  The depth before that correction is what max_penetration reports.
+                phi_r = signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi_r < 0.0:
                     mx, my, mz = surface_normal(terr_kind, terr, qx, qy, qz)
-                    qx, qy, qz = qx - phi_q * mx, qy - phi_q * my, qz - phi_q * mz
+                    qx, qy, qz = qx - phi_r * mx, qy - phi_r * my, qz - phi_r * mz
+                pen = -phi_r
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > phys[MAX_PEN]:
+                    status = DEEP_PENETRATION
             x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
             v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
-        # Blow-up checks (status codes, never an exception).
-        status = OK
-        for n in range(n_nodes):
-            a = x[n, 0] + x[n, 1] + x[n, 2] + v[n, 0] + v[n, 1] + v[n, 2]
-            if not math.isfinite(a):
+            # Blow-up checks (status codes, never an exception); the step still finishes.
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
                 status = NONFINITE
-                break
-            sp2 = v[n, 0] * v[n, 0] + v[n, 1] * v[n, 1] + v[n, 2] * v[n, 2]
-            if sp2 > phys[MAX_SPEED] * phys[MAX_SPEED]:
+            elif vx * vx + vy * vy + vz * vz > max_speed2:
                 status = RUNAWAY_SPEED
-                break
-            pen = -signed_distance(terr_kind, terr, x[n, 0], x[n, 1], x[n, 2])
-            if pen > acc[ACC_MAX_PEN]:
-                acc[ACC_MAX_PEN] = pen
-            if pen > phys[MAX_PEN]:
-                status = DEEP_PENETRATION
-                break
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:
