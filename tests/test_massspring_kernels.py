@@ -140,8 +140,8 @@ def test_terrain_signed_distance_matches_numpy_and_intersection_lies_on_surface(
                 assert abs(TK.signed_distance(kind, f, *q)) < 1e-9
 
 
-def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n, r_t):
-    """One symplectic step on a plane at y = 0, written with numpy."""
+def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n, r_t, euler=False):
+    """One step on a plane at y = 0, written with numpy (symplectic, or Miller's Euler)."""
     f = np.zeros_like(x)
     d = x[lat.springs[:, 1]] - x[lat.springs[:, 0]]
     length = np.linalg.norm(d, axis=1)
@@ -161,7 +161,7 @@ def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n
         if x[n, 1] < fric[FK.CONTACT_DISTANCE]:
             jn = -(1 + r_n) * vn[n, 1] if vn[n, 1] < 0 else 0.0
             vn[n] = FK.ground_friction_numpy(fric_model, fric, vn[n], np.array([0.0, 1.0, 0.0]), sp, jn)
-        q = x[n] + dt * vn[n]
+        q = x[n] + dt * (0.5 * (v[n] + vn[n]) if euler else vn[n])
         if q[1] < 0:
             s = x[n, 1] / (x[n, 1] - q[1])
             i = x[n] + s * (q - x[n])
@@ -173,10 +173,12 @@ def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n
     return xn, vn
 
 
-@pytest.mark.parametrize("creature", ["snake", "worm", "caterpillar"])
-def test_advance_one_step_matches_numpy_step(creature):
+@pytest.mark.parametrize("creature,integrator", [("snake", "symplectic"), ("worm", "symplectic"),
+                                                 ("caterpillar", "symplectic"), ("snake", "euler")])
+def test_advance_one_step_matches_numpy_step(creature, integrator):
     case = resolve_case(creature, "massspring", "drop", overrides=["scenario.passive=true", "scenario.start_height_m=0.0005",
-                                                                   "collision.r_n=0.2", "collision.r_t=0.9"])
+                                                                   "collision.r_n=0.2", "collision.r_t=0.9",
+                                                                   f"body.integrator={integrator}"])
     body = BodyMassSpring(case)
     body.v[:] = rng.normal(scale=0.05, size=body.v.shape)
     body.x[:] += rng.normal(scale=0.0005, size=body.x.shape)
@@ -187,7 +189,7 @@ def test_advance_one_step_matches_numpy_step(creature):
     x0, v0 = body.x.copy(), body.v.copy()
     xr, vr = reference_step(x0, v0, body.inv_mass, body.lattice, body.stiffness, body.damping,
                             body.lattice.rest_length, case.scenario.gravity_m_s2, case.dt, body.fric_model, body.fric,
-                            0.2, 0.9)
+                            0.2, 0.9, euler=integrator == "euler")
     done, status = body.advance(0.0, 1)
     assert (done, status) == (1, K.OK)
     np.testing.assert_allclose(body.x, xr, atol=TOL_EXACT)
@@ -206,3 +208,23 @@ def test_symplectic_lattice_conserves_energy_without_damping_or_ground():
         body.advance(0.0, 500)
         energies.append(sum(body.energy(0.0)))
     assert max(abs(e - e0) for e in energies) / e0 < 0.01  # symplectic Euler: bounded energy error, no drift
+
+
+def test_lattice_energy_matches_numpy():
+    case = resolve_case("worm", "massspring", "drop", overrides=["scenario.passive=true"])
+    body = BodyMassSpring(case)
+    body.x[:] += rng.normal(scale=0.002, size=body.x.shape)
+    body.v[:] = rng.normal(scale=0.1, size=body.v.shape)
+    ke, el, pg = body.energy(0.0)
+    lat = body.lattice
+    assert ke == pytest.approx(0.5 * np.sum(body.mass[:, None] * body.v ** 2), rel=TOL_EXACT)
+    assert el == pytest.approx(spring_energy(body.x, lat.springs, body.stiffness, lat.rest_length), rel=1e-10)
+    assert pg == pytest.approx(np.sum(body.mass * case.scenario.gravity_m_s2 * body.x[:, 1]), rel=TOL_EXACT)
+
+
+def test_miller_presets_fill_unset_constants_only():
+    case = resolve_case("snake", "massspring", "flat", overrides=["body.damping=2.0"])
+    assert (case.body.stiffness, case.body.damping, case.body.substeps_per_frame) == (0.5, 2.0, 25)
+    worm = resolve_case("worm", "massspring", "flat")
+    assert (worm.body.stiffness, worm.body.damping, worm.body.substeps_per_frame) == (1.5, 0.9, 10)
+    assert worm.dt == pytest.approx(1.0 / (worm.body.frame_rate_hz * 10))

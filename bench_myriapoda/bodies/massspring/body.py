@@ -26,18 +26,37 @@ from . import kernels as K
 from .lattice import build_lattice
 
 
+# Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
+# (Miller gives no substep count for the caterpillar; we use the worm's 10).
+MILLER_PRESETS = {
+    "miller-worm": dict(stiffness=1.5, damping=0.9, substeps_per_frame=10),
+    "miller-snake": dict(stiffness=0.5, damping=3.5, substeps_per_frame=25),
+    "miller-caterpillar": dict(stiffness=0.3, damping=0.6, substeps_per_frame=10),
+}
+FROM_PRESET = -1  # default of the preset-backed keys: take the value from ``preset``
+
+
 @dataclass(frozen=True)
 class MassSpringConfig:
-    """Keys of ``[bodies.massspring]`` in a creature file (and ``--set body.KEY``)."""
+    """Keys of ``[bodies.massspring]`` in a creature file (and ``--set body.KEY``).
+
+    ``stiffness``, ``damping`` and ``substeps_per_frame`` come from the named
+    Miller preset unless given explicitly.
+    """
 
     name: str = rng("massspring")
-    preset: str = rng("", doc="name of the Miller preset these constants come from (documentation only)")
-    stiffness: float = rng(1.5, ge=0.0, doc="Miller's k per unit mass [1/frame^2]")
-    damping: float = rng(0.9, ge=0.0, doc="Miller's D per unit mass [1/frame]")
-    frame_rate_hz: float = rng(60.0, gt=0.0, doc="animation frame rate that defines Miller's time unit [Hz]")
-    substeps_per_frame: int = rng(10, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
+    preset: str = rng("miller-worm", choices=tuple(MILLER_PRESETS), doc="Miller's constants for a creature")
+    stiffness: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's k per unit mass [1/frame^2]")
+    damping: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's D per unit mass [1/frame]")
+    frame_rate_hz: float = rng(60.0, gt=0.0, doc="frame rate that defines Miller's time unit [Hz]")
+    substeps_per_frame: int = rng(FROM_PRESET, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
     integrator: str = rng("symplectic", choices=("symplectic", "euler"),
                           doc="semi-implicit Euler, or Miller's explicit Euler x += v dt + a dt^2/2")
+
+    def __post_init__(self):
+        for key, value in MILLER_PRESETS[self.preset].items():
+            if getattr(self, key) == FROM_PRESET:
+                object.__setattr__(self, key, value)
 
 
 def default_dt(cfg: MassSpringConfig) -> float:
