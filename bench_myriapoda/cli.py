@@ -3,6 +3,7 @@
     bench-myriapoda                      run the default quick set of cases, print a table, store results
     bench-myriapoda list [--json]        creatures, bodies, gaits, scenarios, supported combinations
     bench-myriapoda run --creature C --body B --scenario S [...]   one case
+    bench-myriapoda stable-dt --creature C --body B --scenario S [...]   largest stable dt
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -51,25 +52,43 @@ def build_parser() -> argparse.ArgumentParser:
     ls.add_argument("--json", action="store_true", help="print one JSON object")
 
     run = sub.add_parser("run", help="run one case")
-    run.add_argument("--creature", required=True, help="creature name (models/NAME.toml) or a .toml path")
-    run.add_argument("--body", required=True, help="body model: " + ", ".join(sorted(_bodies())))
-    run.add_argument("--scenario", required=True, help="scenario name (scenarios/NAME.toml) or a .toml path")
-    run.add_argument("--gait", help="gait (default: the creature's default gait)")
-    run.add_argument("--duration", type=float, metavar="SECONDS", help="simulated time [s]")
-    run.add_argument("--dt", type=float, metavar="SECONDS", help="time step [s]")
-    run.add_argument("--seed", type=int, metavar="N", help="random seed")
-    run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                     help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2")
+    _case_arguments(run)
     run.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     run.add_argument("--record", metavar="FILE.npz", help="save the recorded time series (all node positions)")
     run.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     run.add_argument("--no-store", action="store_true", help="do not record the run in the results database")
     run.add_argument("--strict", action="store_true", help="exit 1 when the run is unstable")
 
+    sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
+    _case_arguments(sd)
+    sd.add_argument("--rel-tol", type=float, default=0.05, help="stop when the bracket is tighter than this (default 0.05)")
+    sd.add_argument("--max-runs", type=int, default=24, help="at most this many runs (default 24)")
+    sd.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    sd.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    sd.add_argument("--no-store", action="store_true", help="do not record the result in the results database")
+
     q = sub.add_parser("quick", help="run the default quick set of cases (also what no arguments do)")
     q.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     q.add_argument("--json", action="store_true", help="print one JSON object per case, one per line")
     return p
+
+
+def _case_arguments(p: argparse.ArgumentParser) -> None:
+    """The flags that select and configure one case (shared by run and stable-dt)."""
+    p.add_argument("--creature", required=True, help="creature name (models/NAME.toml) or a .toml path")
+    p.add_argument("--body", required=True, help="body model: " + ", ".join(sorted(_bodies())))
+    p.add_argument("--scenario", required=True, help="scenario name (scenarios/NAME.toml) or a .toml path")
+    p.add_argument("--gait", help="gait (default: the creature's default gait)")
+    p.add_argument("--duration", type=float, metavar="SECONDS", help="simulated time [s]")
+    p.add_argument("--dt", type=float, metavar="SECONDS", help="time step [s]")
+    p.add_argument("--seed", type=int, metavar="N", help="random seed")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2")
+
+
+def _resolve(args):
+    return resolve_case(args.creature, args.body, args.scenario, args.gait, duration=args.duration, dt=args.dt,
+                        seed=args.seed, overrides=args.set)
 
 
 def _bodies() -> list[str]:
@@ -162,13 +181,12 @@ def cmd_run(args) -> int:
 
     if args.record and not args.record.endswith(".npz"):
         raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
-    case = resolve_case(args.creature, args.body, args.scenario, args.gait, duration=args.duration, dt=args.dt,
-                        seed=args.seed, overrides=args.set)
+    case = _resolve(args)
     bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(), label=f"{args.creature}/{args.body}")
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record))
     bar.close()
     if not args.no_store:
-        record_run(args.store or DEFAULT_STORE, result)
+        record_run(args.store or DEFAULT_STORE, result, command="run")
     if args.record and result.series is not None:
         save_npz(Path(args.record), result.series, case.to_dict())
     if args.json:
@@ -180,6 +198,40 @@ def cmd_run(args) -> int:
         return EXIT_FAIL
     if result.status == "unstable" and args.strict:
         return EXIT_FAIL
+    return EXIT_OK
+
+
+def cmd_stable_dt(args) -> int:
+    from .harness.runner import RunResult
+    from .harness.stable_dt import find_stable_dt
+    from .harness.store import DEFAULT_STORE, record_run
+
+    if args.rel_tol <= 0:
+        raise InputError("--rel-tol", None, f"{args.rel_tol} is out of range; must be > 0")
+    if args.max_runs < 2:
+        raise InputError("--max-runs", None, f"{args.max_runs} is out of range; must be >= 2")
+    case = _resolve(args)
+    show = not args.json and sys.stdout.isatty()
+
+    def progress(dt, status):
+        if show:
+            print(f"  dt = {dt:.4g} s: {status}", file=sys.stderr)
+
+    res = find_stable_dt(case, rel_tol=args.rel_tol, max_runs=args.max_runs, progress=progress)
+    metrics = {"stable_dt_max_s": res.stable_dt_max_s, "unstable_dt_min_s": res.unstable_dt_min_s,
+               "stable_dt_runs": float(len(res.trials))}
+    result = RunResult(case, "ok", metrics, {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
+                                             "compile_s": float("nan"), "wall_s": float("nan")})
+    if not args.no_store:
+        record_run(args.store or DEFAULT_STORE, result, command="stable-dt")
+    if args.json:
+        d = result.to_json_dict()
+        d["trials"] = [{"dt": dt, "status": st, "t_fail_s": None if math.isnan(tf) else tf} for dt, st, tf in res.trials]
+        print(json.dumps(d))
+    else:
+        for dt, st, tf in res.trials:
+            print(f"  dt = {dt:.4g} s  {st}" + ("" if math.isnan(tf) else f" (failed at t = {tf:.3g} s)"))
+        print(f"stable_dt_max_s = {_fmt(res.stable_dt_max_s)}   (smallest unstable dt: {_fmt(res.unstable_dt_min_s)})")
     return EXIT_OK
 
 
@@ -195,7 +247,7 @@ def cmd_quick(args) -> int:
                           label=f"{case.creature.name}/{case.gait.name}/{case.scenario.name}")
         result = run_case(case, progress=bar.update)
         bar.close()
-        record_run(store, result)
+        record_run(store, result, command="quick")
         if args.json:
             print(json.dumps(result.to_json_dict()))
         rows.append(result)
@@ -222,7 +274,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv or ["quick"])
         if args.command is None:
             args = parser.parse_args(["quick", *argv])
-        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick}[args.command](args)
+        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt}[args.command](args)
     except InputError as exc:
         print(f"bench-myriapoda: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

@@ -117,6 +117,7 @@ class ScenarioConfig:
     slab_edge_radius_m: float = rng(0.02, gt=0.0, doc="slab: radius of the rounded edge [m]")
     start_height_m: float = rng(0.0, ge=0.0, doc="clearance of the body's underside above the surface at t=0 [m]")
     start_x_m: float = rng(0.0, doc="x of the head at t=0 (creatures face +x) [m]")
+    perturbation_m: float = rng(0.0, ge=0.0, doc="random displacement (std) of every node at t=0, seeded by seed [m]")
     gravity_m_s2: float = rng(9.81, ge=0.0)
     passive: bool = rng(False, doc="muscles off (for energy checks)")
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")

@@ -24,6 +24,7 @@ SCHEMA = """
 CREATE TABLE IF NOT EXISTS runs (
     id INTEGER PRIMARY KEY AUTOINCREMENT,
     case_hash TEXT NOT NULL,
+    command TEXT NOT NULL DEFAULT 'run',
     creature TEXT, body TEXT, gait TEXT, scenario TEXT,
     status TEXT NOT NULL,
     message TEXT,
@@ -59,8 +60,11 @@ def connect(path: Path | str = DEFAULT_STORE) -> sqlite3.Connection:
     return con
 
 
-def record_run(path: Path | str, result) -> int:
-    """Insert a ``RunResult`` in one transaction; return its run id."""
+def record_run(path: Path | str, result, command: str = "run") -> int:
+    """Insert a ``RunResult`` in one transaction; return its run id.
+
+    ``command`` says what produced the row: ``run``, ``quick``, ``stable-dt``.
+    """
     case = result.case.to_dict()
     mach = machine_fingerprint()
     commit, dirty = git_commit()
@@ -70,11 +74,11 @@ def record_run(path: Path | str, result) -> int:
     try:
         with con:  # one transaction: both tables or nothing
             cur = con.execute(
-                "INSERT INTO runs (case_hash, creature, body, gait, scenario, status, message, case_json, metrics_json,"
+                "INSERT INTO runs (case_hash, command, creature, body, gait, scenario, status, message, case_json, metrics_json,"
                 " timings_json, steps, steps_per_s, realtime_factor, compile_s, wall_s, git_commit, git_dirty,"
                 " machine_json, cpu_model, cpu_count, python_version, numpy_version, numba_version, timestamp)"
-                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
-                (result.case.case_hash(), case["creature"]["name"], case["body"]["name"], case["gait"]["name"],
+                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                (result.case.case_hash(), command, case["creature"]["name"], case["body"]["name"], case["gait"]["name"],
                  case["scenario"]["name"], result.status, result.message, json.dumps(case, sort_keys=True),
                  json.dumps(metrics, sort_keys=True), json.dumps(timings, sort_keys=True), timings.get("steps"),
                  timings.get("steps_per_s"), timings.get("realtime_factor"), timings.get("compile_s"),

@@ -129,6 +129,8 @@ class BodyMassSpring:
         else:
             nrm = np.array([0.0, 1.0, 0.0])
         x += (sc.start_height_m - phi.min()) * nrm
+        if sc.perturbation_m > 0:
+            x += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=x.shape)
         return np.ascontiguousarray(x)
 
     # ------------------------------------------------------------------ stepping
