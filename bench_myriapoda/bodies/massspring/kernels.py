@@ -10,9 +10,9 @@
 5. position update: semi-implicit (symplectic) Euler x += dt v_new, or
    Miller's Euler x += dt v + a dt^2 / 2 (here written dt (v_old + v_new) / 2
    so that friction's velocity change also applies to the position);
-6. collisions as in Miller Sec. 3, Fig. 1: the path of a mass over the step is
-   intersected with the terrain and the part beyond the surface is reflected
-   with r_n along the normal and kept with r_t along the tangent;
+6. collisions as in Miller Sec. 3, Fig. 1 (``contact_kernels``): the path of a
+   mass over the step is intersected with the terrain and the part beyond the
+   surface is reflected with r_n along the normal and kept with r_t along the tangent;
 7. blow-up checks: non-finite values, a mass faster than a limit, a mass deeper
    inside the terrain than a limit.
 """
@@ -23,8 +23,7 @@ import math
 from numba import njit
 
 from ...controllers.muscle_waves import segment_activation
-from ...world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
-from ..friction_kernels import CONTACT_DISTANCE, MILLER, ground_friction
+from ..contact_kernels import collide_path, contact_friction
 from .lattice import AXIAL, CROSS
 
 # scalar parameter vector layout (``phys``)
@@ -161,7 +160,6 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
     r_n = phys[R_N]
     r_t = phys[R_T]
     euler = phys[INTEGRATOR] == EULER
-    contact_dist = fric[CONTACT_DISTANCE]
     for step in range(n_steps):
         t = t0 + step * dt
         segment_activation(waves, phys[RAMP_S], s_seg, t, act)
@@ -178,50 +176,23 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
             vy = v[n, 1] + dt * (force[n, 1] * im - g)
             vz = v[n, 2] + dt * force[n, 2] * im
             px, py, pz = x[n, 0], x[n, 1], x[n, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
+            f = n // 4
+            vx, vy, vz, phi, touching = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz,
+                                                         vx, vy, vz, spine[f, 0], spine[f, 1], spine[f, 2])
+            if touching:
                 n_contact += 1
-                nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
-                # Normal impulse per unit mass the surface must deliver to stop
-                # the mass moving into it (and bounce it with r_n).
-                vn = vx * nx + vy * ny + vz * nz
-                jn = -(1.0 + r_n) * vn if vn < 0.0 else 0.0
-                f = n // 4
-                vx, vy, vz = ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz,
-                                             spine[f, 0], spine[f, 1], spine[f, 2], jn)
             if euler:
                 qx = px + 0.5 * dt * (v[n, 0] + vx)
                 qy = py + 0.5 * dt * (v[n, 1] + vy)
                 qz = pz + 0.5 * dt * (v[n, 2] + vz)
             else:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                # Miller Sec. 3: intersect the path with the surface, reflect the rest.
-                s = path_surface_fraction(terr_kind, terr, px, py, pz, qx, qy, qz, phi, phi_q)
-                ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
-                nx, ny, nz = surface_normal(terr_kind, terr, ix, iy, iz)
-                dx, dy, dz = qx - ix, qy - iy, qz - iz
-                dn = dx * nx + dy * ny + dz * nz
-                tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
-                qx = ix - r_n * dn * nx + r_t * tx
-                qy = iy - r_n * dn * ny + r_t * ty
-                qz = iz - r_n * dn * nz + r_t * tz
-                vn = vx * nx + vy * ny + vz * nz
-                if vn < 0.0:
-                    wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
-                    vx, vy, vz = r_t * wx - r_n * vn * nx, r_t * wy - r_n * vn * ny, r_t * wz - r_n * vn * nz
-                # A curved surface can leave the reflected point inside: push it out along the
-                # normal.  The depth before that correction is what max_penetration reports.
-                phi_r = signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi_r < 0.0:
-                    mx, my, mz = surface_normal(terr_kind, terr, qx, qy, qz)
-                    qx, qy, qz = qx - phi_r * mx, qy - phi_r * my, qz - phi_r * mz
-                pen = -phi_r
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > phys[MAX_PEN]:
-                    status = DEEP_PENETRATION
+            qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                       qx, qy, qz, vx, vy, vz)
+            if pen > acc[ACC_MAX_PEN]:
+                acc[ACC_MAX_PEN] = pen
+            if pen > phys[MAX_PEN]:
+                status = DEEP_PENETRATION
             x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
             v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
             # Blow-up checks (status codes, never an exception); the step still finishes.

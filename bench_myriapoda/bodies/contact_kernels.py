@@ -1,0 +1,67 @@
+"""Ground contact of one point mass, shared by every body backend's numba step loop.
+
+A step of a mass in contact has two parts, in this order:
+
+1. ``contact_friction``: if the mass is within the contact distance of the
+   terrain, the friction model (``friction_kernels``) changes its velocity
+   after the step's forces.  The normal impulse per unit mass the surface must
+   deliver is estimated from the velocity into the surface (times 1 + r_n).
+2. ``collide_path``: Miller 1988 Sec. 3, Fig. 1: the mass's path over the step
+   (p -> q) is intersected with the terrain; the part of the path beyond the
+   surface is reflected with r_n along the normal and kept with r_t along the
+   tangent, and the velocity likewise.  A curved surface can leave the
+   reflected point inside: it is then pushed out along the normal, and the
+   depth before that correction is returned as the penetration.
+"""
+from __future__ import annotations
+
+from numba import njit
+
+from ..world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
+from .friction_kernels import CONTACT_DISTANCE, ground_friction
+
+
+@njit(cache=True, error_model="numpy")
+def contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz, sx, sy, sz):
+    """Return (vx, vy, vz, phi, touching) for a mass at p with velocity v after forces.
+
+    s: unit spine vector toward the head at the mass; phi: signed distance of p [m].
+    """
+    phi = signed_distance(terr_kind, terr, px, py, pz)
+    if phi >= fric[CONTACT_DISTANCE]:
+        return vx, vy, vz, phi, False
+    nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
+    vn = vx * nx + vy * ny + vz * nz
+    jn = -(1.0 + r_n) * vn if vn < 0.0 else 0.0
+    vx, vy, vz = ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn)
+    return vx, vy, vz, phi, True
+
+
+@njit(cache=True, error_model="numpy")
+def collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi_p, qx, qy, qz, vx, vy, vz):
+    """Return (qx, qy, qz, vx, vy, vz, penetration) after Miller's collision of the path p -> q.
+
+    phi_p: signed distance of p [m]; penetration: depth left inside [m] (0 without collision).
+    """
+    phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+    if phi_q >= 0.0:
+        return qx, qy, qz, vx, vy, vz, 0.0
+    s = path_surface_fraction(terr_kind, terr, px, py, pz, qx, qy, qz, phi_p, phi_q)
+    ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
+    nx, ny, nz = surface_normal(terr_kind, terr, ix, iy, iz)
+    dx, dy, dz = qx - ix, qy - iy, qz - iz
+    dn = dx * nx + dy * ny + dz * nz
+    tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
+    qx = ix - r_n * dn * nx + r_t * tx
+    qy = iy - r_n * dn * ny + r_t * ty
+    qz = iz - r_n * dn * nz + r_t * tz
+    vn = vx * nx + vy * ny + vz * nz
+    if vn < 0.0:
+        wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
+        vx, vy, vz = r_t * wx - r_n * vn * nx, r_t * wy - r_n * vn * ny, r_t * wz - r_n * vn * nz
+    phi_r = signed_distance(terr_kind, terr, qx, qy, qz)
+    if phi_r < 0.0:
+        mx, my, mz = surface_normal(terr_kind, terr, qx, qy, qz)
+        qx, qy, qz = qx - phi_r * mx, qy - phi_r * my, qz - phi_r * mz
+        return qx, qy, qz, vx, vy, vz, -phi_r
+    return qx, qy, qz, vx, vy, vz, 0.0
