@@ -1,0 +1,37 @@
+"""bench-myriapoda: a benchmark suite for simulated myriapods, worms and snakes."""
+from __future__ import annotations
+
+import hashlib
+import os
+from pathlib import Path
+
+__version__ = "0.1.0"
+
+
+def _numba_cache_dir() -> str:
+    """A numba cache directory keyed by the hash of every source file of this package.
+
+    numba's on-disk cache (``cache=True``) is invalidated only by changes to the
+    file that defines a function, not to the files of the functions it calls, so
+    editing a shared kernel (e.g. ``contact_kernels.py``) would leave callers in
+    other modules running stale machine code.  Keying the whole cache on all
+    sources makes any edit start from a clean cache.
+    """
+    h = hashlib.sha256()
+    root = Path(__file__).resolve().parent
+    for p in sorted(root.rglob("*.py")):
+        h.update(str(p.relative_to(root)).encode())
+        h.update(p.read_bytes())
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(base, "bench-myriapoda", "numba", h.hexdigest()[:16])
+
+
+if "NUMBA_CACHE_DIR" not in os.environ:  # a user's own choice wins
+    os.environ["NUMBA_CACHE_DIR"] = _numba_cache_dir()
+    try:  # numba may already be imported: its config read the environment then
+        import sys
+
+        if "numba" in sys.modules:
+            sys.modules["numba"].config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
+    except AttributeError:
+        pass

@@ -18,34 +18,31 @@ from __future__ import annotations
 from numba import njit
 
 from ..world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
-from .friction_kernels import CONTACT_DISTANCE, ground_friction
+from .friction_kernels import ground_friction
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz, sx, sy, sz):
-    """Return (vx, vy, vz, phi, touching) for a mass at p with velocity v after forces.
+    """Return (vx, vy, vz) for a mass at p, touching the terrain, with velocity v after forces.
 
-    s: unit spine vector toward the head at the mass; phi: signed distance of p [m].
+    The caller tests contact (signed distance of p below ``fric[CONTACT_DISTANCE]``)
+    inline, so the common no-contact path costs no call.  s: unit spine vector
+    toward the head at the mass.
     """
-    phi = signed_distance(terr_kind, terr, px, py, pz)
-    if phi >= fric[CONTACT_DISTANCE]:
-        return vx, vy, vz, phi, False
     nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
     vn = vx * nx + vy * ny + vz * nz
     jn = -(1.0 + r_n) * vn if vn < 0.0 else 0.0
-    vx, vy, vz = ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn)
-    return vx, vy, vz, phi, True
+    return ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn)
 
 
-@njit(cache=True, error_model="numpy")
-def collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi_p, qx, qy, qz, vx, vy, vz):
+@njit(cache=True, error_model="numpy", inline="always")
+def collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi_p, qx, qy, qz, phi_q, vx, vy, vz):
     """Return (qx, qy, qz, vx, vy, vz, penetration) after Miller's collision of the path p -> q.
 
-    phi_p: signed distance of p [m]; penetration: depth left inside [m] (0 without collision).
+    The caller tests the crossing (phi_q < 0) inline.  phi_p, phi_q: signed
+    distances of p and q [m]; penetration: depth left inside after the
+    reflection, before the push-out [m].
     """
-    phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-    if phi_q >= 0.0:
-        return qx, qy, qz, vx, vy, vz, 0.0
     s = path_surface_fraction(terr_kind, terr, px, py, pz, qx, qy, qz, phi_p, phi_q)
     ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
     nx, ny, nz = surface_normal(terr_kind, terr, ix, iy, iz)

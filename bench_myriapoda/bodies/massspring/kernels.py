@@ -23,7 +23,9 @@ import math
 from numba import njit
 
 from ...controllers.muscle_waves import segment_activation
+from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import collide_path, contact_friction
+from ..friction_kernels import CONTACT_DISTANCE
 from .lattice import AXIAL, CROSS
 
 # scalar parameter vector layout (``phys``)
@@ -160,6 +162,7 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
     r_n = phys[R_N]
     r_t = phys[R_T]
     euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
     for step in range(n_steps):
         t = t0 + step * dt
         segment_activation(waves, phys[RAMP_S], s_seg, t, act)
@@ -176,23 +179,26 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
             vy = v[n, 1] + dt * (force[n, 1] * im - g)
             vz = v[n, 2] + dt * force[n, 2] * im
             px, py, pz = x[n, 0], x[n, 1], x[n, 2]
-            f = n // 4
-            vx, vy, vz, phi, touching = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz,
-                                                         vx, vy, vz, spine[f, 0], spine[f, 1], spine[f, 2])
-            if touching:
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
                 n_contact += 1
+                f = n // 4
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[f, 0], spine[f, 1], spine[f, 2])
             if euler:
                 qx = px + 0.5 * dt * (v[n, 0] + vx)
                 qy = py + 0.5 * dt * (v[n, 1] + vy)
                 qz = pz + 0.5 * dt * (v[n, 2] + vz)
             else:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                       qx, qy, qz, vx, vy, vz)
-            if pen > acc[ACC_MAX_PEN]:
-                acc[ACC_MAX_PEN] = pen
-            if pen > phys[MAX_PEN]:
-                status = DEEP_PENETRATION
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > phys[MAX_PEN]:
+                    status = DEEP_PENETRATION
             x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
             v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
             # Blow-up checks (status codes, never an exception); the step still finishes.
