@@ -1,0 +1,1190 @@
+"""Numba kernels of the tetrahedral FEM of the myriapod paper (Fang et al. 2013, App. A).
+
+Every kernel is a pure function over arrays with explicit outputs; each docstring
+says whether an output is overwritten or accumulated into.  Orchestration (building
+the factorization, caching it per fixed-node mask, status bookkeeping) lives in
+``system.py``.  All kernels use ``error_model="numpy"``: a division by zero gives
+inf/nan (caught by the instability check) instead of a Python exception, and the
+checks that the Python error model inserts would stop LLVM from vectorising.
+
+Conventions
+-----------
+* Arrays are float64 (indices int64) and C-contiguous.  ``x``: (n_nodes, 3) [m],
+  ``v``: (n_nodes, 3) [m/s], ``tets``: (n_tets, 4) node indices,
+  ``Dm_inv``: (n_tets, 3, 3) [1/m], ``vol``: (n_tets,) rest volumes [m^3],
+  ``mu``, ``lam``: (n_tets,) Lame parameters [Pa].
+* Edge matrices use Dm = [X1 - X0, X2 - X0, X3 - X0] (columns).  Eq. 3 lists the
+  same edges in the reverse column order; that only permutes the local node
+  numbering.  Meshes are oriented so that det Dm > 0 (see ``mesh.py``).
+* Forces are minus the energy gradient.  Eq. 9 of the paper writes the gradient
+  V0 P Dm^-T; the force on the nodes is its negative.
+* The hot element loop works on blocked structure-of-arrays scratch so that LLVM
+  vectorises it: tets are grouped in blocks of ``LANES``; a per-tet quantity with
+  k entries is stored as an array (n_blocks, k * LANES) where entry r of tet
+  e = b * LANES + l sits at [b, r * LANES + l].  (With one row per entry and
+  all tets in a row, the row offsets are run-time values and LLVM gives up:
+  "too many memory checks needed"; inside a block they are constants.)  Arrays:
+  ``coef`` (n_blocks, 11 LANES) packs -V Dm^-1 (entry (r, c) in row 3 r + c),
+  2 mu (row 9) and lam (row 10), built by ``pack_tet_coefficients``; ``q_ws``
+  (n_blocks, 4 LANES) each tet's rotation as a quaternion (w, x, y, z), kept
+  between steps; ``F_work`` (n_blocks, 9 LANES) and ``H_work``
+  (n_blocks, 10 LANES) are scratch.  ``new_tet_workspace`` allocates them, with
+  the padding lanes of the last block set to an inert identity tet.
+
+Active strain (muscles)
+-----------------------
+A per-tet active deformation A (rest-shape scaling) makes the elastic part of the
+deformation F_e = F A^-1 = Ds Dm^-1 A^-1.  We represent it by an *effective*
+inverse edge matrix ``Dm_inv_eff = Dm^-1 A^-1`` (built by ``active_dm_inv``) that
+replaces ``Dm_inv`` in every kernel (and in ``coef``), while ``vol`` stays the
+rest volume: the energy is integrated over the rest volume, sum_e V_e Psi(F_e).
+Passive tets use A = I, i.e. ``Dm_inv_eff = Dm_inv``.  This costs nothing per
+step; the body layer rebuilds ``Dm_inv_eff`` and ``coef`` when the activation
+changes.
+
+Singular value decomposition and the corotational rotation
+----------------------------------------------------------
+``_svd3_core`` is a 3x3 SVD in scalar registers: cyclic Jacobi on the symmetric
+F^T F (exact rotations, run to convergence), columns sorted by singular value with
+det V = +1 kept, then U from a Gram-Schmidt QR of F V with u3 = u1 x u2 (McAdams
+et al. 2011, Sec. 2, with exact Givens in float64 instead of approximate ones).
+U and V are proper rotations and the smallest singular value carries the sign of
+det F (Irving et al. 2004, Stomakhin et al. 2012), so R = U V^T is the rotation of
+the fixed corotational model, also for flat and inverted elements.
+
+That SVD costs a few hundred ns per element, and a warm start does not help it:
+near rest F^T F ~ I, so its eigenvectors are ill-defined and jump from step to
+step.  The time step therefore gets R another way.  R = U V^T is the maximiser of
+tr(R^T F) over SO(3) (Procrustes with the det constraint); it is unique whenever
+sigma_2 + sigma_3 > 0, even where the singular vectors are not.  ``_newton_step``
+is one Newton step of that maximisation in exponential coordinates,
+R <- R exp([w]), w = -(tr(M) I - sym(M))^-1 axial(M - M^T), M = R^T F, applied to
+a quaternion (q <- q (1, w/2)).  Warm-started from each tet's rotation of the
+previous step it converges quadratically; the element pass runs two steps for
+every tet, branch-free and vectorised, and accepts when the second step was
+smaller than ``NEWTON_TOL`` (the rotation error left is then of order its
+square, ~1e-12).  The few tets that fail (Hessian not positive definite, i.e. far
+from the maximum or sigma_2 + sigma_3 <= 0; a step above ``_NEWTON_MAX_STEP``;
+not yet converged) go through ``_fcr_rotation``: more Newton steps, then the SVD.
+The tests compare both paths with numpy's SVD, including inverted F.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+
+# Tets per block of the structure-of-arrays layout (a multiple of the SIMD width).
+LANES = 16
+
+# Status codes returned by ``advance``.
+STATUS_OK = 0
+STATUS_NONFINITE = 1
+STATUS_RUNAWAY = 2
+
+# Jacobi sweeps: a pair (p, q) is rotated while |a_pq| exceeds both a relative
+# bound (gives relative accuracy of the eigenvalues, Demmel-Veselic) and an absolute
+# floor relative to trace(F^T F) (stops rotating on round-off in flat elements).
+_JACOBI_REL_TOL = 1e-15
+_JACOBI_ABS_FLOOR = 1e-30
+_JACOBI_MAX_SWEEPS = 12
+# Gram-Schmidt: a column shorter than this fraction of the first is treated as
+# zero (rank-deficient F); its direction is then chosen, not computed.
+_QR_REL_TINY = 1e-14
+_QR_ABS_TINY = 1e-150
+# Newton rotation: accept after a step smaller than NEWTON_TOL [rad] (the error left
+# is of order its square); a step above _NEWTON_MAX_STEP [rad] is not trusted, and
+# after _NEWTON_MAX_ITER steps without convergence the SVD decides.
+NEWTON_TOL = 1e-6
+_NEWTON_MAX_ITER = 6
+_NEWTON_MAX_STEP = 0.5
+# Squared half-angle bounds used on the quaternion increment h = w / 2.
+_NEWTON_TOL_HH = 0.25 * NEWTON_TOL * NEWTON_TOL
+_NEWTON_MAX_HH = 0.25 * _NEWTON_MAX_STEP * _NEWTON_MAX_STEP
+
+
+# --------------------------------------------------------------------------------------
+# 3x3 SVD / polar decomposition
+# --------------------------------------------------------------------------------------
+@njit(cache=True, inline="always", error_model="numpy")
+def _jacobi_cs(app, aqq, apq):
+    """Rotation (c, s, t) that zeroes a_pq of a symmetric matrix (Numerical Recipes 11.1)."""
+    theta = (aqq - app) / (2.0 * apq)
+    if abs(theta) > 1e150:
+        t = 0.5 / theta
+    else:
+        t = 1.0 / (abs(theta) + math.sqrt(theta * theta + 1.0))
+        if theta < 0.0:
+            t = -t
+    c = 1.0 / math.sqrt(t * t + 1.0)
+    return c, t * c, t
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _needs_rotation(app, aqq, apq, floor):
+    g = abs(apq)
+    return g > floor and g > _JACOBI_REL_TOL * math.sqrt(abs(app * aqq))
+
+
+@njit(cache=True, error_model="numpy")
+def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
+    """Signed SVD F = U diag(s) V^T of a 3x3 matrix held in scalars.
+
+    Returns (u00..u22, s0, s1, s2, v00..v22) row-major: U, V proper rotations,
+    s0 >= s1 >= |s2|, s2 < 0 iff det F < 0.
+    """
+    # S = F^T F
+    a00 = f00 * f00 + f10 * f10 + f20 * f20
+    a01 = f00 * f01 + f10 * f11 + f20 * f21
+    a02 = f00 * f02 + f10 * f12 + f20 * f22
+    a11 = f01 * f01 + f11 * f11 + f21 * f21
+    a12 = f01 * f02 + f11 * f12 + f21 * f22
+    a22 = f02 * f02 + f12 * f12 + f22 * f22
+    v00, v01, v02 = 1.0, 0.0, 0.0
+    v10, v11, v12 = 0.0, 1.0, 0.0
+    v20, v21, v22 = 0.0, 0.0, 1.0
+
+    floor = _JACOBI_ABS_FLOOR * (a00 + a11 + a22)
+    for _sweep in range(_JACOBI_MAX_SWEEPS):
+        rotated = False
+        # pair (0, 1); the third index r = 2
+        if _needs_rotation(a00, a11, a01, floor):
+            c, s, t = _jacobi_cs(a00, a11, a01)
+            a00 -= t * a01
+            a11 += t * a01
+            a01 = 0.0
+            r0 = c * a02 - s * a12
+            r1 = s * a02 + c * a12
+            a02 = r0
+            a12 = r1
+            r0 = c * v00 - s * v01
+            v01 = s * v00 + c * v01
+            v00 = r0
+            r0 = c * v10 - s * v11
+            v11 = s * v10 + c * v11
+            v10 = r0
+            r0 = c * v20 - s * v21
+            v21 = s * v20 + c * v21
+            v20 = r0
+            rotated = True
+        # pair (0, 2); r = 1
+        if _needs_rotation(a00, a22, a02, floor):
+            c, s, t = _jacobi_cs(a00, a22, a02)
+            a00 -= t * a02
+            a22 += t * a02
+            a02 = 0.0
+            r0 = c * a01 - s * a12
+            r1 = s * a01 + c * a12
+            a01 = r0
+            a12 = r1
+            r0 = c * v00 - s * v02
+            v02 = s * v00 + c * v02
+            v00 = r0
+            r0 = c * v10 - s * v12
+            v12 = s * v10 + c * v12
+            v10 = r0
+            r0 = c * v20 - s * v22
+            v22 = s * v20 + c * v22
+            v20 = r0
+            rotated = True
+        # pair (1, 2); r = 0
+        if _needs_rotation(a11, a22, a12, floor):
+            c, s, t = _jacobi_cs(a11, a22, a12)
+            a11 -= t * a12
+            a22 += t * a12
+            a12 = 0.0
+            r0 = c * a01 - s * a02
+            r1 = s * a01 + c * a02
+            a01 = r0
+            a02 = r1
+            r0 = c * v01 - s * v02
+            v02 = s * v01 + c * v02
+            v01 = r0
+            r0 = c * v11 - s * v12
+            v12 = s * v11 + c * v12
+            v11 = r0
+            r0 = c * v21 - s * v22
+            v22 = s * v21 + c * v22
+            v21 = r0
+            rotated = True
+        if not rotated:
+            break
+
+    # Sort eigenvalues of F^T F descending; a column swap is paired with a sign
+    # flip of one column so that det V stays +1.
+    if a00 < a11:
+        a00, a11 = a11, a00
+        v00, v01 = -v01, v00
+        v10, v11 = -v11, v10
+        v20, v21 = -v21, v20
+    if a00 < a22:
+        a00, a22 = a22, a00
+        v00, v02 = -v02, v00
+        v10, v12 = -v12, v10
+        v20, v22 = -v22, v20
+    if a11 < a22:
+        a11, a22 = a22, a11
+        v01, v02 = -v02, v01
+        v11, v12 = -v12, v11
+        v21, v22 = -v22, v21
+
+    # B = F V; its columns are orthogonal with norms sigma_i.
+    b00 = f00 * v00 + f01 * v10 + f02 * v20
+    b10 = f10 * v00 + f11 * v10 + f12 * v20
+    b20 = f20 * v00 + f21 * v10 + f22 * v20
+    b01 = f00 * v01 + f01 * v11 + f02 * v21
+    b11 = f10 * v01 + f11 * v11 + f12 * v21
+    b21 = f20 * v01 + f21 * v11 + f22 * v21
+    b02 = f00 * v02 + f01 * v12 + f02 * v22
+    b12 = f10 * v02 + f11 * v12 + f12 * v22
+    b22 = f20 * v02 + f21 * v12 + f22 * v22
+
+    # QR of B by Gram-Schmidt with u2 = u0 x u1 (so det U = +1 and the sign of
+    # det F lands on the smallest singular value).
+    n0 = math.sqrt(b00 * b00 + b10 * b10 + b20 * b20)
+    if n0 > _QR_ABS_TINY:
+        u00 = b00 / n0
+        u10 = b10 / n0
+        u20 = b20 / n0
+    else:
+        u00 = 1.0
+        u10 = 0.0
+        u20 = 0.0
+    d = u00 * b01 + u10 * b11 + u20 * b21
+    w0 = b01 - d * u00
+    w1 = b11 - d * u10
+    w2 = b21 - d * u20
+    n1 = math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
+    if n1 > _QR_REL_TINY * n0 and n1 > _QR_ABS_TINY:
+        u01 = w0 / n1
+        u11 = w1 / n1
+        u21 = w2 / n1
+    else:
+        # Rank <= 1: any unit vector orthogonal to u0 will do; take u0 x e_k with
+        # e_k the axis least aligned with u0.
+        ax = abs(u00)
+        ay = abs(u10)
+        az = abs(u20)
+        if ax <= ay and ax <= az:
+            w0, w1, w2 = 0.0, u20, -u10
+        elif ay <= az:
+            w0, w1, w2 = -u20, 0.0, u00
+        else:
+            w0, w1, w2 = u10, -u00, 0.0
+        nw = math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
+        u01 = w0 / nw
+        u11 = w1 / nw
+        u21 = w2 / nw
+        if u01 * b01 + u11 * b11 + u21 * b21 < 0.0:
+            u01 = -u01
+            u11 = -u11
+            u21 = -u21
+    u02 = u10 * u21 - u20 * u11
+    u12 = u20 * u01 - u00 * u21
+    u22 = u00 * u11 - u10 * u01
+    sg0 = u00 * b00 + u10 * b10 + u20 * b20
+    sg1 = u01 * b01 + u11 * b11 + u21 * b21
+    sg2 = u02 * b02 + u12 * b12 + u22 * b22
+    return (u00, u01, u02, u10, u11, u12, u20, u21, u22,
+            sg0, sg1, sg2,
+            v00, v01, v02, v10, v11, v12, v20, v21, v22)
+
+
+@njit(cache=True, error_model="numpy")
+def svd3(F, U, sigma, V):
+    """Signed SVD of one 3x3 matrix: F = U diag(sigma) V^T.
+
+    F: (3, 3).  Overwrites U: (3, 3), sigma: (3,), V: (3, 3).  U and V are proper
+    rotations; sigma[0] >= sigma[1] >= |sigma[2]| and sigma[2] < 0 iff det F < 0.
+    """
+    r = _svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
+    for i in range(3):
+        for j in range(3):
+            U[i, j] = r[3 * i + j]
+            V[i, j] = r[12 + 3 * i + j]
+    sigma[0] = r[9]
+    sigma[1] = r[10]
+    sigma[2] = r[11]
+
+
+@njit(cache=True, error_model="numpy")
+def svd3_batch(F, U, sigma, V):
+    """Signed SVD of many 3x3 matrices.  F: (k, 3, 3); overwrites U, V: (k, 3, 3), sigma: (k, 3)."""
+    for e in range(F.shape[0]):
+        svd3(F[e], U[e], sigma[e], V[e])
+
+
+@njit(cache=True, error_model="numpy")
+def polar_rotation(F, R):
+    """Rotation of the signed polar decomposition, R = U V^T (det R = +1).
+
+    F: (3, 3); overwrites R: (3, 3).  For det F > 0 this is the polar factor of
+    F = R S; for inverted F it is the rotation closest to F (the inversion is
+    carried by S, Irving et al. 2004).
+    """
+    r = _svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
+    for i in range(3):
+        for j in range(3):
+            R[i, j] = r[3 * i] * r[12 + 3 * j] + r[3 * i + 1] * r[12 + 3 * j + 1] + r[3 * i + 2] * r[12 + 3 * j + 2]
+
+
+# --------------------------------------------------------------------------------------
+# Corotational rotation by warm-started Newton iteration
+# --------------------------------------------------------------------------------------
+@njit(cache=True, inline="always", error_model="numpy")
+def _quat_to_rot(w, x, y, z):
+    """Rotation matrix (row-major 9-tuple) of the quaternion (w, x, y, z).
+
+    Homogeneous form: exact for any non-zero quaternion, so |q| need not be 1.
+    """
+    s = 2.0 / (w * w + x * x + y * y + z * z)
+    xs = x * s
+    ys = y * s
+    zs = z * s
+    wx = w * xs
+    wy = w * ys
+    wz = w * zs
+    xx = x * xs
+    xy = x * ys
+    xz = x * zs
+    yy = y * ys
+    yz = y * zs
+    zz = z * zs
+    return (1.0 - (yy + zz), xy - wz, xz + wy,
+            xy + wz, 1.0 - (xx + zz), yz - wx,
+            xz - wy, yz + wx, 1.0 - (xx + yy))
+
+
+@njit(cache=True, error_model="numpy")
+def _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22):
+    """Unit quaternion (w, x, y, z) of a rotation matrix (Shepperd's method)."""
+    tr = r00 + r11 + r22
+    if tr > 0.0:
+        s = 2.0 * math.sqrt(tr + 1.0)
+        w, x, y, z = 0.25 * s, (r21 - r12) / s, (r02 - r20) / s, (r10 - r01) / s
+    elif r00 > r11 and r00 > r22:
+        s = 2.0 * math.sqrt(1.0 + r00 - r11 - r22)
+        w, x, y, z = (r21 - r12) / s, 0.25 * s, (r01 + r10) / s, (r02 + r20) / s
+    elif r11 > r22:
+        s = 2.0 * math.sqrt(1.0 + r11 - r00 - r22)
+        w, x, y, z = (r02 - r20) / s, (r01 + r10) / s, 0.25 * s, (r12 + r21) / s
+    else:
+        s = 2.0 * math.sqrt(1.0 + r22 - r00 - r11)
+        w, x, y, z = (r10 - r01) / s, (r02 + r20) / s, (r12 + r21) / s, 0.25 * s
+    n = 1.0 / math.sqrt(w * w + x * x + y * y + z * z)
+    return w * n, x * n, y * n, z * n
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
+    """One Newton step towards argmax_R tr(R^T F) from the rotation of q (module docstring).
+
+    Branch-free so that loops over tets vectorise.  Returns (q', hh, ok): the
+    updated (unnormalised) quaternion q (1, w/2), hh = |w/2|^2, and ok = the Newton
+    Hessian is positive definite and the step is below _NEWTON_MAX_STEP.  When not
+    ok, q' is meaningless.
+    """
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
+    m00 = r00 * f00 + r10 * f10 + r20 * f20
+    m01 = r00 * f01 + r10 * f11 + r20 * f21
+    m02 = r00 * f02 + r10 * f12 + r20 * f22
+    m10 = r01 * f00 + r11 * f10 + r21 * f20
+    m11 = r01 * f01 + r11 * f11 + r21 * f21
+    m12 = r01 * f02 + r11 * f12 + r21 * f22
+    m20 = r02 * f00 + r12 * f10 + r22 * f20
+    m21 = r02 * f01 + r12 * f11 + r22 * f21
+    m22 = r02 * f02 + r12 * f12 + r22 * f22
+    # gradient axial(M - M^T) and Hessian H = tr(M) I - sym(M)
+    g0 = m12 - m21
+    g1 = m20 - m02
+    g2 = m01 - m10
+    tr = m00 + m11 + m22
+    h00 = tr - m00
+    h11 = tr - m11
+    h22 = tr - m22
+    h01 = -0.5 * (m01 + m10)
+    h02 = -0.5 * (m02 + m20)
+    h12 = -0.5 * (m12 + m21)
+    c00 = h11 * h22 - h12 * h12
+    c01 = h02 * h12 - h01 * h22
+    c02 = h01 * h12 - h02 * h11
+    c11 = h00 * h22 - h02 * h02
+    c12 = h01 * h02 - h00 * h12
+    c22 = h00 * h11 - h01 * h01
+    det = h00 * c00 + h01 * c01 + h02 * c02
+    # half step h = w / 2 = -H^-1 g / 2
+    k = -0.5 / det
+    hx = k * (c00 * g0 + c01 * g1 + c02 * g2)
+    hy = k * (c01 * g0 + c11 * g1 + c12 * g2)
+    hz = k * (c02 * g0 + c12 * g1 + c22 * g2)
+    hh = hx * hx + hy * hy + hz * hz
+    ok = (h00 > 0.0) & (c22 > 0.0) & (det > 0.0) & (hh < _NEWTON_MAX_HH)
+    nw = qw - (qx * hx + qy * hy + qz * hz)
+    nx = qx + qw * hx + (qy * hz - qz * hy)
+    ny = qy + qw * hy + (qz * hx - qx * hz)
+    nz = qz + qw * hz + (qx * hy - qy * hx)
+    return nw, nx, ny, nz, hh, ok
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _renormalize(qw, qx, qy, qz):
+    """Scale q towards unit length by one Newton step for 1/|q| (no sqrt).
+
+    |q| only has to stay bounded (``_quat_to_rot`` is homogeneous); each Newton
+    step multiplies |q|^2 by 1 + hh, and this correction removes that drift.
+    """
+    c = 1.5 - 0.5 * (qw * qw + qx * qx + qy * qy + qz * qz)
+    return qw * c, qx * c, qy * c, qz * c
+
+
+@njit(cache=True, error_model="numpy")
+def _fcr_rotation(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
+    """Rotation R = U V^T of the signed SVD of F: Newton from q, SVD fallback.
+
+    (qw, qx, qy, qz): starting rotation (any non-zero quaternion; the previous
+    step's is best).  Returns (R row-major 9 scalars, qw, qx, qy, qz, n_iter) with
+    n_iter = -1 when the SVD fallback was used.
+    """
+    for it in range(_NEWTON_MAX_ITER):
+        nw, nx, ny, nz, hh, ok = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz)
+        if not ok:
+            break
+        qw, qx, qy, qz = _renormalize(nw, nx, ny, nz)
+        if hh < _NEWTON_TOL_HH:
+            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
+            return r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, it + 1
+    (u00, u01, u02, u10, u11, u12, u20, u21, u22, _s0, _s1, _s2,
+     v00, v01, v02, v10, v11, v12, v20, v21, v22) = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
+    r00 = u00 * v00 + u01 * v01 + u02 * v02
+    r01 = u00 * v10 + u01 * v11 + u02 * v12
+    r02 = u00 * v20 + u01 * v21 + u02 * v22
+    r10 = u10 * v00 + u11 * v01 + u12 * v02
+    r11 = u10 * v10 + u11 * v11 + u12 * v12
+    r12 = u10 * v20 + u11 * v21 + u12 * v22
+    r20 = u20 * v00 + u21 * v01 + u22 * v02
+    r21 = u20 * v10 + u21 * v11 + u22 * v12
+    r22 = u20 * v20 + u21 * v21 + u22 * v22
+    qw, qx, qy, qz = _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22)
+    return r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, -1
+
+
+@njit(cache=True, error_model="numpy")
+def fcr_rotation(F, q, R):
+    """Corotational rotation of one F by warm-started Newton with SVD fallback.
+
+    F: (3, 3); q: (4,) quaternion (w, x, y, z), the starting guess, OVERWRITTEN
+    with the result; R: (3, 3) OVERWRITTEN.  Returns the number of Newton steps,
+    or -1 if the SVD fallback was used.
+    """
+    (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, it) = _fcr_rotation(
+        F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2],
+        q[0], q[1], q[2], q[3])
+    R[0, 0] = r00
+    R[0, 1] = r01
+    R[0, 2] = r02
+    R[1, 0] = r10
+    R[1, 1] = r11
+    R[1, 2] = r12
+    R[2, 0] = r20
+    R[2, 1] = r21
+    R[2, 2] = r22
+    q[0] = qw
+    q[1] = qx
+    q[2] = qy
+    q[3] = qz
+    return it
+
+
+# --------------------------------------------------------------------------------------
+# Rest shape, deformation gradient, active strain
+# --------------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def rest_shape(X, tets, Dm_inv, vol):
+    """Inverse rest edge matrices and signed rest volumes.
+
+    X: (n_nodes, 3) rest positions [m]; tets: (n_tets, 4).  Overwrites
+    Dm_inv: (n_tets, 3, 3) [1/m] with (X1-X0, X2-X0, X3-X0)^-1 (eq. 3) and
+    vol: (n_tets,) [m^3] with det(Dm) / 6 (negative for a badly oriented tet; a
+    zero-volume tet gives non-finite Dm_inv; callers check).
+    """
+    for e in range(tets.shape[0]):
+        i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+        a00 = X[i1, 0] - X[i0, 0]
+        a10 = X[i1, 1] - X[i0, 1]
+        a20 = X[i1, 2] - X[i0, 2]
+        a01 = X[i2, 0] - X[i0, 0]
+        a11 = X[i2, 1] - X[i0, 1]
+        a21 = X[i2, 2] - X[i0, 2]
+        a02 = X[i3, 0] - X[i0, 0]
+        a12 = X[i3, 1] - X[i0, 1]
+        a22 = X[i3, 2] - X[i0, 2]
+        c00 = a11 * a22 - a12 * a21
+        c01 = a12 * a20 - a10 * a22
+        c02 = a10 * a21 - a11 * a20
+        det = a00 * c00 + a01 * c01 + a02 * c02
+        inv = 1.0 / det
+        Dm_inv[e, 0, 0] = c00 * inv
+        Dm_inv[e, 1, 0] = c01 * inv
+        Dm_inv[e, 2, 0] = c02 * inv
+        Dm_inv[e, 0, 1] = (a02 * a21 - a01 * a22) * inv
+        Dm_inv[e, 1, 1] = (a00 * a22 - a02 * a20) * inv
+        Dm_inv[e, 2, 1] = (a01 * a20 - a00 * a21) * inv
+        Dm_inv[e, 0, 2] = (a01 * a12 - a02 * a11) * inv
+        Dm_inv[e, 1, 2] = (a02 * a10 - a00 * a12) * inv
+        Dm_inv[e, 2, 2] = (a00 * a11 - a01 * a10) * inv
+        vol[e] = det / 6.0
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _tet_F(x, tets, Dm_inv, e):
+    """F = Ds Dm^-1 of tet e (eqs. 2-4): node ids, then F as 9 scalars row-major."""
+    i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+    x0 = x[i0, 0]
+    y0 = x[i0, 1]
+    z0 = x[i0, 2]
+    d00 = x[i1, 0] - x0
+    d10 = x[i1, 1] - y0
+    d20 = x[i1, 2] - z0
+    d01 = x[i2, 0] - x0
+    d11 = x[i2, 1] - y0
+    d21 = x[i2, 2] - z0
+    d02 = x[i3, 0] - x0
+    d12 = x[i3, 1] - y0
+    d22 = x[i3, 2] - z0
+    m00, m01, m02 = Dm_inv[e, 0, 0], Dm_inv[e, 0, 1], Dm_inv[e, 0, 2]
+    m10, m11, m12 = Dm_inv[e, 1, 0], Dm_inv[e, 1, 1], Dm_inv[e, 1, 2]
+    m20, m21, m22 = Dm_inv[e, 2, 0], Dm_inv[e, 2, 1], Dm_inv[e, 2, 2]
+    f00 = d00 * m00 + d01 * m10 + d02 * m20
+    f01 = d00 * m01 + d01 * m11 + d02 * m21
+    f02 = d00 * m02 + d01 * m12 + d02 * m22
+    f10 = d10 * m00 + d11 * m10 + d12 * m20
+    f11 = d10 * m01 + d11 * m11 + d12 * m21
+    f12 = d10 * m02 + d11 * m12 + d12 * m22
+    f20 = d20 * m00 + d21 * m10 + d22 * m20
+    f21 = d20 * m01 + d21 * m11 + d22 * m21
+    f22 = d20 * m02 + d21 * m12 + d22 * m22
+    return i0, i1, i2, i3, f00, f01, f02, f10, f11, f12, f20, f21, f22
+
+
+@njit(cache=True, error_model="numpy")
+def deformation_gradients(x, tets, Dm_inv, F):
+    """F_e = Ds Dm^-1 for every tet (eqs. 2-4).
+
+    x: (n_nodes, 3) [m]; Dm_inv: (n_tets, 3, 3) [1/m] (rest or active-effective).
+    Overwrites F: (n_tets, 3, 3) [-].
+    """
+    for e in range(tets.shape[0]):
+        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
+        F[e, 0, 0] = f00
+        F[e, 0, 1] = f01
+        F[e, 0, 2] = f02
+        F[e, 1, 0] = f10
+        F[e, 1, 1] = f11
+        F[e, 1, 2] = f12
+        F[e, 2, 0] = f20
+        F[e, 2, 1] = f21
+        F[e, 2, 2] = f22
+
+
+@njit(cache=True, error_model="numpy")
+def active_dm_inv(Dm_inv, A, Dm_inv_eff):
+    """Effective inverse edge matrices for an active strain: Dm_inv_eff = Dm^-1 A^-1.
+
+    Dm_inv: (n_tets, 3, 3) rest [1/m]; A: (n_tets, 3, 3) active deformation of the
+    rest shape [-] (identity = passive; det A > 0).  Overwrites
+    Dm_inv_eff: (n_tets, 3, 3) [1/m].  Then F_e = Ds Dm_inv_eff = F A^-1.
+    """
+    for e in range(Dm_inv.shape[0]):
+        a = A[e]
+        c00 = a[1, 1] * a[2, 2] - a[1, 2] * a[2, 1]
+        c01 = a[1, 2] * a[2, 0] - a[1, 0] * a[2, 2]
+        c02 = a[1, 0] * a[2, 1] - a[1, 1] * a[2, 0]
+        inv = 1.0 / (a[0, 0] * c00 + a[0, 1] * c01 + a[0, 2] * c02)
+        i00 = c00 * inv
+        i10 = c01 * inv
+        i20 = c02 * inv
+        i01 = (a[0, 2] * a[2, 1] - a[0, 1] * a[2, 2]) * inv
+        i11 = (a[0, 0] * a[2, 2] - a[0, 2] * a[2, 0]) * inv
+        i21 = (a[0, 1] * a[2, 0] - a[0, 0] * a[2, 1]) * inv
+        i02 = (a[0, 1] * a[1, 2] - a[0, 2] * a[1, 1]) * inv
+        i12 = (a[0, 2] * a[1, 0] - a[0, 0] * a[1, 2]) * inv
+        i22 = (a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0]) * inv
+        for r in range(3):
+            m0, m1, m2 = Dm_inv[e, r, 0], Dm_inv[e, r, 1], Dm_inv[e, r, 2]
+            Dm_inv_eff[e, r, 0] = m0 * i00 + m1 * i10 + m2 * i20
+            Dm_inv_eff[e, r, 1] = m0 * i01 + m1 * i11 + m2 * i21
+            Dm_inv_eff[e, r, 2] = m0 * i02 + m1 * i12 + m2 * i22
+
+
+@njit(cache=True, error_model="numpy")
+def axial_active_strain(axis, l_axial, l_cross, A):
+    """Muscle active strain A = Q diag(l_axial, l_c, l_c) Q^T = l_c I + (l_axial - l_c) a a^T.
+
+    axis: (n_tets, 3) unit fibre direction a in the rest frame (Q e_x); l_axial,
+    l_cross: (n_tets,) rest-shape stretch along and across the fibre [-].
+    Overwrites A: (n_tets, 3, 3).
+    """
+    for e in range(axis.shape[0]):
+        d = l_axial[e] - l_cross[e]
+        for i in range(3):
+            for j in range(3):
+                A[e, i, j] = d * axis[e, i] * axis[e, j]
+            A[e, i, i] += l_cross[e]
+
+
+def n_tet_blocks(n_tets):
+    """Number of LANES-wide blocks holding n_tets tets."""
+    return (int(n_tets) + LANES - 1) // LANES
+
+
+def new_tet_workspace(n_tets):
+    """Allocate (q_ws, F_work, H_work) for ``elastic_forces`` (blocked layout, module docstring).
+
+    q_ws (n_blocks, 4 LANES) starts at the identity rotation; F_work
+    (n_blocks, 9 LANES) at F = I, so that the padding lanes past n_tets stay an
+    inert, converged identity tet (their ``coef`` is zero); H_work
+    (n_blocks, 10 LANES) is zero.
+    """
+    nb = n_tet_blocks(n_tets)
+    q_ws = np.zeros((nb, 4 * LANES))
+    q_ws[:, :LANES] = 1.0
+    F_work = np.zeros((nb, 9 * LANES))
+    for r in (0, 4, 8):
+        F_work[:, r * LANES:(r + 1) * LANES] = 1.0
+    H_work = np.zeros((nb, 10 * LANES))
+    return q_ws, F_work, H_work
+
+
+@njit(cache=True, error_model="numpy")
+def pack_tet_coefficients(Dm_inv, vol, mu, lam, coef):
+    """Pack the per-tet constants of the force pass into the blocked layout.
+
+    Dm_inv: (n_tets, 3, 3) [1/m] (rest or active-effective); vol (n_tets,) [m^3];
+    mu, lam (n_tets,) [Pa].  Overwrites coef: (n_blocks, 11 LANES): row 3 r + c
+    holds -vol Dm_inv[:, r, c] [m^2], row 9 holds 2 mu, row 10 lam [Pa]; padding
+    lanes are zero.
+    """
+    coef[:, :] = 0.0
+    for e in range(Dm_inv.shape[0]):
+        b = e // LANES
+        l = e - b * LANES
+        for r in range(3):
+            for c in range(3):
+                coef[b, (3 * r + c) * LANES + l] = -vol[e] * Dm_inv[e, r, c]
+        coef[b, 9 * LANES + l] = 2.0 * mu[e]
+        coef[b, 10 * LANES + l] = lam[e]
+
+
+# --------------------------------------------------------------------------------------
+# Constitutive model and elastic forces
+# --------------------------------------------------------------------------------------
+@njit(cache=True, inline="always", error_model="numpy")
+def _fcr_stress(f00, f01, f02, f10, f11, f12, f20, f21, f22, two_mu, lam,
+                r00, r01, r02, r10, r11, r12, r20, r21, r22):
+    """First Piola-Kirchhoff stress of eq. 8 in cofactor form.
+
+    P = 2 mu (F - R) + lam (J - 1) cof(F), using J F^-T = cof(F) so that P stays
+    finite as J -> 0.  The columns of cof(F) are f1 x f2, f2 x f0, f0 x f1 (f_k the
+    columns of F).  Returns (P row-major, J).
+    """
+    c00 = f11 * f22 - f21 * f12
+    c10 = f21 * f02 - f01 * f22
+    c20 = f01 * f12 - f11 * f02
+    c01 = f12 * f20 - f22 * f10
+    c11 = f22 * f00 - f02 * f20
+    c21 = f02 * f10 - f12 * f00
+    c02 = f10 * f21 - f20 * f11
+    c12 = f20 * f01 - f00 * f21
+    c22 = f00 * f11 - f10 * f01
+    J = f00 * c00 + f10 * c10 + f20 * c20
+    k = lam * (J - 1.0)
+    return (two_mu * (f00 - r00) + k * c00, two_mu * (f01 - r01) + k * c01,
+            two_mu * (f02 - r02) + k * c02, two_mu * (f10 - r10) + k * c10,
+            two_mu * (f11 - r11) + k * c11, two_mu * (f12 - r12) + k * c12,
+            two_mu * (f20 - r20) + k * c20, two_mu * (f21 - r21) + k * c21,
+            two_mu * (f22 - r22) + k * c22, J)
+
+
+@njit(cache=True, error_model="numpy")
+def first_piola(F, mu, lam, P):
+    """Fixed-corotational first Piola-Kirchhoff stress (eq. 8) of one F, R from the SVD.
+
+    F: (3, 3); mu, lam [Pa].  Overwrites P: (3, 3) [Pa].
+    """
+    (u00, u01, u02, u10, u11, u12, u20, u21, u22, _s0, _s1, _s2,
+     v00, v01, v02, v10, v11, v12, v20, v21, v22) = _svd3_core(
+        F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
+    p = _fcr_stress(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2],
+                    2.0 * mu, lam,
+                    u00 * v00 + u01 * v01 + u02 * v02, u00 * v10 + u01 * v11 + u02 * v12,
+                    u00 * v20 + u01 * v21 + u02 * v22, u10 * v00 + u11 * v01 + u12 * v02,
+                    u10 * v10 + u11 * v11 + u12 * v12, u10 * v20 + u11 * v21 + u12 * v22,
+                    u20 * v00 + u21 * v01 + u22 * v02, u20 * v10 + u21 * v11 + u22 * v12,
+                    u20 * v20 + u21 * v21 + u22 * v22)
+    for i in range(3):
+        for j in range(3):
+            P[i, j] = p[3 * i + j]
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                        r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l):
+    """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign).
+
+    Row 3 k + i of H holds component i of the force on local node k + 1.
+    """
+    L = LANES
+    (p00, p01, p02, p10, p11, p12, p20, p21, p22, _J) = _fcr_stress(
+        f00, f01, f02, f10, f11, f12, f20, f21, f22, coef[b, 9 * L + l], coef[b, 10 * L + l],
+        r00, r01, r02, r10, r11, r12, r20, r21, r22)
+    a00, a01, a02 = coef[b, l], coef[b, L + l], coef[b, 2 * L + l]
+    a10, a11, a12 = coef[b, 3 * L + l], coef[b, 4 * L + l], coef[b, 5 * L + l]
+    a20, a21, a22 = coef[b, 6 * L + l], coef[b, 7 * L + l], coef[b, 8 * L + l]
+    H[b, l] = p00 * a00 + p01 * a01 + p02 * a02
+    H[b, L + l] = p10 * a00 + p11 * a01 + p12 * a02
+    H[b, 2 * L + l] = p20 * a00 + p21 * a01 + p22 * a02
+    H[b, 3 * L + l] = p00 * a10 + p01 * a11 + p02 * a12
+    H[b, 4 * L + l] = p10 * a10 + p11 * a11 + p12 * a12
+    H[b, 5 * L + l] = p20 * a10 + p21 * a11 + p22 * a12
+    H[b, 6 * L + l] = p00 * a20 + p01 * a21 + p02 * a22
+    H[b, 7 * L + l] = p10 * a20 + p11 * a21 + p12 * a22
+    H[b, 8 * L + l] = p20 * a20 + p21 * a21 + p22 * a22
+
+
+@njit(cache=True, error_model="numpy")
+def _deformation_pass(x, tets, Dm_inv, F):
+    """F of every tet into the blocked scratch F (n_blocks, 9 LANES) (overwritten)."""
+    L = LANES
+    for e in range(tets.shape[0]):
+        b = e // L
+        l = e - b * L
+        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
+        F[b, l] = f00
+        F[b, L + l] = f01
+        F[b, 2 * L + l] = f02
+        F[b, 3 * L + l] = f10
+        F[b, 4 * L + l] = f11
+        F[b, 5 * L + l] = f12
+        F[b, 6 * L + l] = f20
+        F[b, 7 * L + l] = f21
+        F[b, 8 * L + l] = f22
+
+
+@njit(cache=True, error_model="numpy")
+def _rotation_stress_pass(F, coef, q, H):
+    """Two Newton rotation steps and the nodal forces of every tet, branch-free (vectorised).
+
+    Overwrites q (n_blocks, 4 LANES) where both steps were valid, H rows 0-8 with
+    the nodal forces and H row 9 with the squared half-angle of the second step
+    (inf if a step was invalid); tets with H row 9 >= _NEWTON_TOL_HH need
+    ``_rotation_fixup``.
+    """
+    L = LANES
+    for b in range(F.shape[0]):
+        for l in range(L):
+            f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+            f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+            f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+            qw, qx, qy, qz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
+            aw, ax, ay, az, _hh1, ok1 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                                     qw, qx, qy, qz)
+            bw, bx, by, bz, hh2, ok2 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                                    aw, ax, ay, az)
+            bw, bx, by, bz = _renormalize(bw, bx, by, bz)
+            ok = ok1 & ok2
+            qw = bw if ok else qw
+            qx = bx if ok else qx
+            qy = by if ok else qy
+            qz = bz if ok else qz
+            q[b, l] = qw
+            q[b, L + l] = qx
+            q[b, 2 * L + l] = qy
+            q[b, 3 * L + l] = qz
+            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
+            _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+            H[b, 9 * L + l] = hh2 if ok else np.inf
+
+
+@njit(cache=True, error_model="numpy")
+def _rotation_fixup(n_tets, F, coef, q, H):
+    """Finish the tets the branch-free pass left unconverged; returns how many.
+
+    For each tet e < n_tets with not (H row 9 < _NEWTON_TOL_HH) (also NaN):
+    ``_fcr_rotation`` from its current q (more Newton steps, then the SVD), and its
+    forces recomputed.  Overwrites q and H rows 0-8 of those tets.
+    """
+    L = LANES
+    count = 0
+    for e in range(n_tets):
+        b = e // L
+        l = e - b * L
+        if H[b, 9 * L + l] < _NEWTON_TOL_HH:
+            continue
+        count += 1
+        f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+        f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+        f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+        (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, _it) = _fcr_rotation(
+            f00, f01, f02, f10, f11, f12, f20, f21, f22,
+            q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+        q[b, l] = qw
+        q[b, L + l] = qx
+        q[b, 2 * L + l] = qy
+        q[b, 3 * L + l] = qz
+        _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                            r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+    return count
+
+
+@njit(cache=True, error_model="numpy")
+def _scatter_pass(tets, H, f):
+    """Accumulate the per-tet nodal forces H into f (n_nodes, 3); eqs. 10-11."""
+    L = LANES
+    for e in range(tets.shape[0]):
+        b = e // L
+        l = e - b * L
+        i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+        h00, h10, h20 = H[b, l], H[b, L + l], H[b, 2 * L + l]
+        h01, h11, h21 = H[b, 3 * L + l], H[b, 4 * L + l], H[b, 5 * L + l]
+        h02, h12, h22 = H[b, 6 * L + l], H[b, 7 * L + l], H[b, 8 * L + l]
+        f[i1, 0] += h00
+        f[i1, 1] += h10
+        f[i1, 2] += h20
+        f[i2, 0] += h01
+        f[i2, 1] += h11
+        f[i2, 2] += h21
+        f[i3, 0] += h02
+        f[i3, 1] += h12
+        f[i3, 2] += h22
+        # eq. 10: the four forces of a tet sum to zero
+        f[i0, 0] -= h00 + h01 + h02
+        f[i0, 1] -= h10 + h11 + h12
+        f[i0, 2] -= h20 + h21 + h22
+
+
+@njit(cache=True, error_model="numpy")
+def elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f):
+    """Fixed-corotational elastic nodal forces f_i = -dE/dx_i (eqs. 7-11).
+
+    x: (n_nodes, 3) [m]; tets: (n_tets, 4); Dm_inv: (n_tets, 3, 3) [1/m] (rest, or
+    active-effective ``Dm^-1 A^-1``); coef: from ``pack_tet_coefficients`` with the
+    same Dm_inv; q_ws: per-tet rotation warm start (any non-zero quaternions),
+    OVERWRITTEN with the current rotations; F_work, H_work: scratch.  The three
+    come from ``new_tet_workspace`` (blocked layout, module docstring).
+    ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of tets that needed
+    the slow path (``_rotation_fixup``).
+    """
+    _deformation_pass(x, tets, Dm_inv, F_work)
+    _rotation_stress_pass(F_work, coef, q_ws, H_work)
+    n_slow = _rotation_fixup(tets.shape[0], F_work, coef, q_ws, H_work)
+    _scatter_pass(tets, H_work, f)
+    return n_slow
+
+
+@njit(cache=True, error_model="numpy")
+def elastic_energy(x, tets, Dm_inv, vol, mu, lam):
+    """Total elastic energy sum_e V_e [mu sum_i (sigma_i - 1)^2 + lam/2 (J - 1)^2] [J] (eq. 6).
+
+    x: (n_nodes, 3) [m]; Dm_inv: (n_tets, 3, 3) (rest or active-effective);
+    vol, mu, lam: (n_tets,).  Uses the SVD; returns a float.
+    """
+    E = 0.0
+    for e in range(tets.shape[0]):
+        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
+        s = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
+        s0 = s[9] - 1.0
+        s1 = s[10] - 1.0
+        s2 = s[11] - 1.0
+        J = s[9] * s[10] * s[11]
+        E += vol[e] * (mu[e] * (s0 * s0 + s1 * s1 + s2 * s2) + 0.5 * lam[e] * (J - 1.0) ** 2)
+    return E
+
+
+@njit(cache=True, error_model="numpy")
+def tet_invariants(x, tets, Dm_inv, J, sigma):
+    """Per-tet J = det F and signed singular values of F (for metrics).
+
+    Overwrites J: (n_tets,) and sigma: (n_tets, 3) (descending, smallest signed).
+    """
+    for e in range(tets.shape[0]):
+        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
+        s = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
+        sigma[e, 0] = s[9]
+        sigma[e, 1] = s[10]
+        sigma[e, 2] = s[11]
+        J[e] = (f00 * (f11 * f22 - f12 * f21) - f01 * (f10 * f22 - f12 * f20)
+                + f02 * (f10 * f21 - f11 * f20))
+
+
+# --------------------------------------------------------------------------------------
+# Mass and damping
+# --------------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def lumped_mass(tets, vol, rho, m):
+    """Lumped nodal masses m_i = 1/4 sum_{e ∋ i} rho V_e (eq. 12).
+
+    tets: (n_tets, 4); vol: (n_tets,) [m^3]; rho: (n_tets,) [kg/m^3].
+    Overwrites m: (n_nodes,) [kg].
+    """
+    m[:] = 0.0
+    for e in range(tets.shape[0]):
+        q = 0.25 * rho[e] * vol[e]
+        for k in range(4):
+            m[tets[e, k]] += q
+
+
+@njit(cache=True, error_model="numpy")
+def damping_forces(v, tets, vol, gamma, f):
+    """Damping forces f_i = -gamma sum_{e ∋ i} V_e (v_i - mean_k v_{e_k}) (eq. 13).
+
+    v: (n_nodes, 3) [m/s]; vol: (n_tets,) [m^3]; gamma [N s/m^4].
+    ACCUMULATES into f: (n_nodes, 3) [N].  (The step treats this force implicitly
+    through the constant matrix D; this explicit form is its reference.)
+    """
+    for e in range(tets.shape[0]):
+        c = gamma * vol[e]
+        for d in range(3):
+            mean = 0.25 * (v[tets[e, 0], d] + v[tets[e, 1], d] + v[tets[e, 2], d] + v[tets[e, 3], d])
+            for k in range(4):
+                f[tets[e, k], d] -= c * (v[tets[e, k], d] - mean)
+
+
+# --------------------------------------------------------------------------------------
+# Skyline (variable-band) Cholesky of the constant matrix (M + dt D)_ff
+# --------------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def skyline_cholesky(first, ptr, val):
+    """In-place Cholesky factorization A = L L^T in skyline (row envelope) storage.
+
+    Row i of the lower triangle holds columns first[i] .. i in
+    val[ptr[i] : ptr[i+1]] (diagonal last).  first: (n,), ptr: (n+1,) int64.
+    Overwrites val with L.  Returns 0, or i+1 if the pivot of row i is not
+    positive (matrix not positive definite).
+    """
+    n = first.shape[0]
+    for i in range(n):
+        fi = first[i]
+        pi = ptr[i]
+        for j in range(fi, i + 1):
+            fj = first[j]
+            pj = ptr[j]
+            k0 = fi if fi > fj else fj
+            s = val[pi + j - fi]
+            for k in range(k0, j):
+                s -= val[pi + k - fi] * val[pj + k - fj]
+            if j < i:
+                val[pi + j - fi] = s / val[pj + j - fj]
+            else:
+                if s <= 0.0:
+                    return i + 1
+                val[pi + i - fi] = math.sqrt(s)
+    return 0
+
+
+@njit(cache=True, error_model="numpy")
+def skyline_solve(first, ptr, L, b):
+    """Solve L L^T y = b for three right-hand sides at once (x, y, z share the matrix).
+
+    L: Cholesky factor from ``skyline_cholesky``; b: (n, 3), overwritten with y.
+    """
+    n = first.shape[0]
+    # forward: L z = b (row-oriented)
+    for i in range(n):
+        fi = first[i]
+        pi = ptr[i]
+        s0 = b[i, 0]
+        s1 = b[i, 1]
+        s2 = b[i, 2]
+        for k in range(fi, i):
+            l = L[pi + k - fi]
+            s0 -= l * b[k, 0]
+            s1 -= l * b[k, 1]
+            s2 -= l * b[k, 2]
+        d = L[pi + i - fi]
+        b[i, 0] = s0 / d
+        b[i, 1] = s1 / d
+        b[i, 2] = s2 / d
+    # backward: L^T y = z (column sweep over the rows of L)
+    for i in range(n - 1, -1, -1):
+        fi = first[i]
+        pi = ptr[i]
+        d = L[pi + i - fi]
+        y0 = b[i, 0] / d
+        y1 = b[i, 1] / d
+        y2 = b[i, 2] / d
+        b[i, 0] = y0
+        b[i, 1] = y1
+        b[i, 2] = y2
+        for k in range(fi, i):
+            l = L[pi + k - fi]
+            b[k, 0] -= l * y0
+            b[k, 1] -= l * y1
+            b[k, 2] -= l * y2
+
+
+# --------------------------------------------------------------------------------------
+# Ground contact
+# --------------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def ground_contact_coulomb(x, v, nodes, terrain_kind, terrain_params, mu_friction):
+    """Project penetrating nodes onto the terrain with velocity-level Coulomb friction.
+
+    For each node i in ``nodes`` (int64 indices) with terrain signed distance
+    phi(x_i) < 0: x_i -= phi n (back onto the surface, n the outward unit normal);
+    if the normal velocity v_n = v_i . n is negative it is removed, and the
+    tangential velocity is reduced by mu_friction |v_n| (set to zero if smaller):
+    kinetic friction whose impulse is at most mu times the normal impulse.
+    x, v: (n_nodes, 3) [m], [m/s], OVERWRITTEN in place for contacting nodes.
+    Separate from the step so a body can substitute its own friction model.
+    """
+    for a in range(nodes.shape[0]):
+        i = nodes[a]
+        phi = signed_distance(terrain_kind, terrain_params, x[i, 0], x[i, 1], x[i, 2])
+        if phi < 0.0:
+            nx, ny, nz = surface_normal(terrain_kind, terrain_params, x[i, 0], x[i, 1], x[i, 2])
+            x[i, 0] -= phi * nx
+            x[i, 1] -= phi * ny
+            x[i, 2] -= phi * nz
+            vn = v[i, 0] * nx + v[i, 1] * ny + v[i, 2] * nz
+            if vn < 0.0:
+                tx = v[i, 0] - vn * nx
+                ty = v[i, 1] - vn * ny
+                tz = v[i, 2] - vn * nz
+                vt = math.sqrt(tx * tx + ty * ty + tz * tz)
+                dv = -mu_friction * vn
+                scale = 0.0
+                if vt > dv:
+                    scale = (vt - dv) / vt
+                v[i, 0] = scale * tx
+                v[i, 1] = scale * ty
+                v[i, 2] = scale * tz
+
+
+# --------------------------------------------------------------------------------------
+# Semi-implicit step (eqs. 14-15) and the many-step driver
+# --------------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
+                           fp_ptr, fp_col, fp_val, b):
+    """Velocity solve of eq. 14 for the free nodes, multiplied through by M.
+
+    (M + dt D)_ff v_f^{n+1} = M_f v_f^n + dt f_f - dt D_fp v_p^{n+1}, where f is the
+    total force (elastic + gravity M g + external) at x^n and v_p are the
+    prescribed velocities of the fixed nodes.
+    v: (n_nodes, 3) [m/s], free rows OVERWRITTEN with v^{n+1}; mass: (n_nodes,) [kg];
+    f: (n_nodes, 3) [N]; perm: (n_free,) node of each solve row; sky_*: the
+    factor of (M + dt D)_ff in that order; fp_*: CSR (rows = solve rows, cols =
+    fixed node ids) of D_fp [N s/m]; b: (n_free, 3) scratch.
+    """
+    for k in range(perm.shape[0]):
+        i = perm[k]
+        m = mass[i]
+        b0 = m * v[i, 0] + dt * f[i, 0]
+        b1 = m * v[i, 1] + dt * f[i, 1]
+        b2 = m * v[i, 2] + dt * f[i, 2]
+        for a in range(fp_ptr[k], fp_ptr[k + 1]):
+            j = fp_col[a]
+            c = dt * fp_val[a]
+            b0 -= c * v[j, 0]
+            b1 -= c * v[j, 1]
+            b2 -= c * v[j, 2]
+        b[k, 0] = b0
+        b[k, 1] = b1
+        b[k, 2] = b2
+    skyline_solve(sky_first, sky_ptr, sky_L, b)
+    for k in range(perm.shape[0]):
+        i = perm[k]
+        v[i, 0] = b[k, 0]
+        v[i, 1] = b[k, 1]
+        v[i, 2] = b[k, 2]
+
+
+@njit(cache=True, error_model="numpy")
+def advance(x, v, tets, Dm_inv, coef, mass, gravity, f_ext, dt, n_steps,
+            perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+            fixed, pf_ptr, pf_col, pf_val,
+            contact, terrain_kind, terrain_params, mu_friction, v_limit,
+            q_ws, f_fixed, f_work, b_work, F_work, H_work):
+    """Run up to n_steps semi-implicit steps (eqs. 14-15) in one call.
+
+    Per step: f = f_E(x^n) + M g + f_ext on the free nodes; solve
+    (M + dt D)_ff v_f = M v_f + dt f_f - dt D_fp v_p (``semi_implicit_velocity``);
+    fixed nodes keep their prescribed velocity v_p and move x_p += dt v_p; free
+    nodes x_f += dt v_f; then, if ``contact``, ``ground_contact_coulomb`` on the
+    free nodes; then the instability check (a non-finite x or v, or a free-node
+    speed above v_limit).
+
+    Inputs: x, v (n_nodes, 3) [m], [m/s], OVERWRITTEN with the new state; tets,
+    Dm_inv (rest or active-effective), coef, q_ws as in ``elastic_forces``;
+    mass (n_nodes,) [kg]; gravity (3,) [m/s^2] (the force is M g, PAPER-NOTES);
+    f_ext (n_nodes, 3) [N], constant over the call; dt [s];
+    perm/sky_*/fp_*: see ``semi_implicit_velocity`` (built for this dt);
+    fixed (n_fixed,) node ids; pf_*: CSR (rows = fixed nodes in ``fixed`` order,
+    cols = all nodes) of D [N s/m]; contact (bool), terrain_kind, terrain_params:
+    see ``terrain_kernels``; mu_friction [-]; v_limit [m/s].
+    Scratch: f_work (n_nodes, 3), b_work (n_free, 3), F_work, H_work (from
+    ``new_tet_workspace``).
+    Output f_fixed (n_fixed, 3) [N], OVERWRITTEN with the elastic + damping force
+    the mesh exerts on each fixed node, f_E(x^n) - (D v^{n+1})_p, averaged over
+    the steps of the call (the nodes' own weight is not included).
+    Returns (steps_completed, status): status 0 ok, 1 non-finite, 2 runaway
+    speed; on failure x, v hold the state of the failed step and f_fixed is
+    undefined.
+    """
+    n_nodes = x.shape[0]
+    n_fixed = fixed.shape[0]
+    vmax2 = v_limit * v_limit
+    f_fixed[:, :] = 0.0
+    gx, gy, gz = gravity[0], gravity[1], gravity[2]
+    for step in range(n_steps):
+        f_work[:, :] = 0.0
+        elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        for a in range(n_fixed):
+            p = fixed[a]
+            f_fixed[a, 0] += f_work[p, 0]
+            f_fixed[a, 1] += f_work[p, 1]
+            f_fixed[a, 2] += f_work[p, 2]
+        # Gravity force M g (eq. 14, PAPER-NOTES) and external forces, free nodes only.
+        for k in range(perm.shape[0]):
+            i = perm[k]
+            m = mass[i]
+            f_work[i, 0] += f_ext[i, 0] + m * gx
+            f_work[i, 1] += f_ext[i, 1] + m * gy
+            f_work[i, 2] += f_ext[i, 2] + m * gz
+        semi_implicit_velocity(v, mass, f_work, dt, perm, sky_first, sky_ptr, sky_L,
+                               fp_ptr, fp_col, fp_val, b_work)
+        # Damping force on the fixed nodes, -(D v^{n+1})_p.
+        for a in range(n_fixed):
+            for c in range(pf_ptr[a], pf_ptr[a + 1]):
+                j = pf_col[c]
+                d = pf_val[c]
+                f_fixed[a, 0] -= d * v[j, 0]
+                f_fixed[a, 1] -= d * v[j, 1]
+                f_fixed[a, 2] -= d * v[j, 2]
+        # eq. 15 for every node (fixed nodes move with their prescribed velocity).
+        for i in range(n_nodes):
+            x[i, 0] += dt * v[i, 0]
+            x[i, 1] += dt * v[i, 1]
+            x[i, 2] += dt * v[i, 2]
+        if contact:
+            ground_contact_coulomb(x, v, perm, terrain_kind, terrain_params, mu_friction)
+        status = STATUS_OK
+        for k in range(perm.shape[0]):
+            i = perm[k]
+            s = (abs(x[i, 0]) + abs(x[i, 1]) + abs(x[i, 2])
+                 + abs(v[i, 0]) + abs(v[i, 1]) + abs(v[i, 2]))
+            if not math.isfinite(s):
+                status = STATUS_NONFINITE
+                break
+            if v[i, 0] * v[i, 0] + v[i, 1] * v[i, 1] + v[i, 2] * v[i, 2] > vmax2:
+                status = STATUS_RUNAWAY
+                break
+        if status != STATUS_OK:
+            return step, status
+    if n_steps > 0:
+        f_fixed[:, :] *= 1.0 / n_steps
+    return n_steps, STATUS_OK
