@@ -51,16 +51,13 @@ from typing import NamedTuple, Sequence
 
 import numpy as np
 
-# --- Leg states (paper Sec. 4.2): the single source of truth for codes, names and colours ---
-SF1 = 0      # sway forward 1: posterior extreme pose (PEP) up to the middle up pose (MUP)
-SF2 = 1      # sway forward 2: MUP down to the anterior extreme pose (AEP); leads to STANCE
-SB1 = 2      # sway backward 1: AEP down to the middle down pose (MDP), to find the ground
-SB2 = 3      # sway backward 2: MDP up to the PEP; last state of the normal (unsupported) loop
-STANCE = 4   # tip planted, the leg root pushes the segment forward (inverse kinematics)
-ADJUST = 5   # entered when the previous leg enters STANCE (Switcher rule 4); makes the wave
-N_STATES = 6
+# --- Leg states (paper Sec. 4.2): codes and names come from the Switcher that produces them ---
+# SF1: PEP up to MUP; SF2: MUP down to AEP (leads to STANCE); SB1: AEP down to MDP (to find the
+# ground); SB2: MDP up to PEP (last state of the unsupported loop); STANCE: tip planted, IK;
+# ADJUST: entered when the previous leg enters STANCE (rule 4); makes the wave.
+from ..controllers.myriapod.switcher import (ADJUST, N_STATES, SB1, SB2, SF1, SF2,  # noqa: E402,F401
+                                             STANCE, STATE_NAMES)
 
-STATE_NAMES: tuple[str, ...] = ("SF1", "SF2", "SB1", "SB2", "STANCE", "ADJUST")
 STATE_DESCRIPTIONS: tuple[str, ...] = (
     "sway forward 1 (PEP to MUP)",
     "sway forward 2 (MUP to AEP)",

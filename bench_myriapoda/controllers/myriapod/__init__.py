@@ -1,0 +1,4 @@
+"""The myriapod leg controller of Fang, Jiang & Terzopoulos (2013), Sec. 4:
+a Targeter per rigid segment (``targeter``) and a Switcher per leg (``switcher``).
+Leg kinematics and IK live in ``bench_myriapoda.bodies.legs``."""
+from . import switcher, targeter  # noqa: F401
