@@ -65,11 +65,15 @@ def test_tetrahedralize_surface_is_oriented_and_cached(tmp_path, monkeypatch):
     trimesh = pytest.importorskip("trimesh")
     pytest.importorskip("pytetwild")
     monkeypatch.setenv("BENCH_MYRIAPODA_CACHE", str(tmp_path / "cache"))
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    monkeypatch.chdir(workdir)  # fTetWild's scratch file must not land in the working directory
     path = tmp_path / "sphere.ply"
     trimesh.creation.icosphere(subdivisions=2, radius=1.0).export(path)
     surface = trimesh.load_mesh(path, force="mesh")
     nodes, tets = M.tetrahedralize_surface(path, edge_length_fac=0.2, optimize=False)
     assert len(list((tmp_path / "cache").glob("*.npz"))) == 1
+    assert list(workdir.iterdir()) == []
     vol = M.signed_volumes(nodes, tets)
     assert vol.min() > 0.0
     assert abs(vol.sum() - surface.volume) < 0.02 * surface.volume

@@ -175,9 +175,15 @@ def _load_surface(mesh_or_path):
 
 def _run_pytetwild(vertices, faces, **params):
     # Lazy: pytetwild imports pyvista, which is slow to import and not needed otherwise.
+    import contextlib
+    import tempfile
+
     import pytetwild
 
-    return pytetwild.tetrahedralize(vertices, faces, **params)
+    # fTetWild writes a scratch file (__tracked_surface.stl) into the working
+    # directory; run it from a temporary one so nothing lands in the user's tree.
+    with tempfile.TemporaryDirectory() as scratch, contextlib.chdir(scratch):
+        return pytetwild.tetrahedralize(vertices, faces, **params)
 
 
 def tetrahedralize_surface(mesh_or_path, edge_length_fac=0.05, edge_length_abs=None, optimize=True,
