@@ -48,12 +48,15 @@ GAIT_DESCRIPTIONS = {
 }
 for _name, _desc in GAIT_DESCRIPTIONS.items():
     register_gait(GaitSpec(name=_name, description=_desc, requires=frozenset({"muscles"})))
+# A creature without muscles or legs (e.g. the paper's Fig. 4 chain) runs the passive gait.
+register_gait(GaitSpec(name="passive", description="no actuation: the body only falls, hangs and collides",
+                       requires=frozenset()))
 
 
 def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) -> np.ndarray:
     """The (3, 5) wave table [amplitude, wavenumber rad/m, omega rad/s, phase rad, profile] of a gait."""
     table = np.zeros((N_CHANNELS, 5))
-    if passive:
+    if passive or gait.name == "passive":
         return table
     direction = 1.0 if gait.direction == "head-to-tail" else -1.0
     k = direction * 2.0 * math.pi / (gait.wavelength_bl * body_length_m)

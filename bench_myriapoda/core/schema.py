@@ -109,7 +109,7 @@ class ScenarioConfig:
 
     name: str = rng("")
     description: str = rng("")
-    terrain: str = rng("plane", choices=("plane", "slope", "slab"))
+    terrain: str = rng("plane", choices=("plane", "slope", "slab", "none"), doc="'none': no ground at all")
     ground_height_m: float = rng(0.0)
     slope_deg: float = rng(0.0, ge=-80.0, le=80.0, doc="slope: incline rising toward +x [deg]")
     slab_height_m: float = rng(0.3, gt=0.0, doc="slab: height of Miller's book [m]")
@@ -120,6 +120,7 @@ class ScenarioConfig:
     perturbation_m: float = rng(0.0, ge=0.0, doc="random displacement (std) of every node at t=0, seeded by seed [m]")
     gravity_m_s2: float = rng(9.81, ge=0.0)
     passive: bool = rng(False, doc="muscles off (for energy checks)")
+    suspended: bool = rng(False, doc="the head is held fixed and the body hangs straight down from it (paper Fig. 10)")
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
 
 

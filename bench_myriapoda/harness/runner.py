@@ -14,6 +14,8 @@ import traceback
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+import numpy as np
+
 from ..core import registry
 from ..core.config import Case
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
@@ -39,6 +41,14 @@ class RunResult:
                 "metrics": {k: clean(v) for k, v in self.metrics.items()},
                 "timings": {k: clean(v) for k, v in self.timings.items()},
                 **({"message": self.message} if self.message else {})}
+
+
+def hanging_metrics(series: Series) -> dict[str, float]:
+    """Elongation of a suspended body: head-to-tail segment distance at the end (mean over the
+    last 10 % of samples) minus that at t = 0, when the body hangs at its rest length [m]."""
+    d = np.linalg.norm(series.segment_centers[:, 0] - series.segment_centers[:, -1], axis=1)
+    tail = max(1, len(d) // 10)
+    return {"hanging_elongation_m": float(d[-tail:].mean() - d[0])}
 
 
 def wave_speed(case: Case) -> float:
@@ -89,6 +99,9 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         metrics["body_length_m"] = case.creature.body_length_m
         metrics["wave_speed_m_per_s"] = wave_speed(case)
         metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
+        if case.scenario.suspended:
+            metrics.update(hanging_metrics(series))
+        metrics.update(body.extra_metrics())
         timings["steps"] = done
         timings["steps_per_s"] = done / sim_wall if sim_wall > 0 else float("nan")
         timings["realtime_factor"] = done * case.dt / sim_wall if sim_wall > 0 else float("nan")

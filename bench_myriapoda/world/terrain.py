@@ -7,13 +7,14 @@ import numpy as np
 
 from .terrain_kernels import N_TERRAIN_PARAMS, PLANE, SLAB, SLOPE
 
-TERRAIN_KINDS = {"plane": PLANE, "slope": SLOPE, "slab": SLAB}
+TERRAIN_KINDS = {"plane": PLANE, "slope": SLOPE, "slab": SLAB, "none": PLANE}
+NO_GROUND_HEIGHT_M = -1.0e9  # terrain "none": a plane so far below that nothing ever reaches it
 
 
 def terrain_from_scenario(sc) -> tuple[int, np.ndarray]:
     """(kind code, float64 parameter vector) of a ``ScenarioConfig``'s terrain (see terrain_kernels)."""
     f = np.zeros(N_TERRAIN_PARAMS)
-    f[0] = sc.ground_height_m
+    f[0] = NO_GROUND_HEIGHT_M if sc.terrain == "none" else sc.ground_height_m
     kind = TERRAIN_KINDS[sc.terrain]
     if kind == SLOPE:
         f[1] = math.radians(sc.slope_deg)

@@ -82,6 +82,8 @@ class BodyMassSpring:
         m_node = cre.mass_kg / n
         self.mass = np.full(n, m_node)
         self.inv_mass = 1.0 / self.mass
+        if case.scenario.suspended:
+            self.inv_mass[:4] = 0.0  # the head face is held: the kernel leaves masses with 1/m = 0 in place
         fps = cfg.frame_rate_hz
         self.stiffness = np.full(lat.n_springs, cfg.stiffness * fps * fps * m_node)
         self.damping = np.full(lat.n_springs, cfg.damping * fps * m_node)
@@ -120,6 +122,9 @@ class BodyMassSpring:
             a = math.radians(sc.slope_deg)
             c, s = math.cos(a), math.sin(a)
             x = x @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
+        if sc.suspended:
+            # hang head up: turn the body (built along -x from the head) to lie along -y
+            x = x @ np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
         x[:, 0] += sc.start_x_m
         phi = np.array([signed_distance(self.terr_kind, self.terr, *p) for p in x])
         # clearance of the underside: shift along the surface normal direction (y for flat kinds)
@@ -172,6 +177,10 @@ class BodyMassSpring:
                                lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._stretch, self._rest)
         return K.lattice_energy(self.x, self.v, self.mass, lat.springs, self.stiffness, self._rest,
                                 self.phys[K.GRAVITY])
+
+    def extra_metrics(self) -> dict[str, float]:
+        """Backend-specific metrics (none beyond the common ones for the lattice)."""
+        return {}
 
     def contact_fraction_mean(self) -> float:
         return float(self.acc[K.ACC_CONTACT_SUM] / max(self.acc[K.ACC_STEPS], 1.0))

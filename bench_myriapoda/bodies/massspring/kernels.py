@@ -175,6 +175,8 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
         max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
         for n in range(n_nodes):
             im = inv_mass[n]
+            if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
+                continue
             vx = v[n, 0] + dt * force[n, 0] * im
             vy = v[n, 1] + dt * (force[n, 1] * im - g)
             vz = v[n, 2] + dt * force[n, 2] * im
