@@ -1,2 +1,3 @@
 """Body model backends; importing this package registers them by name."""
+from .fem import body as _fem  # noqa: F401
 from .massspring import body as _massspring  # noqa: F401

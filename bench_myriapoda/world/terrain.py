@@ -23,3 +23,18 @@ def terrain_from_scenario(sc) -> tuple[int, np.ndarray]:
         f[2] = sc.slab_edge_x_m
         f[3] = min(sc.slab_edge_radius_m, sc.slab_height_m)
     return kind, f
+
+
+def placement_terrain(sc) -> tuple[int, np.ndarray]:
+    """The surface a body is placed above at t = 0.
+
+    The scenario's terrain, except for ``none``: its stand-in plane lies far
+    below (``NO_GROUND_HEIGHT_M``), and a body placed above it would sit where
+    float64 cannot resolve a time step's motion, so ``none`` places bodies above
+    ``ground_height_m`` instead.
+    """
+    kind, f = terrain_from_scenario(sc)
+    if sc.terrain == "none":
+        f = f.copy()
+        f[0] = sc.ground_height_m
+    return kind, f

@@ -18,10 +18,11 @@ import numpy as np
 from ...controllers.muscle_waves import wave_table
 from ...core.registry import BodySpec, register_body
 from ...core.schema import rng
-from ...world.terrain import terrain_from_scenario
+from ...world.terrain import placement_terrain, terrain_from_scenario
 from ...world.terrain_kernels import signed_distance
 from ..friction_kernels import friction_params
 from ..observation import Observation
+from .. import step_status as S
 from . import kernels as K
 from .lattice import build_lattice
 
@@ -111,7 +112,7 @@ class BodyMassSpring:
         self._face_scale = np.ones(cre.segments + 1)
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
-        self.acc = np.zeros(K.N_ACC)
+        self.acc = np.zeros(S.N_ACC)
 
     # ------------------------------------------------------------------ set-up
     def _initial_positions(self, case) -> np.ndarray:
@@ -126,7 +127,8 @@ class BodyMassSpring:
             # hang head up: turn the body (built along -x from the head) to lie along -y
             x = x @ np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
         x[:, 0] += sc.start_x_m
-        phi = np.array([signed_distance(self.terr_kind, self.terr, *p) for p in x])
+        pk, pf = placement_terrain(sc)
+        phi = np.array([signed_distance(pk, pf, *p) for p in x])
         # clearance of the underside: shift along the surface normal direction (y for flat kinds)
         if sc.terrain == "slope":
             a = math.radians(sc.slope_deg)
@@ -157,7 +159,7 @@ class BodyMassSpring:
 
     @staticmethod
     def status_text(code: int) -> str:
-        return K.STATUS_TEXT.get(code, f"status {code}")
+        return S.STATUS_TEXT.get(code, f"status {code}")
 
     # ------------------------------------------------------------------ observation
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
@@ -183,10 +185,10 @@ class BodyMassSpring:
         return {}
 
     def contact_fraction_mean(self) -> float:
-        return float(self.acc[K.ACC_CONTACT_SUM] / max(self.acc[K.ACC_STEPS], 1.0))
+        return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))
 
     def max_penetration(self) -> float:
-        return float(self.acc[K.ACC_MAX_PEN])
+        return float(self.acc[S.ACC_MAX_PEN])
 
 
 register_body(BodySpec(

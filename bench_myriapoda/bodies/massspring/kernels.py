@@ -26,6 +26,8 @@ from ...controllers.muscle_waves import segment_activation
 from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE
+from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
+                           RUNAWAY_SPEED, STATUS_TEXT)
 from .lattice import AXIAL, CROSS
 
 # scalar parameter vector layout (``phys``)
@@ -33,14 +35,6 @@ GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
 N_PHYS = 10
 SYMPLECTIC, EULER = 0, 1
 
-# status codes returned by ``advance``
-OK, NONFINITE, RUNAWAY_SPEED, DEEP_PENETRATION = 0, 1, 2, 3
-STATUS_TEXT = {OK: "ok", NONFINITE: "non-finite position or velocity", RUNAWAY_SPEED: "runaway speed",
-               DEEP_PENETRATION: "deep penetration"}
-
-# accumulator layout (``acc``): statistics gathered inside the step loop
-ACC_CONTACT_SUM, ACC_STEPS, ACC_MAX_PEN = range(3)
-N_ACC = 4
 
 MIN_STRETCH = 0.1  # a fibre never shortens below 10 % of its rest length (keeps springs non-degenerate)
 

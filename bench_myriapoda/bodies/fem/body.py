@@ -1,0 +1,222 @@
+"""``fem``: a creature whose every segment is a fixed-corotational FEM block (orchestration only).
+
+The mesh is a structured chain of tetrahedralized boxes, one per segment
+(``mesh.chain_grid``), sharing their end faces; the paper's "3 x 3 x 3
+deformable mesh resolution" is ``resolution`` with ``resolution_unit`` nodes
+(default: 3 x 3 x 3 nodes = 2 x 2 x 2 cells) or cells.  Muscles scale the rest
+shape of each tet (active strain, see ``body_kernels``), so the worm, snake,
+sidewinder and caterpillar gaits of the mass-spring body run unchanged; the
+same friction models act on the nodes that touch the ground.
+
+Materials in the creature files match the Miller lattice of the same creature:
+the lattice's axial stiffness gives an equivalent Young's modulus E = 8 k_s / w
+(four edge springs and eight side diagonals per segment, k_s the spring
+constant, w the side of the cube).  The damping coefficient keeps the paper's
+ratio gamma / E = 50 / 4000 s: eq. 13 damps every relative velocity of an
+element's nodes, rigid rotation included, so matching the lattice's relaxation
+time instead (gamma = tau E / h^2) makes bending so viscous that a snake cannot
+undulate.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...controllers.muscle_waves import wave_table
+from ...core.registry import BodySpec, register_body
+from ...core.schema import rng
+from ...world.terrain import placement_terrain, terrain_from_scenario
+from .. import step_status as S
+from ..friction_kernels import friction_params
+from ..observation import Observation
+from . import body_kernels as BK
+from . import kernels as FK
+from .mesh import chain_grid, lame_parameters
+from .system import DT_PAPER, FEMSystem
+
+FROM_CREATURE = -1.0
+
+
+@dataclass(frozen=True)
+class FEMConfig:
+    """Keys of ``[bodies.fem]`` in a creature file (and ``--set body.KEY``)."""
+
+    name: str = rng("fem")
+    youngs_modulus_pa: float = rng(4000.0, gt=0.0, doc="Young's modulus E [Pa] (paper preset 4000)")
+    poisson_ratio: float = rng(0.4, ge=0.0, lt=0.5, doc="Poisson's ratio nu (paper preset 0.4)")
+    damping_gamma: float = rng(50.0, ge=0.0, doc="damping coefficient gamma of eq. 13 [N s/m^4] (paper preset 50)")
+    density_kg_m3: float = rng(FROM_CREATURE, doc="density [kg/m^3]; default: creature mass / body volume")
+    resolution: int = rng(3, ge=1, le=50, doc="mesh resolution per segment edge (nodes or cells, see resolution_unit)")
+    resolution_unit: str = rng("nodes", choices=("nodes", "cells"),
+                               doc="the paper's '3 x 3 x 3 resolution' read as nodes (default) or cells")
+    tets_per_cell: int = rng(6, choices=(5, 6), doc="tetrahedra per hexahedral cell")
+    dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
+
+    def __post_init__(self):
+        if self.resolution_unit == "nodes" and self.resolution < 2:
+            from ...core.errors import InputError
+            raise InputError("body", "body.resolution", f"{self.resolution} nodes per edge give no cell; must be >= 2")
+
+
+def default_dt(cfg: FEMConfig) -> float:
+    return cfg.dt_s
+
+
+class BodyFEM:
+    """A segmented creature as one connected tetrahedral mesh, lying along +x (head first)."""
+
+    name = "fem"
+
+    def __init__(self, case):
+        cre = case.creature
+        cfg: FEMConfig = case.body
+        self.case = case
+        n_seg, L, w, h = cre.segments, cre.segment_length_m, cre.width_m, cre.height_m
+        nodes, tets, tet_seg = chain_grid(n_seg, L, (h, w), cfg.resolution, cfg.resolution_unit, cfg.tets_per_cell)
+        nodes[:, 0] -= n_seg * L  # head face at x = 0, body along -x (as the lattice)
+        rho = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else cre.mass_kg / (n_seg * L * w * h)
+        self.density = rho
+        self.system = sysm = FEMSystem(nodes, tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio, rho=rho,
+                                       gamma=cfg.damping_gamma)
+        self.rest = nodes
+        self.tet_seg = np.ascontiguousarray(tet_seg)
+        cen = nodes[tets].mean(axis=1)
+        self.tet_y = np.ascontiguousarray((cen[:, 1] - 0.5 * h) / (0.5 * h))
+        self.tet_z = np.ascontiguousarray(cen[:, 2] / (0.5 * w))
+        self.s_seg = (np.arange(n_seg) + 0.5) * L
+        # each node takes the spine of the segment it belongs to (end-face nodes: the anterior one);
+        # segment centres average the nodes of each segment's tets
+        self.node_seg = np.clip(np.floor(-nodes[:, 0] / L + 1e-9).astype(np.int64), 0, n_seg - 1)
+        members = [np.unique(tets[tet_seg == i]) for i in range(n_seg)]
+        self.seg_ptr = np.concatenate([[0], np.cumsum([len(m) for m in members])]).astype(np.int64)
+        self.seg_nodes = np.concatenate(members).astype(np.int64)
+        self.head_nodes = np.flatnonzero(np.isclose(nodes[:, 0], 0.0))
+        self.tail_nodes = np.flatnonzero(np.isclose(nodes[:, 0], -n_seg * L))
+
+        self.waves = wave_table(case.gait, cre.body_length_m, passive=case.scenario.passive)
+        self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
+        self.fric_model, self.fric = friction_params(case.friction)
+        phys = np.zeros(BK.N_PHYS)
+        phys[BK.GRAVITY] = case.scenario.gravity_m_s2
+        phys[BK.DT] = case.dt
+        phys[BK.RAMP_S] = case.gait.ramp_s
+        phys[BK.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
+        phys[BK.R_N] = case.collision.r_n
+        phys[BK.R_T] = case.collision.r_t
+        phys[BK.MAX_SPEED] = case.stability.max_speed_m_s
+        phys[BK.MAX_PEN] = case.stability.max_penetration_m
+        phys[BK.MUSCLES] = 1.0 if np.any(self.waves[:, 0] != 0.0) else 0.0
+        self.phys = phys
+
+        held = np.zeros(len(nodes), dtype=bool)
+        if case.scenario.suspended:
+            held[self.head_nodes] = True
+        sysm.set_fixed(held)
+        self.solver = sysm.solver(case.dt)
+        sysm.x[:] = self._initial_positions(case, nodes)
+        sysm.v[:] = 0.0
+        self.x, self.v = sysm.x, sysm.v
+        self._b_work = np.zeros((len(self.solver.perm), 3))
+        self._force = np.zeros_like(self.x)
+        self._act = np.zeros((n_seg, 3))
+        self._centers = np.zeros((n_seg, 3))
+        self._spine = np.zeros((n_seg, 3))
+        self.acc = np.zeros(S.N_ACC)
+        self._J = np.zeros(len(tets))
+        self._sigma = np.zeros((len(tets), 3))
+        self._min_J = math.inf
+        self._inverted_max = 0
+        self._max_strain = 0.0
+
+    def _initial_positions(self, case, nodes) -> np.ndarray:
+        from ...world.terrain_kernels import signed_distance
+        x = nodes.copy()
+        sc = case.scenario
+        if sc.suspended:
+            x = x @ np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # hang head up, along -y
+        elif sc.terrain == "slope":
+            a = math.radians(sc.slope_deg)
+            c, s = math.cos(a), math.sin(a)
+            x = x @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
+        x[:, 0] += sc.start_x_m
+        pk, pf = placement_terrain(sc)
+        phi = np.array([signed_distance(pk, pf, *p) for p in x])
+        nrm = np.array([0.0, 1.0, 0.0])
+        if sc.terrain == "slope" and not sc.suspended:
+            a = math.radians(sc.slope_deg)
+            nrm = np.array([-math.sin(a), math.cos(a), 0.0])
+        x += (sc.start_height_m - phi.min()) * nrm
+        if sc.perturbation_m > 0:
+            x += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=x.shape)
+        return x
+
+    # ------------------------------------------------------------------ stepping
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        s, so = self.system, self.solver
+        return BK.advance(self.x, self.v, s.mass, s.tets, s.Dm_inv, s.vol, s.mu, s.lam, self.tet_seg, self.tet_y,
+                          self.tet_z, self.s_seg, self.waves, so.perm, so.sky_first, so.sky_ptr, so.sky_L,
+                          so.fp_ptr, so.fp_col, so.fp_val, self.node_seg, self.seg_ptr, self.seg_nodes,
+                          self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, t0, n_steps,
+                          s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, self._force, self._b_work,
+                          self._act, self._centers, self._spine, self.acc)
+
+    def compile(self) -> None:
+        x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
+        q = self.system._q_ws.copy()
+        self.advance(0.0, 1)
+        self.energy(0.0)
+        self._sample_invariants()
+        self.x[:], self.v[:], self.acc[:] = x, v, acc
+        self.system._q_ws[:] = q
+        self._min_J, self._inverted_max, self._max_strain = math.inf, 0, 0.0
+
+    @staticmethod
+    def status_text(code: int) -> str:
+        return S.STATUS_TEXT.get(code, f"status {code}")
+
+    # ------------------------------------------------------------------ observation
+    def _sample_invariants(self) -> None:
+        s = self.system
+        FK.tet_invariants(self.x, s.tets, s.Dm_inv_eff, self._J, self._sigma)
+        self._min_J = min(self._min_J, float(self._J.min()))
+        self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
+        self._max_strain = max(self._max_strain, float(np.abs(self._sigma - 1.0).max()))
+
+    def observe(self, t: float, with_nodes: bool = False) -> Observation:
+        self._sample_invariants()
+        BK.segment_spines(self.x, self.seg_ptr, self.seg_nodes, self._centers, self._spine)
+        m = self.system.mass
+        com = (m[:, None] * self.x).sum(axis=0) / m.sum()
+        return Observation(t=t, segment_centers=self._centers.copy(), com=com,
+                           head=self.x[self.head_nodes].mean(axis=0), tail=self.x[self.tail_nodes].mean(axis=0),
+                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+
+    def energy(self, t: float) -> tuple[float, float, float]:
+        """(kinetic, elastic, gravitational) [J]; elastic against the current active rest shape."""
+        s = self.system
+        ke, pg = BK.kinetic_and_gravity(self.x, self.v, s.mass, self.phys[BK.GRAVITY])
+        el = FK.elastic_energy(self.x, s.tets, s.Dm_inv_eff, s.vol, s.mu, s.lam)
+        return ke, el, pg
+
+    def extra_metrics(self) -> dict[str, float]:
+        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max),
+                "max_strain": self._max_strain, "n_tets": float(len(self.system.tets)),
+                "n_nodes": float(len(self.x))}
+
+    def contact_fraction_mean(self) -> float:
+        return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        return float(self.acc[S.ACC_MAX_PEN])
+
+
+register_body(BodySpec(
+    name="fem",
+    description="Fang et al. 2013 App. A: every segment a fixed-corotational tetrahedral FEM block; muscles as active strain",
+    config_cls=FEMConfig,
+    factory=BodyFEM,
+    capabilities=frozenset({"muscles", "friction:miller", "friction:coulomb", "friction:stick"}),
+    default_dt=default_dt,
+))

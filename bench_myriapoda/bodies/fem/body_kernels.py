@@ -1,0 +1,168 @@
+"""Numba step loop of a creature whose every segment is a fixed-corotational FEM block.
+
+One step (paper App. A with the suite's muscles and ground contact):
+
+1. muscle activation of every segment from the wave table (``segment_activation``);
+2. active strain (``active_coefficients``): each tet's rest shape is scaled by
+   A = diag(l_axial, l_c, l_c) in the body's rest frame, with l_axial the
+   fibre stretch 1 + axial + lateral z_s + dorsal y_s at the tet's centroid
+   (z_s, y_s in [-1, 1] across the section, as at the lattice's corners) and
+   l_c = 1 / sqrt(1 + axial) when volume-conserving (Miller Sec. 4);
+3. elastic forces f_E (eqs. 7-11) plus gravity M g (eq. 14);
+4. semi-implicit velocity solve (M + dt D) v^{n+1} = M v^n + dt f (eq. 14),
+   with held nodes (a suspended head) prescribed at rest;
+5. per free node: ground friction then Miller's path collision
+   (``contact_kernels``), x^{n+1} = x^n + dt v^{n+1} (eq. 15);
+6. blow-up checks (``step_status``).
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ...controllers.muscle_waves import segment_activation
+from ...world.terrain_kernels import signed_distance
+from ..contact_kernels import collide_path, contact_friction
+from ..friction_kernels import CONTACT_DISTANCE
+from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
+from .kernels import LANES, elastic_forces, semi_implicit_velocity
+
+# scalar parameter vector layout (``phys``)
+GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(9)
+N_PHYS = 10
+MIN_STRETCH = 0.1  # as in the lattice: a fibre never shortens below 10 % of its rest length
+
+
+@njit(cache=True, error_model="numpy")
+def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, volume_conserving, Dm_inv_eff, coef):
+    """Overwrite Dm_inv_eff (n_tets, 3, 3) [1/m] and the blocked ``coef`` for activation ``act`` (n_seg, 3).
+
+    F_e = F A^-1 with A diagonal in the rest frame, so Dm_inv_eff = Dm^-1 A^-1
+    scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu and lambda
+    (layout of ``fem.kernels.pack_tet_coefficients``).  tet_y, tet_z: (n_tets,)
+    centroid position across the section, scaled to [-1, 1].
+    """
+    for e in range(Dm_inv.shape[0]):
+        i = tet_seg[e]
+        axial = max(1.0 + act[i, 0], MIN_STRETCH)
+        la = max(1.0 + act[i, 0] + act[i, 1] * tet_z[e] + act[i, 2] * tet_y[e], MIN_STRETCH)
+        lc = 1.0 / math.sqrt(axial) if volume_conserving else 1.0
+        inv = (1.0 / la, 1.0 / lc, 1.0 / lc)
+        b = e // LANES
+        ln = e - b * LANES
+        for r in range(3):
+            for c in range(3):
+                d = Dm_inv[e, r, c] * inv[c]
+                Dm_inv_eff[e, r, c] = d
+                coef[b, (3 * r + c) * LANES + ln] = -vol[e] * d
+        coef[b, 9 * LANES + ln] = 2.0 * mu[e]
+        coef[b, 10 * LANES + ln] = lam[e]
+
+
+@njit(cache=True, error_model="numpy")
+def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
+    """Overwrite centers (n_seg, 3) [m] with the mean node position of each segment and
+    spine (n_seg, 3) with the unit vector from the segment behind to the one ahead (Miller Sec. 4)."""
+    n_seg = centers.shape[0]
+    for i in range(n_seg):
+        cx = cy = cz = 0.0
+        for a in range(seg_ptr[i], seg_ptr[i + 1]):
+            k = seg_nodes[a]
+            cx += x[k, 0]
+            cy += x[k, 1]
+            cz += x[k, 2]
+        m = seg_ptr[i + 1] - seg_ptr[i]
+        centers[i, 0], centers[i, 1], centers[i, 2] = cx / m, cy / m, cz / m
+    for i in range(n_seg):
+        a = i - 1 if i > 0 else 0
+        b = i + 1 if i < n_seg - 1 else n_seg - 1
+        sx = centers[a, 0] - centers[b, 0]
+        sy = centers[a, 1] - centers[b, 1]
+        sz = centers[a, 2] - centers[b, 2]
+        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+        if nrm > 0.0:
+            spine[i, 0], spine[i, 1], spine[i, 2] = sx / nrm, sy / nrm, sz / nrm
+        else:
+            spine[i, 0], spine[i, 1], spine[i, 2] = 1.0, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, s_seg, waves,
+            perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+            node_seg, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, t0, n_steps,
+            Dm_inv_eff, coef, q_ws, F_work, H_work, force, b_work, act, centers, spine, acc):
+    """Advance the FEM creature ``n_steps`` steps from time t0 [s]; return (steps done, status).
+
+    x, v: (n_nodes, 3) [m], [m/s], updated in place; mass (n_nodes,) [kg];
+    tets, Dm_inv (rest), vol, mu, lam: the mesh; tet_seg, tet_y, tet_z: each
+    tet's segment and section position; perm, sky_*, fp_*: the factorization of
+    (M + dt D)_ff over the free nodes ``perm`` (``FEMSystem.solver``); nodes not
+    in ``perm`` are held (v = 0).  node_seg (n_nodes,): segment whose spine a
+    node uses; seg_ptr/seg_nodes: CSR of each segment's nodes.  Work arrays are
+    overwritten; ``acc`` accumulates statistics (``step_status``).
+    """
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    muscles = phys[MUSCLES] != 0.0
+    volume = phys[VOLUME] != 0.0
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    contact_dist = fric[CONTACT_DISTANCE]
+    n_free = perm.shape[0]
+    for step in range(n_steps):
+        t = t0 + step * dt
+        if muscles:
+            segment_activation(waves, phys[RAMP_S], s_seg, t, act)
+            active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, volume, Dm_inv_eff, coef)
+        force[:, :] = 0.0
+        elastic_forces(x, tets, Dm_inv_eff, coef, q_ws, F_work, H_work, force)
+        for k in range(n_free):
+            i = perm[k]
+            force[i, 1] -= mass[i] * g  # eq. 14: the gravity force M g (PAPER-NOTES)
+        semi_implicit_velocity(v, mass, force, dt, perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val, b_work)
+        segment_spines(x, seg_ptr, seg_nodes, centers, spine)
+        status = OK
+        n_contact = 0
+        for k in range(n_free):
+            i = perm[k]
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+                s = node_seg[i]
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[s, 0], spine[s, 1], spine[s, 2])
+            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > phys[MAX_PEN]:
+                    status = DEEP_PENETRATION
+            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = NONFINITE
+            elif vx * vx + vy * vy + vz * vz > max_speed2:
+                status = RUNAWAY_SPEED
+        acc[ACC_CONTACT_SUM] += n_contact / x.shape[0]
+        acc[ACC_STEPS] += 1.0
+        if status != OK:
+            return step + 1, status
+    return n_steps, OK
+
+
+@njit(cache=True, error_model="numpy")
+def kinetic_and_gravity(x, v, mass, g):
+    """(kinetic [J], gravitational [J] from y = 0) of the nodes."""
+    ke = 0.0
+    pg = 0.0
+    for i in range(x.shape[0]):
+        ke += 0.5 * mass[i] * (v[i, 0] ** 2 + v[i, 1] ** 2 + v[i, 2] ** 2)
+        pg += mass[i] * g * x[i, 1]
+    return ke, pg
