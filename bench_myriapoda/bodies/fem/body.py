@@ -27,10 +27,11 @@ import numpy as np
 from ...controllers.muscle_waves import wave_table
 from ...core.registry import BodySpec, register_body
 from ...core.schema import rng
-from ...world.terrain import placement_terrain, terrain_from_scenario
+from ...world.terrain import terrain_from_scenario
 from .. import step_status as S
 from ..friction_kernels import friction_params
 from ..observation import Observation
+from ..placement import place_points
 from . import body_kernels as BK
 from . import kernels as FK
 from .mesh import chain_grid, lame_parameters
@@ -115,7 +116,7 @@ class BodyFEM:
             held[self.head_nodes] = True
         sysm.set_fixed(held)
         self.solver = sysm.solver(case.dt)
-        sysm.x[:] = self._initial_positions(case, nodes)
+        sysm.x[:] = place_points(nodes, case)
         sysm.v[:] = 0.0
         self.x, self.v = sysm.x, sysm.v
         self._b_work = np.zeros((len(self.solver.perm), 3))
@@ -129,28 +130,6 @@ class BodyFEM:
         self._min_J = math.inf
         self._inverted_max = 0
         self._max_strain = 0.0
-
-    def _initial_positions(self, case, nodes) -> np.ndarray:
-        from ...world.terrain_kernels import signed_distance
-        x = nodes.copy()
-        sc = case.scenario
-        if sc.suspended:
-            x = x @ np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # hang head up, along -y
-        elif sc.terrain == "slope":
-            a = math.radians(sc.slope_deg)
-            c, s = math.cos(a), math.sin(a)
-            x = x @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
-        x[:, 0] += sc.start_x_m
-        pk, pf = placement_terrain(sc)
-        phi = np.array([signed_distance(pk, pf, *p) for p in x])
-        nrm = np.array([0.0, 1.0, 0.0])
-        if sc.terrain == "slope" and not sc.suspended:
-            a = math.radians(sc.slope_deg)
-            nrm = np.array([-math.sin(a), math.cos(a), 0.0])
-        x += (sc.start_height_m - phi.min()) * nrm
-        if sc.perturbation_m > 0:
-            x += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=x.shape)
-        return x
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:

@@ -10,7 +10,6 @@ is one substep, dt = 1 / (fps * substeps).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,10 +17,10 @@ import numpy as np
 from ...controllers.muscle_waves import wave_table
 from ...core.registry import BodySpec, register_body
 from ...core.schema import rng
-from ...world.terrain import placement_terrain, terrain_from_scenario
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain import terrain_from_scenario
 from ..friction_kernels import friction_params
 from ..observation import Observation
+from ..placement import place_points
 from .. import step_status as S
 from . import kernels as K
 from .lattice import build_lattice
@@ -103,7 +102,7 @@ class BodyMassSpring:
         phys[K.MAX_PEN] = case.stability.max_penetration_m
         phys[K.INTEGRATOR] = K.EULER if cfg.integrator == "euler" else K.SYMPLECTIC
         self.phys = phys
-        self.x = self._initial_positions(case)
+        self.x = place_points(lat.rest_nodes, case)
         self.v = np.zeros_like(self.x)
         # work arrays and accumulators for the kernel
         self._force = np.zeros_like(self.x)
@@ -113,32 +112,6 @@ class BodyMassSpring:
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
-
-    # ------------------------------------------------------------------ set-up
-    def _initial_positions(self, case) -> np.ndarray:
-        x = self.lattice.rest_nodes.copy()
-        sc = case.scenario
-        if sc.terrain == "slope":
-            # lie along the incline, head uphill: rotate about z by the slope angle
-            a = math.radians(sc.slope_deg)
-            c, s = math.cos(a), math.sin(a)
-            x = x @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
-        if sc.suspended:
-            # hang head up: turn the body (built along -x from the head) to lie along -y
-            x = x @ np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
-        x[:, 0] += sc.start_x_m
-        pk, pf = placement_terrain(sc)
-        phi = np.array([signed_distance(pk, pf, *p) for p in x])
-        # clearance of the underside: shift along the surface normal direction (y for flat kinds)
-        if sc.terrain == "slope":
-            a = math.radians(sc.slope_deg)
-            nrm = np.array([-math.sin(a), math.cos(a), 0.0])
-        else:
-            nrm = np.array([0.0, 1.0, 0.0])
-        x += (sc.start_height_m - phi.min()) * nrm
-        if sc.perturbation_m > 0:
-            x += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=x.shape)
-        return np.ascontiguousarray(x)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
