@@ -51,9 +51,15 @@ def hanging_metrics(series: Series) -> dict[str, float]:
     return {"hanging_elongation_m": float(d[-tail:].mean() - d[0])}
 
 
-def wave_speed(case: Case) -> float:
+def wave_speed(case: Case, body_length_m: float | None = None) -> float:
     """Speed of the muscle wave along the undeformed body [m/s]: wavelength * frequency."""
-    return case.gait.wavelength_bl * case.creature.body_length_m * case.gait.frequency_hz
+    L = case.creature.body_length_m if body_length_m is None else body_length_m
+    return case.gait.wavelength_bl * L * case.gait.frequency_hz
+
+
+def body_length(body, case: Case) -> float:
+    """Rest length of the body from head to tail [m]: the body model's own figure when it has one."""
+    return float(getattr(body, "body_length_m", case.creature.body_length_m))
 
 
 def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False) -> RunResult:
@@ -92,12 +98,13 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
                 progress(done / total)
         series = recorder.series()
         metrics: dict[str, float] = {}
-        metrics.update(locomotion_metrics(series, case, wave_speed(case)))
+        length = body_length(body, case)
+        metrics.update(locomotion_metrics(series, case, wave_speed(case, length), length))
         metrics.update(energy_metrics(series))
         metrics["contact_fraction"] = body.contact_fraction_mean()
         metrics["max_penetration_m"] = body.max_penetration()
-        metrics["body_length_m"] = case.creature.body_length_m
-        metrics["wave_speed_m_per_s"] = wave_speed(case)
+        metrics["body_length_m"] = length
+        metrics["wave_speed_m_per_s"] = wave_speed(case, length)
         metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))

@@ -64,13 +64,17 @@ def path_following_error(series: Series, i0: int, i1: int, body_length: float, n
     return float(np.mean(errs) / body_length)
 
 
-def locomotion_metrics(series: Series, case, wave_speed_m_s: float) -> dict[str, float]:
-    """Speed, direction and gait-following metrics over the steady window."""
+def locomotion_metrics(series: Series, case, wave_speed_m_s: float, body_length_m: float) -> dict[str, float]:
+    """Speed, direction and gait-following metrics over the steady window.
+
+    body_length_m: the body's rest length from head to tail [m] (the body model
+    reports it: a hybrid body's links add to its segments).
+    """
     out: dict[str, float] = {}
     if len(series.t) < 3:
         return out
     period = case.gait.period_s
-    L = case.creature.body_length_m
+    L = body_length_m
     i0, i1 = measurement_window(series, period, case.metrics.warmup_cycles)
     dt = series.t[i1] - series.t[i0]
     if dt <= 0:

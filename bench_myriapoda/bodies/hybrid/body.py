@@ -1,0 +1,519 @@
+"""``hybrid``: the myriapod paper's body (Sec. 3): rigid segments joined by FEM links.
+
+A hybrid creature has ``creature.segments`` rigid exoskeletal segments (boxes,
+``RigidBoxes``) in a row, rigid 0 (the head) at the front; the body is built
+along -x from the head (creatures face +x, y up, z to the right).  Between
+consecutive boxes sits a deformable link: a structured tetrahedral block
+(``fem.mesh.box_grid``) of the fixed-corotational material of App. A whose two
+end faces are glued to the facing faces of the two boxes.  The coupling is the
+paper's staggered three-step scheme, run inside one numba kernel
+(``kernels.advance``, whose docstring gives the steps).
+
+Defaults and why
+----------------
+* Material: the paper's App. A presets read in SI units, E = 4000 Pa,
+  nu = 0.4, rho = 1 kg/m^3, gamma = 50 N s/m^4, and dt = 1/3000 s.  The paper
+  gives them without units; they form a consistent set at its own scale of
+  segments about 1 unit long (a 1 m link then stretches by well under 1 % per
+  kg hanging from it, and the explicit elastic update is far inside its
+  stability limit at dt = 1/3000 s), so ``models/chain.toml`` uses 1 m
+  segments.
+* Rigid segment size: the creature's segment length, width and height, so one
+  creature file describes the same animal for every body backend.
+* Rigid density: chosen so that the simulated mass (rigid boxes plus the free
+  FEM nodes) equals ``creature.mass_kg``.  The lumped masses of the attached
+  nodes are not simulated: that material belongs to the rigid segment, whose
+  mass includes it.  An explicit ``rigid_density_kg_m3`` wins.
+* Link: half a rigid segment long, with the rigid segment's cross-section.
+* Resolution: 3 nodes per edge ("3 x 3 x 3", Sec. 6, read as nodes as in
+  ``fem.mesh.segment_cells``; ``resolution_unit = "cells"`` gives the other
+  reading), 6 tets per cell (Kuhn split): 48 tets per link.
+* Rigid contact: isotropic Coulomb friction (``rigid_kernels``) with the
+  scenario's *transverse* kinetic coefficient ``friction.mu_transverse``: a box
+  has no spine-relative direction of its own to pick the forward or backward
+  coefficient, and the transverse one is the coefficient of the anisotropic
+  model that does not depend on the sliding direction along the body.  For the
+  "miller" and "stick" node rules, which have no coefficient, the boxes use the
+  same number.  ``rigid_friction_mu`` overrides it.  Restitution 0 (Miller's
+  inelastic r_n = 0 default).
+* FEM nodes touch the ground through the suite's shared point-mass contact
+  (``contact_kernels``: the scenario's friction model, then Miller's path
+  collision with ``collision.r_n``, ``r_t``), like every other body.
+
+Damping and rotation: eq. 13 pulls every node of a tet toward the tet's mean
+velocity, so it also brakes a rigidly *rotating* link (f_i = -gamma V w x
+(x_i - x_mean)): a tumbling chain loses angular momentum through its links
+(about 40 % in 0.4 s for ``models/chain.toml`` spinning at ~1.7 rad/s).  That is
+the paper's damping model, kept as is; the coupling itself conserves linear
+and angular momentum to round-off (tests/test_hybrid.py).
+
+Suspended scenarios (Fig. 10): the body hangs straight down from the head
+(body axis along -y) and the head box is kinematic, held fixed in place; the
+forces the first link exerts on it are taken up by the support.
+
+Observation: segment centres in body order (rigid 0, link 0, rigid 1, ...),
+box centres and link node means; head and tail are the front face centre of
+rigid 0 and the back face centre of the last rigid; energies and momenta count
+the rigid boxes and the free FEM nodes (attached nodes are part of the boxes).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from ...core.errors import InputError
+from ...core.registry import BodySpec, register_body
+from ...core.schema import rng
+from ...world.terrain import terrain_from_scenario
+from .. import rigid_kernels as rk
+from ..fem import kernels as FK
+from ..fem.mesh import RESOLUTION_UNITS, box_grid, segment_cells
+from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
+from ..friction_kernels import friction_params
+from ..observation import Observation
+from ..placement import initial_transform
+from ..rigid import ContactSettings, RigidBoxes
+from . import kernels as K
+
+DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
+CONFIG_SOURCE = "[bodies.hybrid]"
+
+
+@dataclass(frozen=True)
+class HybridConfig:
+    """Keys of ``[bodies.hybrid]`` in a creature file (and ``--set body.KEY``).
+
+    Keys defaulting to -1 are derived (module docstring): rigid sizes from the
+    creature, the rigid density from ``creature.mass_kg``, the link length as
+    half a rigid segment, the link cross-section as the rigid one, the boxes'
+    friction from ``friction.mu_transverse``.
+    """
+
+    name: str = rng("hybrid")
+    rigid_length_m: float = rng(DERIVED, gt=0.0, doc="rigid segment length along the body [m]; default creature.segment_length_m")
+    rigid_width_m: float = rng(DERIVED, gt=0.0, doc="rigid segment width (along z) [m]; default creature.width_m")
+    rigid_height_m: float = rng(DERIVED, gt=0.0, doc="rigid segment height (along y) [m]; default creature.height_m")
+    rigid_density_kg_m3: float = rng(DERIVED, gt=0.0,
+                                     doc="rigid density [kg/m^3]; default: boxes + free FEM nodes weigh creature.mass_kg")
+    link_length_m: float = rng(DERIVED, gt=0.0, doc="deformable link length between two boxes [m]; default half the rigid length")
+    link_width_m: float = rng(DERIVED, gt=0.0, doc="link width [m], at most the rigid width; default the rigid width")
+    link_height_m: float = rng(DERIVED, gt=0.0, doc="link height [m], at most the rigid height; default the rigid height")
+    youngs_modulus_pa: float = rng(E_PAPER, gt=0.0, doc="Young's modulus of the links [Pa] (paper App. A: 4000)")
+    poisson_ratio: float = rng(NU_PAPER, gt=-1.0, lt=0.5, doc="Poisson's ratio of the links (paper: 0.4)")
+    density_kg_m3: float = rng(RHO_PAPER, gt=0.0, doc="density of the links [kg/m^3] (paper: 1)")
+    damping_gamma: float = rng(GAMMA_PAPER, ge=0.0, doc="damping coefficient of eq. 13 [N s/m^4] (paper: 50)")
+    resolution: int = rng(3, ge=2, le=64, doc="mesh resolution of a link per edge, in resolution_unit")
+    resolution_unit: str = rng("nodes", choices=RESOLUTION_UNITS, doc="'nodes': 3 = 3x3x3 nodes (2x2x2 cells); 'cells'")
+    tets_per_cell: int = rng(6, choices=(5, 6), doc="tets per hexahedral cell: 6 (Kuhn) or 5")
+    rigid_restitution: float = rng(0.0, ge=0.0, le=1.0, doc="restitution of box-terrain impacts")
+    rigid_friction_mu: float = rng(DERIVED, ge=0.0, doc="Coulomb coefficient of the boxes; default friction.mu_transverse")
+
+    def __post_init__(self):
+        if self.resolution_unit == "nodes" and self.resolution < 3:
+            raise InputError(CONFIG_SOURCE, "resolution", f"{self.resolution} nodes per edge leave no free node "
+                                                          "inside a link; use >= 3 nodes (or >= 2 cells)")
+
+
+def default_dt(cfg: HybridConfig) -> float:
+    """The paper's time step, 1/3000 s (App. A)."""
+    return DT_PAPER
+
+
+@dataclass(frozen=True)
+class HybridLayout:
+    """Resolved sizes of a hybrid body [m]; cells (nx, ny, nz) of one link along (x, y, z)."""
+
+    n_rigid: int
+    rigid_length: float
+    rigid_width: float
+    rigid_height: float
+    link_length: float
+    link_width: float
+    link_height: float
+    cells: tuple
+
+    @property
+    def pitch(self) -> float:
+        """Distance between consecutive rigid centres [m]."""
+        return self.rigid_length + self.link_length
+
+    @property
+    def body_length(self) -> float:
+        """Head front face to tail back face [m]."""
+        return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
+
+
+def hybrid_layout(cfg: HybridConfig, creature) -> HybridLayout:
+    """Sizes of the body from the config, defaults taken from the creature (module docstring)."""
+    if creature.segments < 2:
+        raise ValueError(f"a hybrid body needs at least 2 rigid segments (one link); creature "
+                         f"{creature.name!r} has {creature.segments}")
+    pick = lambda value, default: default if value == DERIVED else value  # noqa: E731
+    lr = pick(cfg.rigid_length_m, creature.segment_length_m)
+    wr = pick(cfg.rigid_width_m, creature.width_m)
+    hr = pick(cfg.rigid_height_m, creature.height_m)
+    ll = pick(cfg.link_length_m, 0.5 * lr)
+    wl = pick(cfg.link_width_m, wr)
+    hl = pick(cfg.link_height_m, hr)
+    if wl > wr or hl > hr:
+        raise ValueError(f"the link cross-section {hl} x {wl} m (height x width) must fit on the rigid "
+                         f"face {hr} x {wr} m")
+    cells = segment_cells(cfg.resolution, cfg.resolution_unit)
+    return HybridLayout(creature.segments, lr, wr, hr, ll, wl, hl, cells)
+
+
+@dataclass(frozen=True)
+class HybridMesh:
+    """The links' mesh in the body frame (head front face at x = 0, axis on y = z = 0).
+
+    nodes (n_nodes, 3) [m]; tets (n_tets, 4); node_link (n_nodes,) link of each
+    node; link_nodes (n_links, nodes per link) node ids of each link; attached
+    (n_nodes,) bool; att_body (n_nodes,) the rigid segment an attached node is
+    glued to (-1 for free nodes); rigid_centres (n_rigid, 3) [m].
+    """
+
+    nodes: np.ndarray
+    tets: np.ndarray
+    node_link: np.ndarray
+    link_nodes: np.ndarray
+    attached: np.ndarray
+    att_body: np.ndarray
+    rigid_centres: np.ndarray
+
+
+def build_mesh(lay: HybridLayout, tets_per_cell: int = 6) -> HybridMesh:
+    """Links between consecutive boxes: link k spans x in [-(k+1) P, -k P - L_rigid] (P the pitch)."""
+    nx, ny, nz = lay.cells
+    per_layer = (ny + 1) * (nz + 1)
+    P = lay.pitch
+    all_nodes, all_tets, node_link, attached, att_body, link_nodes = [], [], [], [], [], []
+    offset = 0
+    for k in range(lay.n_rigid - 1):
+        x0 = -(k + 1) * P
+        nd, tt = box_grid((lay.link_length, lay.link_height, lay.link_width), (nx, ny, nz),
+                          origin=(x0, -0.5 * lay.link_height, -0.5 * lay.link_width), tets_per_cell=tets_per_cell)
+        layer = np.arange(len(nd)) // per_layer  # node (i, j, k) has index i * per_layer + ...
+        back, front = layer == 0, layer == nx
+        body = np.full(len(nd), -1, dtype=np.int64)
+        body[front] = k          # front face on the back face of rigid k
+        body[back] = k + 1       # back face on the front face of rigid k + 1
+        all_nodes.append(nd)
+        all_tets.append(tt + offset)
+        node_link.append(np.full(len(nd), k, dtype=np.int64))
+        attached.append(front | back)
+        att_body.append(body)
+        link_nodes.append(np.arange(len(nd), dtype=np.int64) + offset)
+        offset += len(nd)
+    centres = np.zeros((lay.n_rigid, 3))
+    centres[:, 0] = -np.arange(lay.n_rigid) * P - 0.5 * lay.rigid_length
+    return HybridMesh(np.concatenate(all_nodes), np.concatenate(all_tets), np.concatenate(node_link),
+                      np.stack(link_nodes), np.concatenate(attached), np.concatenate(att_body), centres)
+
+
+class BodyHybrid:
+    """Rigid boxes (``self.rigid``) joined by FEM links (``self.fem``) on a terrain.
+
+    State: ``self.x``, ``self.v`` (n_nodes, 3) [m], [m/s] are the FEM's arrays
+    (attached rows always equal the rigid bodies' points); the boxes' c, q, v, w
+    live in ``self.rigid``.  ``self.free`` / ``self.fixed``: node ids; the kernel
+    arrays of the attachment are in ``fixed`` order (``att_body``, ``att_local``).
+    """
+
+    name = "hybrid"
+
+    def __init__(self, case):
+        cre = case.creature
+        cfg: HybridConfig = case.body
+        sc = case.scenario
+        self.case = case
+        self.layout = lay = hybrid_layout(cfg, cre)
+        mesh = build_mesh(lay, cfg.tets_per_cell)
+        self.mesh = mesh
+        self.dt = float(case.dt)
+        self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
+
+        # ---- FEM links (App. A) with the attached nodes fixed in the solve
+        self.fem = fem = FEMSystem(mesh.nodes, mesh.tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio,
+                                   rho=cfg.density_kg_m3, gamma=cfg.damping_gamma)
+        fem.set_fixed(mesh.attached)
+        self.solver = fem.solver(self.dt)
+        self.fixed = self.solver.fixed            # sorted attached node ids
+        self.free = np.sort(fem.free_nodes)
+        self.att_body = np.ascontiguousarray(mesh.att_body[self.fixed])
+        self.node_link = mesh.node_link
+
+        # ---- rigid boxes
+        half = np.array([0.5 * lay.rigid_length, 0.5 * lay.rigid_height, 0.5 * lay.rigid_width])
+        free_mass = float(fem.mass[self.free].sum())
+        box_volume = lay.rigid_length * lay.rigid_height * lay.rigid_width
+        if cfg.rigid_density_kg_m3 == DERIVED:
+            m_rigid = (cre.mass_kg - free_mass) / lay.n_rigid
+            if m_rigid <= 0.0:
+                raise ValueError(f"creature.mass_kg = {cre.mass_kg} kg is less than the free FEM nodes' mass "
+                                 f"{free_mass:.4g} kg; raise it or set body.rigid_density_kg_m3")
+        else:
+            m_rigid = cfg.rigid_density_kg_m3 * box_volume
+        self.rigid = RigidBoxes(np.tile(half, (lay.n_rigid, 1)), np.full(lay.n_rigid, m_rigid))
+        self.total_mass = m_rigid * lay.n_rigid + free_mass
+
+        # ---- world placement, terrain, attached nodes on the boxes
+        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        self.fric_model, self.fric = friction_params(case.friction)
+        self._place(case, mesh, half)
+        att_local = mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body]
+        self.att_local = np.ascontiguousarray(att_local)  # body frame = the build frame
+        if sc.suspended:
+            self.rigid.set_kinematic(0, True)  # the head is held (Fig. 10)
+
+        # ---- kernel parameters and scratch
+        contact = ContactSettings(friction=(case.friction.mu_transverse if cfg.rigid_friction_mu == DERIVED
+                                            else cfg.rigid_friction_mu),
+                                  restitution=cfg.rigid_restitution)
+        self.contact = contact
+        phys = np.zeros(K.N_PHYS)
+        phys[K.DT] = self.dt
+        phys[K.R_N] = case.collision.r_n
+        phys[K.R_T] = case.collision.r_t
+        phys[K.MAX_SPEED] = case.stability.max_speed_m_s
+        phys[K.MAX_PEN] = case.stability.max_penetration_m
+        phys[K.RIGID_MU] = contact.friction
+        phys[K.RIGID_RESTITUTION] = contact.restitution
+        phys[K.BOUNCE_THRESHOLD] = contact.bounce_threshold
+        phys[K.VEL_ITERATIONS] = contact.velocity_iterations
+        phys[K.VEL_TOLERANCE] = contact.velocity_tolerance
+        phys[K.POS_ITERATIONS] = contact.position_iterations
+        phys[K.POS_BETA] = contact.position_beta
+        phys[K.SLOP] = contact.slop
+        self.phys = phys
+        n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
+        self._f_work = np.zeros((n_nodes, 3))
+        self._b_work = np.zeros((len(self.free), 3))
+        self._f_att = np.zeros((n_fixed, 3))
+        self._x_att = np.zeros((n_fixed, 3))
+        self._x_pred = np.zeros((n_fixed, 3))
+        self._residual = np.zeros(n_fixed)
+        self._spine = np.zeros((n_rigid - 1, 3))
+        self._Rb = np.zeros((n_rigid, 3, 3))
+        self._R = np.zeros((3, 3))
+        self._Iw = np.zeros((3, 3))
+        self._corner_of = np.zeros(rk.N_CORNERS, dtype=np.int64)
+        self._lin = np.zeros((rk.N_CORNERS, 3, 3))
+        self._ang = np.zeros((rk.N_CORNERS, 3, 3))
+        self._resp = np.zeros((rk.N_CORNERS, 3, 3))
+        self._kn = np.zeros(rk.N_CORNERS)
+        self._kt = np.zeros((rk.N_CORNERS, 6))
+        self._target = np.zeros(rk.N_CORNERS)
+        self._lam = np.zeros((rk.N_CORNERS, 3))
+        self.acc = np.zeros(K.N_ACC)
+        self._J = np.zeros(fem.n_tets)
+        self._sigma = np.zeros((fem.n_tets, 3))
+        self._reset_samples()
+        self.sync_attached()
+
+    # ------------------------------------------------------------------ set-up
+    def _place(self, case, mesh, half) -> None:
+        """Move the build into the world with the suite's placement rule (``bodies.placement``).
+
+        Slope: along the incline, head uphill; suspended: turned to hang along -y
+        from the head; then moved to start_x_m and lifted so that the lowest point
+        (FEM node or box corner) is start_height_m above the surface.  The
+        scenario's random perturbation moves the free nodes only (the attached
+        ones stay on their boxes).
+        """
+        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+        corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
+        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case)
+        q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)  # scipy (x, y, z, w) -> (w, x, y, z)
+        x = mesh.nodes @ R0.T + t
+        sc = case.scenario
+        if sc.perturbation_m > 0:
+            free = ~mesh.attached
+            x[free] += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=(free.sum(), 3))
+        self.fem.x[:] = x
+        self.fem.v[:] = 0.0
+        c = mesh.rigid_centres @ R0.T + t
+        for i in range(self.layout.n_rigid):
+            self.rigid.set_pose(i, c=c[i], q=q0, v=np.zeros(3), w=np.zeros(3))
+
+    @property
+    def x(self) -> np.ndarray:
+        return self.fem.x
+
+    @property
+    def v(self) -> np.ndarray:
+        return self.fem.v
+
+    def sync_attached(self) -> None:
+        """Put the attached nodes on the boxes' current state (after editing the rigid state by hand)."""
+        x_pred = np.ascontiguousarray(self.x[self.fixed])
+        K.place_attached_nodes(self.fixed, self.att_body, self.att_local, self.rigid.c, self.rigid.q,
+                               self.rigid.v, self.rigid.w, self._Rb, self.x, self.v, x_pred, self._residual)
+
+    # ------------------------------------------------------------------ stepping
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code).
+
+        t0 [s] is unused: the body has no time-dependent actuation (passive gait).
+        """
+        fem, s, rb = self.fem, self.solver, self.rigid
+        return K.advance(fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, fem.mass, fem._q_ws,
+                         fem._F_work, fem._H_work,
+                         s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+                         s.fixed, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self.att_body, self.att_local,
+                         rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
+                         rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
+                         self.phys, int(n_steps),
+                         self._f_work, self._b_work, self._f_att, self._x_att, self._x_pred, self._residual,
+                         self._spine, rb.force, rb.torque, self._Rb, self._R, self._Iw, self._corner_of,
+                         self._lin, self._ang, self._resp, self._kn, self._kt, self._target, self._lam, self.acc)
+
+    def _state(self):
+        rb = self.rigid
+        return [a.copy() for a in (self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache,
+                                   self.acc)]
+
+    def _restore(self, saved) -> None:
+        rb = self.rigid
+        for dst, src in zip((self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, self.acc),
+                            saved):
+            dst[...] = src
+
+    def compile(self) -> None:
+        """Trigger (or load from cache) the JIT compilation without changing the state."""
+        saved = self._state()
+        self.advance(0.0, 1)
+        self.energy(0.0)
+        self.momenta()
+        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
+        self._restore(saved)
+
+    @staticmethod
+    def status_text(code: int) -> str:
+        return K.STATUS_TEXT.get(code, f"status {code}")
+
+    # ------------------------------------------------------------------ observation
+    def rotation_matrices(self) -> np.ndarray:
+        """(n_rigid, 3, 3) body-to-world rotations of the boxes."""
+        return self.rigid.rotation_matrices()
+
+    def box_corners(self) -> np.ndarray:
+        """(n_rigid * 8, 3) [m] box corners, corner k of a box at signs (bit 0: +x, bit 1: +y, bit 2: +z)."""
+        rb = self.rigid
+        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+        local = signs[None, :, :] * rb.half_extents[:, None, :]
+        return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", self.rotation_matrices(), local)).reshape(-1, 3)
+
+    @property
+    def body_length_m(self) -> float:
+        """Rest length from the head's front face to the tail's back face, links included [m]."""
+        return self.layout.body_length
+
+    def segment_centers(self) -> np.ndarray:
+        """(2 n_rigid - 1, 3) [m]: rigid 0, link 0, rigid 1, ..., rigid n-1 (box centres, link node means)."""
+        n = self.layout.n_rigid
+        out = np.empty((2 * n - 1, 3))
+        out[0::2] = self.rigid.c
+        out[1::2] = self.x[self.mesh.link_nodes].mean(axis=1)
+        return out
+
+    def centre_of_mass(self) -> np.ndarray:
+        """(3,) [m] of the boxes and the free nodes (the attached nodes' mass is in the boxes)."""
+        rb = self.rigid
+        m_free = self.fem.mass[self.free]
+        return (rb.mass @ rb.c + m_free @ self.x[self.free]) / self.total_mass
+
+    def observe(self, t: float, with_nodes: bool = False) -> Observation:
+        rb = self.rigid
+        R = self.rotation_matrices()
+        half_len = 0.5 * self.layout.rigid_length
+        head = rb.c[0] + R[0][:, 0] * half_len
+        tail = rb.c[-1] - R[-1][:, 0] * half_len
+        com = self.centre_of_mass()
+        self._sample_tets()
+        nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
+        return Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
+                           energy=np.array(self.energy(t)), nodes=nodes)
+
+    def energy(self, t: float = 0.0) -> tuple[float, float, float]:
+        """(kinetic, elastic, gravitational) [J] of the boxes and free nodes; gravity from y = 0.
+
+        Elastic energy of every tet (eq. 6), including those touching attached nodes.
+        """
+        rb = self.rigid
+        e_r = rb.energy(self.gravity)
+        m = self.fem.mass[self.free]
+        v = self.v[self.free]
+        kinetic = float(e_r.kinetic_linear.sum() + e_r.kinetic_rotational.sum() + 0.5 * np.einsum("i,ij,ij->", m, v, v))
+        g = -self.gravity[1]
+        grav = float(g * (rb.mass @ rb.c[:, 1] + m @ self.x[self.free, 1]))
+        return kinetic, self.fem.elastic_energy(), grav
+
+    def momenta(self, origin=None) -> tuple[np.ndarray, np.ndarray]:
+        """Total linear momentum P (3,) [kg m/s] and angular momentum L (3,) [kg m^2/s] about
+        ``origin`` (default: the centre of mass), of the boxes and the free nodes."""
+        rb = self.rigid
+        if origin is None:
+            origin = self.centre_of_mass()
+        out = np.zeros(6)
+        rk.quat_to_matrix(rb.q, self._Rb)
+        K.momenta(self.x, self.v, self.fem.mass, self.free, rb.c, rb.v, rb.w, rb.mass, rb.inertia_body,
+                  self._Rb, np.ascontiguousarray(origin, dtype=np.float64), out)
+        return out[:3].copy(), out[3:].copy()
+
+    # ------------------------------------------------------------------ metrics
+    def _reset_samples(self) -> None:
+        self._min_J = math.inf
+        self._inverted_max = 0
+        self._inverted_last = 0
+        self._max_strain = 0.0
+
+    def tet_quality(self) -> tuple[float, int, float]:
+        """(min J, count of tets with J <= 0, max principal strain max |sigma_i - 1|) of the current state.
+
+        One SVD per tet (``fem.kernels.tet_invariants``), F from the rest shape.
+        """
+        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
+        return (float(self._J.min()), int(np.count_nonzero(self._J <= 0.0)),
+                float(np.abs(self._sigma - 1.0).max()))
+
+    def _sample_tets(self) -> None:
+        """Fold this sample's tet quality into the extrema reported by ``extra_metrics``."""
+        min_J, inverted, strain = self.tet_quality()
+        self._min_J = min(self._min_J, min_J)
+        self._inverted_last = inverted
+        self._inverted_max = max(self._inverted_max, inverted)
+        self._max_strain = max(self._max_strain, strain)
+
+    def coupling_residual(self) -> tuple[float, float]:
+        """(max, mean) [m] over all steps and attached nodes of |x_p + dt v_p - x_p(rigid, n+1)|."""
+        acc = self.acc
+        mean = acc[K.ACC_RES_SUM] / acc[K.ACC_RES_COUNT] if acc[K.ACC_RES_COUNT] > 0 else 0.0
+        return float(acc[K.ACC_RES_MAX]), float(mean)
+
+    def extra_metrics(self) -> dict[str, float]:
+        """Tet quality over the observation samples and the coupling residual over all steps."""
+        res_max, res_mean = self.coupling_residual()
+        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max),
+                "inverted_elements_final": float(self._inverted_last), "max_strain": self._max_strain,
+                "coupling_residual_max_m": res_max, "coupling_residual_mean_m": res_mean}
+
+    def contact_fraction_mean(self) -> float:
+        """Mean fraction of contact points (free nodes and box corners) within the contact distance."""
+        return float(self.acc[K.ACC_CONTACT_SUM] / max(self.acc[K.ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        """Deepest free node (after Miller's collision, before the push-out) or box corner [m]."""
+        return float(self.acc[K.ACC_MAX_PEN])
+
+
+register_body(BodySpec(
+    name="hybrid",
+    description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered coupling",
+    config_cls=HybridConfig,
+    factory=BodyHybrid,
+    capabilities=frozenset({"friction:miller", "friction:coulomb", "friction:stick"}),
+    default_dt=default_dt,
+))

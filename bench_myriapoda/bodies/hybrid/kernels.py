@@ -1,0 +1,350 @@
+"""Numba kernels of the hybrid body: rigid exoskeletal segments joined by FEM links.
+
+The myriapod paper (Fang, Jiang & Terzopoulos 2013, Sec. 3) couples its rigid
+segments and its fixed-corotational deformable segments (App. A) with a
+staggered scheme of three steps.  ``advance`` runs many time steps of it inside
+one call; one step, with n the state at the start of the step:
+
+1. FEM step with the attached ("fixed") nodes prescribed by the rigid bodies at
+   state n: positions on the bodies, velocities v_c + w x r (set at the end of
+   the previous step, or at set-up).  Free nodes: elastic force f_E(x^n) plus
+   gravity M g (eq. 14, PAPER-NOTES), the semi-implicit velocity solve of eq. 14
+   with the prescribed fixed-node velocities entering through D_fp, then the
+   suite's ground contact of a point mass (``contact_kernels``: friction, then
+   Miller's path collision), which also performs x += dt v (eq. 15).  The force
+   the mesh exerts on each attached node is f_E(x^n)_p - (D v^{n+1})_p with the
+   same prescribed v_p used in the solve.  Because D has zero row and column
+   sums and the elastic forces of every tet sum to zero (eq. 10), the internal
+   forces of mesh and attachments cancel exactly: the coupling neither creates
+   nor destroys linear momentum.
+2. Those forces act on the rigid bodies, as force and torque about their
+   centres applied at the attached nodes' positions at state n (Sec. 3 step 2,
+   ``rigid_kernels.accumulate_point_forces``), plus gravity; one rigid step
+   with terrain contact and Coulomb friction (``rigid_kernels._step_body``:
+   kick, sequential-impulse corner contact, drift, position projection).
+   Kinematic bodies (a held head) are not integrated; forces on them are lost
+   to whatever holds them.
+3. The attached nodes are moved onto the rigid bodies' new state n+1 (Sec. 3
+   step 3), with velocities v_c + w x r.  The coupling residual of a node is the
+   distance between where step 1 would have moved it, x_p + dt v_p, and where
+   its rigid body puts it; its maximum and mean over all nodes and steps are
+   accumulated in ``acc``.
+
+Order.  Sec. 6 lists the rigid segments' update before the deformable
+segments'; here the FEM step comes first within a step because the rigid step
+needs the mesh's reactions at state n, and those are only exact (cancelling)
+when computed with the velocities the FEM solve prescribed.  Over many steps
+it is the same cycle (FEM, rigid, attach, FEM, ...), started at the FEM step.
+
+The lumped masses of the attached nodes (eq. 12) are never used: the rigid body
+carries that material, its configured mass includes it, and momenta and
+energies count rigid bodies and free nodes only.
+
+Blow-ups are returned as status codes (non-finite state, a point faster than a
+limit, a node or box corner deeper inside the terrain than a limit), never
+raised.  Nothing is allocated inside the step loop: all scratch comes from the
+caller.  ``error_model="numpy"`` everywhere (a division by zero gives inf/nan,
+caught by the checks).
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ...world.terrain_kernels import signed_distance
+from .. import rigid_kernels as rk
+from ..contact_kernels import collide_path, contact_friction
+from ..fem.kernels import elastic_forces, semi_implicit_velocity
+from ..friction_kernels import CONTACT_DISTANCE
+from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
+                           RUNAWAY_SPEED, STATUS_TEXT)
+from .. import step_status as S
+
+# Scalar parameter vector layout (``phys``, float64).
+(DT, R_N, R_T, MAX_SPEED, MAX_PEN, RIGID_MU, RIGID_RESTITUTION, BOUNCE_THRESHOLD,
+ VEL_ITERATIONS, VEL_TOLERANCE, POS_ITERATIONS, POS_BETA, SLOP) = range(13)
+N_PHYS = 13
+
+# Status codes and the shared statistics (contact fraction sum, steps, deepest
+# penetration) as every body's kernel; the hybrid's own statistics follow them.
+(ACC_RES_MAX, ACC_RES_SUM, ACC_RES_COUNT, ACC_SLOW_TETS) = range(S.N_ACC, S.N_ACC + 4)
+N_ACC = S.N_ACC + 4
+
+N_CORNERS = rk.N_CORNERS
+
+
+@njit(cache=True, error_model="numpy")
+def place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual):
+    """Put the attached nodes on their rigid bodies (Sec. 3 step 3).
+
+    fixed: (n_fixed,) node ids; att_body: (n_fixed,) rigid body of each;
+    att_local: (n_fixed, 3) [m] body-frame coordinates; c (n_rigid, 3) [m],
+    q (n_rigid, 4), vr (n_rigid, 3) [m/s], w (n_rigid, 3) [rad/s]: rigid state.
+    Rb: (n_rigid, 3, 3) scratch, OVERWRITTEN with the bodies' rotation matrices.
+    OVERWRITES x[fixed] (n_nodes, 3) [m] with c + R local and v[fixed] [m/s] with
+    v_c + w x (x - c) (``rigid_kernels.point_velocities``), and residual
+    (n_fixed,) [m] with |x_new - x_pred| for the predicted positions x_pred
+    (n_fixed, 3) [m].
+    (Same as ``rigid_kernels.body_points_to_world``, with each body's rotation
+    built once and without its per-call scratch allocation.)
+    """
+    rk.quat_to_matrix(q, Rb)
+    for a in range(fixed.shape[0]):
+        i = att_body[a]
+        p = fixed[a]
+        lx, ly, lz = att_local[a, 0], att_local[a, 1], att_local[a, 2]
+        rx = Rb[i, 0, 0] * lx + Rb[i, 0, 1] * ly + Rb[i, 0, 2] * lz
+        ry = Rb[i, 1, 0] * lx + Rb[i, 1, 1] * ly + Rb[i, 1, 2] * lz
+        rz = Rb[i, 2, 0] * lx + Rb[i, 2, 1] * ly + Rb[i, 2, 2] * lz
+        px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+        dx, dy, dz = px - x_pred[a, 0], py - x_pred[a, 1], pz - x_pred[a, 2]
+        residual[a] = math.sqrt(dx * dx + dy * dy + dz * dz)
+        x[p, 0], x[p, 1], x[p, 2] = px, py, pz
+        # v_c + w x r (Baraff 1997 I, Sec. 2.5)
+        v[p, 0] = vr[i, 0] + w[i, 1] * rz - w[i, 2] * ry
+        v[p, 1] = vr[i, 1] + w[i, 2] * rx - w[i, 0] * rz
+        v[p, 2] = vr[i, 2] + w[i, 0] * ry - w[i, 1] * rx
+
+
+@njit(cache=True, error_model="numpy")
+def link_spines(c, spine):
+    """Unit spine vector of every link: from the rigid centre behind it to the one ahead.
+
+    c: (n_rigid, 3) [m]; OVERWRITES spine (n_rigid - 1, 3).  The friction models
+    (Miller's rule, anisotropic Coulomb) need the direction toward the head at a
+    node; for the nodes of link k that is c[k] - c[k + 1] (PAPER-NOTES: index 0
+    is the head).
+    """
+    for k in range(spine.shape[0]):
+        sx = c[k, 0] - c[k + 1, 0]
+        sy = c[k, 1] - c[k + 1, 1]
+        sz = c[k, 2] - c[k + 1, 2]
+        n = math.sqrt(sx * sx + sy * sy + sz * sz)
+        if n > 0.0:
+            spine[k, 0], spine[k, 1], spine[k, 2] = sx / n, sy / n, sz / n
+        else:
+            spine[k, 0], spine[k, 1], spine[k, 2] = 1.0, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
+            perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+            fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
+            c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
+            gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
+            f_work, b_work, f_att, x_att, x_pred, residual, spine, force, torque, Rb,
+            R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc):
+    """Advance the coupled body ``n_steps`` staggered steps (module docstring); return (steps, status).
+
+    FEM (App. A), from ``FEMSystem`` and its ``solver(dt)`` for the mask of
+    attached nodes: x, v (n_nodes, 3) [m], [m/s], UPDATED in place (attached
+    rows are rewritten from the rigid bodies every step); tets, Dm_inv, coef,
+    q_ws, F_work, H_work as in ``fem.kernels.elastic_forces`` (q_ws UPDATED);
+    mass (n_nodes,) [kg] lumped; perm, sky_*, fp_* as in
+    ``semi_implicit_velocity``; fixed (n_fixed,) attached node ids and pf_*
+    the CSR of D's rows of those nodes [N s/m]; node_link (n_nodes,) link of
+    each node; att_body (n_fixed,), att_local (n_fixed, 3) [m] body and
+    body-frame position of each attached node (in ``fixed`` order).
+    Rigid boxes (``rigid_kernels`` conventions): c, q, vr, w, impulse_cache
+    UPDATED; rmass (n_rigid,) [kg], inertia_body (n_rigid, 3) [kg m^2],
+    half_extents (n_rigid, 3) [m], kinematic (n_rigid,) bool.
+    World: gravity (3,) [m/s^2]; terr_kind, terr (``terrain_kernels``);
+    fric_model, fric (``friction_kernels.friction_params``) for the free nodes;
+    phys (N_PHYS,) scalars (layout at the top of this module: dt [s], Miller's
+    r_n, r_t, blow-up limits [m/s] and [m], the boxes' Coulomb mu,
+    restitution and contact-solver settings as in ``rigid_kernels.advance``).
+    Scratch (overwritten): f_work (n_nodes, 3), b_work (n_free, 3), f_att,
+    x_att, x_pred (n_fixed, 3), residual (n_fixed,), spine (n_links, 3), force,
+    torque (n_rigid, 3), Rb (n_rigid, 3, 3), and the contact scratch of
+    ``rigid_kernels._solve_contacts`` (R, Iw (3, 3); corner_of (8,) int64;
+    lin, ang, resp (8, 3, 3); kn, target (8,); kt (8, 6); lam (8, 3)).
+    acc (N_ACC,) ACCUMULATES the statistics (residual max / sum / count,
+    deepest penetration, contact fraction sum, steps, slow-path tets).
+    On a blow-up the step that produced it is completed and its status code
+    returned with the number of steps including it.
+    """
+    n_fixed = fixed.shape[0]
+    n_free = perm.shape[0]
+    n_rigid = c.shape[0]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    max_pen = phys[MAX_PEN]
+    vmax = phys[MAX_SPEED]
+    vmax2 = vmax * vmax
+    mu_r = phys[RIGID_MU]
+    e_r = phys[RIGID_RESTITUTION]
+    bounce = phys[BOUNCE_THRESHOLD]
+    n_vel = int(phys[VEL_ITERATIONS])
+    vel_tol = phys[VEL_TOLERANCE]
+    n_pos = int(phys[POS_ITERATIONS])
+    beta = phys[POS_BETA]
+    slop = phys[SLOP]
+    contact_dist = fric[CONTACT_DISTANCE]
+    gx, gy, gz = gravity[0], gravity[1], gravity[2]
+    n_points = n_free + N_CORNERS * n_rigid
+    for step in range(n_steps):
+        status = OK
+        # ---------------- (1) FEM step, attached nodes prescribed at rigid state n
+        f_work[:, :] = 0.0
+        acc[ACC_SLOW_TETS] += elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        for a in range(n_fixed):
+            p = fixed[a]
+            f_att[a, 0] = f_work[p, 0]
+            f_att[a, 1] = f_work[p, 1]
+            f_att[a, 2] = f_work[p, 2]
+            x_att[a, 0] = x[p, 0]
+            x_att[a, 1] = x[p, 1]
+            x_att[a, 2] = x[p, 2]
+            # Where eq. 15 would take the node if it were simulated (for the residual).
+            x_pred[a, 0] = x[p, 0] + dt * v[p, 0]
+            x_pred[a, 1] = x[p, 1] + dt * v[p, 1]
+            x_pred[a, 2] = x[p, 2] + dt * v[p, 2]
+        # Gravity force M g on the free nodes (eq. 14: g is a force, PAPER-NOTES).
+        for k in range(n_free):
+            i = perm[k]
+            m = mass[i]
+            f_work[i, 0] += m * gx
+            f_work[i, 1] += m * gy
+            f_work[i, 2] += m * gz
+        semi_implicit_velocity(v, mass, f_work, dt, perm, sky_first, sky_ptr, sky_L,
+                               fp_ptr, fp_col, fp_val, b_work)
+        # Damping reaction on the attached nodes, -(D v^{n+1})_p, with the same
+        # prescribed v_p the solve used: total internal force exactly zero.
+        for a in range(n_fixed):
+            for e in range(pf_ptr[a], pf_ptr[a + 1]):
+                j = pf_col[e]
+                d = pf_val[e]
+                f_att[a, 0] -= d * v[j, 0]
+                f_att[a, 1] -= d * v[j, 1]
+                f_att[a, 2] -= d * v[j, 2]
+        # Ground contact of the free nodes (the suite's point-mass contact) and eq. 15.
+        link_spines(c, spine)
+        n_contact = 0
+        for k in range(n_free):
+            i = perm[k]
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+                s = node_link[i]
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[s, 0], spine[s, 1], spine[s, 2])
+            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > max_pen:
+                    status = DEEP_PENETRATION
+            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = NONFINITE
+            elif vx * vx + vy * vy + vz * vz > vmax2:
+                status = RUNAWAY_SPEED
+
+        # ---------------- (2) rigid step under the mesh's forces (Sec. 3 step 2)
+        force[:, :] = 0.0
+        torque[:, :] = 0.0
+        rk.accumulate_point_forces(att_body, x_att, f_att, c, force, torque)
+        for i in range(n_rigid):
+            if kinematic[i]:
+                continue
+            rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
+                          impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
+                          n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
+                          kn, kt, target, lam)
+
+        # ---------------- (3) attached nodes follow the rigid bodies (Sec. 3 step 3)
+        place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+        for a in range(n_fixed):
+            r = residual[a]
+            acc[ACC_RES_SUM] += r
+            if r > acc[ACC_RES_MAX]:
+                acc[ACC_RES_MAX] = r
+        acc[ACC_RES_COUNT] += n_fixed
+
+        # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
+        # corner depth (after the position projection) and contact count.
+        for i in range(n_rigid):
+            hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
+            s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
+                 + w[i, 0] + w[i, 1] + w[i, 2] + q[i, 0] + q[i, 1] + q[i, 2] + q[i, 3])
+            if not math.isfinite(s):
+                status = NONFINITE
+                continue
+            speed = math.sqrt(vr[i, 0] ** 2 + vr[i, 1] ** 2 + vr[i, 2] ** 2)
+            spin = math.sqrt(w[i, 0] ** 2 + w[i, 1] ** 2 + w[i, 2] ** 2)
+            if speed + spin * math.sqrt(hx * hx + hy * hy + hz * hz) > vmax:
+                status = RUNAWAY_SPEED
+            for corner in range(N_CORNERS):
+                sx = hx if (corner & 1) else -hx
+                sy = hy if (corner & 2) else -hy
+                sz = hz if (corner & 4) else -hz
+                px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
+                py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
+                pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
+                phi = signed_distance(terr_kind, terr, px, py, pz)
+                if phi < contact_dist:
+                    n_contact += 1
+                if -phi > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = -phi
+                if -phi > max_pen:
+                    status = DEEP_PENETRATION
+        acc[ACC_CONTACT_SUM] += n_contact / n_points
+        acc[ACC_STEPS] += 1.0
+        if status != OK:
+            return step + 1, status
+    return n_steps, OK
+
+
+@njit(cache=True, error_model="numpy")
+def momenta(x, v, mass, free, c, vr, w, rmass, inertia_body, Rb, origin, out):
+    """Linear and angular momentum of the simulated masses (rigid boxes and free nodes).
+
+    x, v (n_nodes, 3) [m], [m/s]; mass (n_nodes,) [kg]; free (n_free,) node ids
+    (attached nodes are carried by the rigid bodies and not counted); rigid
+    c, vr, w (n_rigid, 3), rmass (n_rigid,), inertia_body (n_rigid, 3), Rb
+    (n_rigid, 3, 3) the current rotation matrices; origin (3,) [m] the point
+    the angular momentum is taken about.  OVERWRITES out (6,): P [kg m/s]
+    then L [kg m^2/s] = sum (x - o) x m v + sum R I_body R^T w.
+    """
+    for k in range(6):
+        out[k] = 0.0
+    ox, oy, oz = origin[0], origin[1], origin[2]
+    for k in range(free.shape[0]):
+        i = free[k]
+        m = mass[i]
+        px, py, pz = m * v[i, 0], m * v[i, 1], m * v[i, 2]
+        rx, ry, rz = x[i, 0] - ox, x[i, 1] - oy, x[i, 2] - oz
+        out[0] += px
+        out[1] += py
+        out[2] += pz
+        out[3] += ry * pz - rz * py
+        out[4] += rz * px - rx * pz
+        out[5] += rx * py - ry * px
+    for i in range(c.shape[0]):
+        m = rmass[i]
+        px, py, pz = m * vr[i, 0], m * vr[i, 1], m * vr[i, 2]
+        rx, ry, rz = c[i, 0] - ox, c[i, 1] - oy, c[i, 2] - oz
+        out[0] += px
+        out[1] += py
+        out[2] += pz
+        out[3] += ry * pz - rz * py
+        out[4] += rz * px - rx * pz
+        out[5] += rx * py - ry * px
+        # spin: R I_body R^T w
+        b0 = Rb[i, 0, 0] * w[i, 0] + Rb[i, 1, 0] * w[i, 1] + Rb[i, 2, 0] * w[i, 2]
+        b1 = Rb[i, 0, 1] * w[i, 0] + Rb[i, 1, 1] * w[i, 1] + Rb[i, 2, 1] * w[i, 2]
+        b2 = Rb[i, 0, 2] * w[i, 0] + Rb[i, 1, 2] * w[i, 1] + Rb[i, 2, 2] * w[i, 2]
+        b0 *= inertia_body[i, 0]
+        b1 *= inertia_body[i, 1]
+        b2 *= inertia_body[i, 2]
+        out[3] += Rb[i, 0, 0] * b0 + Rb[i, 0, 1] * b1 + Rb[i, 0, 2] * b2
+        out[4] += Rb[i, 1, 0] * b0 + Rb[i, 1, 1] * b1 + Rb[i, 1, 2] * b2
+        out[5] += Rb[i, 2, 0] * b0 + Rb[i, 2, 1] * b1 + Rb[i, 2, 2] * b2
