@@ -148,3 +148,33 @@ def test_bad_fem_resolution_is_bad_input(capsys, tmp_path, monkeypatch):
     code = main(["run", "--creature", "worm", "--body", "fem", "--scenario", "flat", "--set", "body.resolution=1"])
     err = capsys.readouterr().err
     assert code == 2 and "body.resolution" in err
+
+
+def test_fem_body_from_a_closed_surface_is_meshed_once_and_crawls(tmp_path, monkeypatch):
+    from bench_myriapoda.bodies.fem import mesh as M
+    monkeypatch.setenv("BENCH_MYRIAPODA_CACHE", str(tmp_path / "cache"))
+    case = resolve_case("worm", "fem", "flat", duration=6.0, overrides=["body.mesh=capsule",
+                                                                        "body.mesh_edge_length_fac=0.08"])
+    body = BodyFEM(case)
+    assert set(np.unique(body.tet_seg)) == set(range(case.creature.segments))  # every segment has tets
+    extent = body.rest.max(axis=0) - body.rest.min(axis=0)
+    target = np.array([case.creature.body_length_m, case.creature.height_m, case.creature.width_m])
+    # fTetWild keeps the surface within an envelope of 1e-3 of the bounding-box diagonal
+    np.testing.assert_allclose(extent, target, atol=2e-3 * np.linalg.norm(target))
+
+    def no_tetwild(*a, **k):
+        raise AssertionError("fTetWild ran again: the cache missed")
+    monkeypatch.setattr(M, "_run_pytetwild", no_tetwild)
+    r = run_case(case)
+    assert r.status == "ok"
+    assert r.metrics["inverted_elements_max"] == 0
+    assert r.metrics["speed_m_per_s"] > 0.01  # it crawls forward
+
+
+def test_unloadable_surface_is_bad_input(capsys, tmp_path, monkeypatch):
+    from bench_myriapoda.cli import main
+    monkeypatch.chdir(tmp_path)
+    code = main(["run", "--creature", "worm", "--body", "fem", "--scenario", "flat", "--set",
+                 f"body.mesh={tmp_path / 'missing.stl'}"])
+    err = capsys.readouterr().err
+    assert code == 2 and "body.mesh" in err and "missing.stl" in err

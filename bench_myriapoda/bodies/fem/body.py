@@ -20,6 +20,7 @@ undulate.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,7 +35,7 @@ from ..observation import Observation
 from ..placement import place_points
 from . import body_kernels as BK
 from . import kernels as FK
-from .mesh import chain_grid, lame_parameters
+from .mesh import chain_grid, signed_volumes, tetrahedralize_surface
 from .system import DT_PAPER, FEMSystem
 
 FROM_CREATURE = -1.0
@@ -54,11 +55,55 @@ class FEMConfig:
                                doc="the paper's '3 x 3 x 3 resolution' read as nodes (default) or cells")
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tetrahedra per hexahedral cell")
     dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
+    mesh: str = rng("grid", doc="'grid' (structured boxes), 'capsule' (a smooth procedural body), "
+                                "or a path to a closed surface trimesh loads (tetrahedralized with fTetWild)")
+    mesh_edge_length_fac: float = rng(0.06, gt=0.0, le=1.0,
+                                      doc="fTetWild target edge length as a fraction of the bounding-box diagonal")
 
     def __post_init__(self):
+        from ...core.errors import InputError
         if self.resolution_unit == "nodes" and self.resolution < 2:
-            from ...core.errors import InputError
             raise InputError("body", "body.resolution", f"{self.resolution} nodes per edge give no cell; must be >= 2")
+        if self.mesh not in ("grid", "capsule") and not os.path.isfile(self.mesh):
+            raise InputError(self.mesh, "body.mesh", "no such file; use 'grid', 'capsule' or the path of a closed "
+                                                     "surface mesh trimesh can load")
+
+
+def surface_body_mesh(cfg: FEMConfig, n_seg: int, L: float, w: float, h: float):
+    """Tetrahedralize a closed surface scaled to the body's extents: head at x = 0, along -x.
+
+    The surface is ``capsule`` (trimesh's, a smooth worm-like body) or any file
+    trimesh loads; its bounding box is mapped onto [-n_seg L, 0] x [0, h] x
+    [-w/2, w/2] (its longest axis becomes the body axis).  fTetWild runs once per
+    surface and parameter set (disk cache, ``mesh.tetrahedralize_surface``).
+    Returns nodes (n, 3) [m], tets (m, 4), tet_segment (m,).
+    """
+    import trimesh
+
+    from ...core.errors import InputError
+    if cfg.mesh == "capsule":
+        surf = trimesh.creation.capsule(height=1.0, radius=0.5, count=(16, 16))
+    else:
+        try:
+            surf = trimesh.load_mesh(cfg.mesh, force="mesh")
+        except (OSError, ValueError) as exc:
+            raise InputError(str(cfg.mesh), "body.mesh", f"cannot load a surface mesh ({exc})") from None
+        if not surf.is_watertight:
+            raise InputError(str(cfg.mesh), "body.mesh", "the surface is not closed (watertight)")
+    v = np.asarray(surf.vertices, dtype=float)
+    order = np.argsort(-(v.max(axis=0) - v.min(axis=0)))  # longest extent -> x, then y, then z
+    v = v[:, order]
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    target_lo = np.array([-n_seg * L, 0.0, -0.5 * w])
+    target_hi = np.array([0.0, h, 0.5 * w])
+    v = target_lo + (v - lo) / (hi - lo) * (target_hi - target_lo)
+    faces = np.asarray(surf.faces)
+    if np.linalg.det(np.eye(3)[order]) < 0:
+        faces = faces[:, ::-1]  # an odd axis permutation mirrors the surface: keep it outward
+    nodes, tets = tetrahedralize_surface((v, faces), edge_length_fac=cfg.mesh_edge_length_fac)
+    cx = nodes[tets].mean(axis=1)[:, 0]
+    tet_seg = np.clip(np.floor(-cx / L).astype(np.int64), 0, n_seg - 1)
+    return nodes, tets, tet_seg
 
 
 def default_dt(cfg: FEMConfig) -> float:
@@ -75,9 +120,14 @@ class BodyFEM:
         cfg: FEMConfig = case.body
         self.case = case
         n_seg, L, w, h = cre.segments, cre.segment_length_m, cre.width_m, cre.height_m
-        nodes, tets, tet_seg = chain_grid(n_seg, L, (h, w), cfg.resolution, cfg.resolution_unit, cfg.tets_per_cell)
-        nodes[:, 0] -= n_seg * L  # head face at x = 0, body along -x (as the lattice)
-        rho = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else cre.mass_kg / (n_seg * L * w * h)
+        if cfg.mesh == "grid":
+            nodes, tets, tet_seg = chain_grid(n_seg, L, (h, w), cfg.resolution, cfg.resolution_unit,
+                                              cfg.tets_per_cell)
+            nodes[:, 0] -= n_seg * L  # head face at x = 0, body along -x (as the lattice)
+        else:
+            nodes, tets, tet_seg = surface_body_mesh(cfg, n_seg, L, w, h)
+        volume = float(np.sum(signed_volumes(nodes, tets)))
+        rho = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else cre.mass_kg / volume
         self.density = rho
         self.system = sysm = FEMSystem(nodes, tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio, rho=rho,
                                        gamma=cfg.damping_gamma)
@@ -93,8 +143,10 @@ class BodyFEM:
         members = [np.unique(tets[tet_seg == i]) for i in range(n_seg)]
         self.seg_ptr = np.concatenate([[0], np.cumsum([len(m) for m in members])]).astype(np.int64)
         self.seg_nodes = np.concatenate(members).astype(np.int64)
-        self.head_nodes = np.flatnonzero(np.isclose(nodes[:, 0], 0.0))
-        self.tail_nodes = np.flatnonzero(np.isclose(nodes[:, 0], -n_seg * L))
+        # the end faces (a smooth surface has no flat end: the nodes within 2 % of a body length)
+        end_band = 1e-9 if cfg.mesh == "grid" else 0.02 * n_seg * L
+        self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
+        self.tail_nodes = np.flatnonzero(nodes[:, 0] <= nodes[:, 0].min() + end_band)
 
         self.waves = wave_table(case.gait, cre.body_length_m, passive=case.scenario.passive)
         self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
