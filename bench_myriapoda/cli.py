@@ -58,6 +58,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     run.add_argument("--no-store", action="store_true", help="do not record the run in the results database")
     run.add_argument("--strict", action="store_true", help="exit 1 when the run is unstable")
+    run.add_argument("--plot-gait", metavar="FILE.png", help="draw the gait diagram (legs x time, paper Fig. 10)")
 
     sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
     _case_arguments(sd)
@@ -181,14 +182,27 @@ def cmd_run(args) -> int:
 
     if args.record and not args.record.endswith(".npz"):
         raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
+    if args.plot_gait and not args.plot_gait.endswith(".png"):
+        raise InputError("--plot-gait", None, f"{args.plot_gait!r}: the file name must end in .png")
     case = _resolve(args)
+    if args.plot_gait and not case.creature.legs_per_segment:
+        raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
     bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(), label=f"{args.creature}/{args.body}")
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record))
     bar.close()
     if not args.no_store:
         record_run(args.store or DEFAULT_STORE, result, command="run")
     if args.record and result.series is not None:
-        save_npz(Path(args.record), result.series, case.to_dict())
+        extra = {}
+        if "leg_timeline" in result.extra:
+            extra = dict(zip(("leg_t", "leg_states", "leg_tips"), result.extra["leg_timeline"]))
+        save_npz(Path(args.record), result.series, case.to_dict(), extra)
+    if args.plot_gait and "leg_timeline" in result.extra:
+        from .report.gait_diagram import plot_gait_diagram
+        t, states, _ = result.extra["leg_timeline"]
+        if len(t):
+            plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
+                              title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
     if args.json:
         print(json.dumps(result.to_json_dict()))
     else:

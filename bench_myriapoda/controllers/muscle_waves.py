@@ -63,7 +63,9 @@ def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) ->
     omega = 2.0 * math.pi * gait.frequency_hz
     phase = math.radians(gait.phase_deg)
     profile = PROFILE_RAISED if gait.profile == "raised" else PROFILE_SINE
-    main = {"rectilinear": AXIAL, "lateral-undulation": LATERAL, "sidewinding": LATERAL, "arching": DORSAL}[gait.name]
+    main = {"rectilinear": AXIAL, "lateral-undulation": LATERAL, "sidewinding": LATERAL, "arching": DORSAL}.get(gait.name)
+    if main is None:  # a gait without muscles (legs, or none at all)
+        return table
     table[main] = (gait.amplitude, k, omega, phase, profile)
     if gait.name == "sidewinding":
         table[DORSAL] = (gait.vertical_amplitude, k, omega, phase + math.radians(gait.vertical_phase_deg), PROFILE_SINE)

@@ -25,12 +25,13 @@ from typing import Any, Iterable, Mapping
 from . import registry
 from .errors import InputError
 from .paths import models_dir, scenarios_dir
-from .schema import (SECTIONS, TOP_LEVEL_SCALARS, CollisionConfig, CreatureConfig, FrictionConfig, GaitConfig,
-                     MetricsConfig, RecordConfig, ScenarioConfig, StabilityConfig, check_range, check_section,
-                     coerce_value, field_types)
+from .schema import (SECTIONS, TOP_LEVEL_SCALARS, CollisionConfig, ControllerConfig, CreatureConfig, FrictionConfig,
+                     GaitConfig, LegsConfig, MetricsConfig, RecordConfig, ScenarioConfig, StabilityConfig, check_range,
+                     check_section, coerce_value)
 
-CREATURE_FILE_TABLES = {"creature", "friction", "collision", "gaits", "bodies", "record", "stability", "metrics"}
-SCENARIO_FILE_TABLES = {"scenario", "friction", "collision", "record", "stability", "metrics"}
+CREATURE_FILE_TABLES = {"creature", "legs", "controller", "friction", "collision", "gaits", "bodies", "record",
+                        "stability", "metrics"}
+SCENARIO_FILE_TABLES = {"scenario", "controller", "friction", "collision", "record", "stability", "metrics"}
 NAME_KEYS = {"creature.name": "--creature", "body.name": "--body", "gait.name": "--gait", "scenario.name": "--scenario"}
 
 
@@ -39,6 +40,8 @@ class Case:
     """A fully resolved case: everything a run needs, nothing implicit."""
 
     creature: CreatureConfig
+    legs: LegsConfig
+    controller: ControllerConfig
     body: Any
     gait: GaitConfig
     friction: FrictionConfig
@@ -54,6 +57,8 @@ class Case:
     def to_dict(self) -> dict[str, Any]:
         d = dataclasses.asdict(self)
         d["creature"]["gaits"] = list(d["creature"]["gaits"])
+        for k in ("control_times_s", "control_speed_m_s", "control_turn_rate_deg_s"):
+            d["scenario"][k] = list(d["scenario"][k])
         return d
 
     def case_hash(self) -> str:
@@ -117,7 +122,7 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
     if "creature" not in data:
         raise InputError(src, "creature", "missing table [creature]")
     check_section(CreatureConfig, data["creature"], src, "creature")
-    for table in ("friction", "collision", "record", "stability", "metrics"):
+    for table in ("legs", "controller", "friction", "collision", "record", "stability", "metrics"):
         if table in data:
             check_section(SECTIONS[table], data[table], src, table)
     for gait, table in data.get("gaits", {}).items():
@@ -225,6 +230,9 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     if body not in cdata.get("bodies", {}):
         raise InputError("--body", None, f"unsupported combination: creature {cre['name']!r} has no {body!r} body "
                                          f"model; available: {', '.join(sorted(cdata.get('bodies', {}))) or 'none'}")
+    if "legs" in registry.GAITS[gait].requires and cre.get("legs_per_segment", 0) == 0:
+        raise InputError("--gait", None, f"unsupported combination: gait {gait!r} needs legs and creature "
+                                         f"{cre['name']!r} has none")
     missing = registry.GAITS[gait].requires - spec.capabilities
     if missing:
         raise InputError("--gait", None, f"unsupported combination: body {body!r} cannot honour gait {gait!r} "
@@ -236,8 +244,12 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
         "gait": {"name": gait, **cdata.get("gaits", {}).get(gait, {})},
         "scenario": {"name": spath.stem, **sdata["scenario"]},
     }
-    for table in ("friction", "collision", "record", "stability", "metrics"):
+    for table in ("legs", "controller", "friction", "collision", "record", "stability", "metrics"):
         layers[table] = {**cdata.get(table, {}), **sdata.get(table, {})}
+    sc = layers["scenario"]
+    lens = {k: len(sc[k]) for k in ("control_times_s", "control_speed_m_s", "control_turn_rate_deg_s") if k in sc}
+    if len(set(lens.values())) > 1:
+        raise InputError(str(spath), "scenario.control_*", f"the control schedule lists differ in length: {lens}")
     friction_model = layers["friction"].get("model", FrictionConfig.model)
     if f"friction:{friction_model}" not in spec.capabilities:
         raise InputError(str(cpath), "friction.model", f"unsupported combination: body {body!r} has no "
@@ -259,7 +271,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     body_cfg = spec.config_cls(**layers["body"])
     scen: ScenarioConfig = sections["scenario"]
     case = Case(
-        creature=sections["creature"], body=body_cfg, gait=sections["gait"], friction=sections["friction"],
+        creature=sections["creature"], legs=sections["legs"], controller=sections["controller"], body=body_cfg, gait=sections["gait"], friction=sections["friction"],
         collision=sections["collision"], scenario=scen, record=sections["record"],
         stability=sections["stability"], metrics=sections["metrics"],
         dt=layers.get("dt", spec.default_dt(body_cfg)),

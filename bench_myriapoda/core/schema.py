@@ -35,6 +35,7 @@ class CreatureConfig:
     width_m: float = rng(0.05, gt=0.0, doc="segment width (side to side) [m]")
     height_m: float = rng(0.05, gt=0.0, doc="segment height (belly to back) [m]")
     mass_kg: float = rng(1.0, gt=0.0, doc="total body mass [kg]")
+    legs_per_segment: int = rng(0, choices=(0, 2), doc="0 (legless) or 2 (a left/right pair per rigid segment)")
     default_gait: str = rng("", doc="gait used when --gait is not given")
     gaits: tuple = rng((), doc="gaits this creature supports")
 
@@ -70,6 +71,54 @@ class GaitConfig:
     @property
     def period_s(self) -> float:
         return 1.0 / self.frequency_hz
+
+
+@dataclass(frozen=True)
+class LegsConfig:
+    """Kinematic legs of a myriapod (paper Sec. 3, 4.2, Fig. 9): massless, one pair per rigid segment.
+
+    A leg is a femur OM and a tibia MP with a fixed knee bend gamma; its root O
+    sits at (root_x, root_y, +-root_z) in the segment frame (x forward, y up, z right).
+    """
+
+    femur_m: float = rng(1.0, gt=0.0, doc="|OM| [m]")
+    tibia_m: float = rng(1.2, gt=0.0, doc="|MP| [m]")
+    gamma_deg: float = rng(28.6479, ge=0.0, lt=180.0, doc="fixed knee bend gamma [deg]")
+    root_x_m: float = rng(0.0, doc="root position along the segment [m]")
+    root_y_m: float = rng(0.0, doc="root height in the segment frame [m]")
+    root_z_m: float = rng(0.5, gt=0.0, doc="root distance from the midline [m]")
+    contact_distance_m: float = rng(0.01, ge=0.0, doc="a tip this close to the surface touches it [m]")
+
+
+@dataclass(frozen=True)
+class ControllerConfig:
+    """The decentralized leg controller (paper Sec. 4): Switcher poses, Targeter gains, head."""
+
+    wave_direction: str = rng("retrograde", choices=("retrograde", "direct"),
+                              doc="previous leg: anterior (retrograde, centipedes) or posterior (direct, millipedes)")
+    theta_aep_deg: float = rng(28.6479, doc="theta_M of the anterior extreme pose [deg]")
+    theta_pep_deg: float = rng(-28.6479, doc="theta_m of the posterior extreme pose [deg]")
+    alpha_s_deg: float = rng(17.1887, doc="alpha_S of AEP and PEP [deg]")
+    beta_s_deg: float = rng(74.4845, doc="beta_S of AEP and PEP [deg]")
+    alpha_mup_deg: float = rng(34.3775, doc="alpha_M of the middle up pose [deg]")
+    alpha_mdp_deg: float = rng(-22.9183, doc="alpha_m of the middle down pose [deg]")
+    adjust_d_theta_deg: float = rng(-17.1887, doc="theta_T - theta_M of the ADJUST target [deg]")
+    adjust_d_alpha_deg: float = rng(17.1887, doc="alpha_T - alpha_S [deg]")
+    adjust_d_beta_deg: float = rng(-45.8366, doc="beta_T - beta_S [deg]")
+    swing_speed_rad_s: float = rng(4.0, gt=0.0, doc="angular speed of a leg outside STANCE [rad/s]")
+    adjust_from_stance: bool = rng(True, doc="rule 4 also pulls a leg out of STANCE into ADJUST ('whenever'); "
+                                             "false: only swinging legs adjust")
+    k1: float = rng(20.0, ge=0.0, doc="Follower gain (footnote 2) [1/(m s)]")
+    k2: float = rng(10.0, ge=0.0, doc="Balancer gain (footnote 2) [1/s]")
+    omega_follow_deg_s: float = rng(114.59, ge=0.0, doc="Follower turn rate [deg/s]")
+    omega_balance_deg_s: float = rng(114.59, ge=0.0, doc="Balancer turn rate [deg/s]")
+    target_height_m: float = rng(-1.0, doc="segment centre height the Balancer keeps; -1: the standing height of the legs")
+    min_stance_legs: int = rng(1, ge=1, le=2, doc="legs in STANCE that make a segment supported")
+    head_speed_m_s: float = rng(0.5, ge=0.0, doc="head speed when walking [m/s]")
+    random_turn_max_deg: float = rng(30.0, ge=0.0, doc="RANDOM-WALK: largest random target turn [deg]")
+    random_turn_rate_deg_s: float = rng(10.0, ge=0.0, doc="RANDOM-WALK: turn rate toward the target [deg/s]")
+    adjustment_majority: float = rng(0.5, gt=0.0, le=1.0,
+                                     doc="ADJUSTMENT ends when more than this fraction of legs touch the ground")
 
 
 @dataclass(frozen=True)
@@ -122,6 +171,11 @@ class ScenarioConfig:
     passive: bool = rng(False, doc="muscles off (for energy checks)")
     suspended: bool = rng(False, doc="the head is held fixed and the body hangs straight down from it (paper Fig. 10)")
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
+    brain: str = rng("random-walk", choices=("random-walk", "control"),
+                     doc="myriapod head after ADJUSTMENT: RANDOM-WALK, or CONTROL by the schedule below (Sec. 4.3)")
+    control_times_s: list = rng((0.0,), doc="CONTROL: times [s] at which the commands below take effect")
+    control_speed_m_s: list = rng((0.5,), doc="CONTROL: head speed from each time on [m/s]")
+    control_turn_rate_deg_s: list = rng((0.0,), doc="CONTROL: turn rate from each time on [deg/s], + = left")
 
 
 @dataclass(frozen=True)
@@ -144,6 +198,8 @@ class MetricsConfig:
 
 SECTIONS: dict[str, type] = {
     "creature": CreatureConfig,
+    "legs": LegsConfig,
+    "controller": ControllerConfig,
     "gait": GaitConfig,
     "friction": FrictionConfig,
     "collision": CollisionConfig,
@@ -160,7 +216,8 @@ TOP_LEVEL_SCALARS = {
 
 
 def _type_name(tp) -> str:
-    return {float: "a number", int: "an integer", str: "a string", bool: "true or false", tuple: "a list"}.get(tp, str(tp))
+    return {float: "a number", int: "an integer", str: "a string", bool: "true or false", tuple: "a list of names",
+            list: "a list of numbers"}.get(tp, str(tp))
 
 
 def field_types(cls) -> dict[str, Any]:
@@ -191,6 +248,11 @@ def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
         if not isinstance(value, str):
             raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
         return value
+    if tp is list:
+        if (not isinstance(value, (list, tuple)) or not value
+                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)):
+            raise InputError(source, key, f"expected a non-empty list of numbers, got {value!r}")
+        return tuple(float(v) for v in value)
     if tp is tuple:
         if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
             raise InputError(source, key, f"expected a list of names, got {value!r}")

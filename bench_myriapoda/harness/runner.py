@@ -40,6 +40,7 @@ class RunResult:
         return {"case": self.case.to_dict(), "status": self.status,
                 "metrics": {k: clean(v) for k, v in self.metrics.items()},
                 "timings": {k: clean(v) for k, v in self.timings.items()},
+                **({"labels": self.extra["labels"]} if "labels" in self.extra else {}),
                 **({"message": self.message} if self.message else {})}
 
 
@@ -109,11 +110,16 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))
         metrics.update(body.extra_metrics())
+        extra = {}
+        if hasattr(body, "leg_timeline"):
+            extra["leg_timeline"] = body.leg_timeline()
+            extra["labels"] = body.labels_dict()
+            extra["brain_timeline"] = body.controller.brain_timeline()
         timings["steps"] = done
         timings["steps_per_s"] = done / sim_wall if sim_wall > 0 else float("nan")
         timings["realtime_factor"] = done * case.dt / sim_wall if sim_wall > 0 else float("nan")
         timings["wall_s"] = time.perf_counter() - wall0
-        return RunResult(case, status, metrics, timings, message, series)
+        return RunResult(case, status, metrics, timings, message, series, extra)
     except Exception as exc:  # a bug or an unforeseen failure: recorded, not raised
         timings["wall_s"] = time.perf_counter() - wall0
         msg = f"{type(exc).__name__}: {exc}"

@@ -30,6 +30,7 @@ CREATE TABLE IF NOT EXISTS runs (
     message TEXT,
     case_json TEXT NOT NULL,
     metrics_json TEXT NOT NULL,
+    labels_json TEXT NOT NULL DEFAULT '{}',
     timings_json TEXT NOT NULL,
     steps INTEGER, steps_per_s REAL, realtime_factor REAL, compile_s REAL, wall_s REAL,
     git_commit TEXT,
@@ -75,12 +76,13 @@ def record_run(path: Path | str, result, command: str = "run") -> int:
         with con:  # one transaction: both tables or nothing
             cur = con.execute(
                 "INSERT INTO runs (case_hash, command, creature, body, gait, scenario, status, message, case_json, metrics_json,"
-                " timings_json, steps, steps_per_s, realtime_factor, compile_s, wall_s, git_commit, git_dirty,"
+                " timings_json, labels_json, steps, steps_per_s, realtime_factor, compile_s, wall_s, git_commit, git_dirty,"
                 " machine_json, cpu_model, cpu_count, python_version, numpy_version, numba_version, timestamp)"
-                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
                 (result.case.case_hash(), command, case["creature"]["name"], case["body"]["name"], case["gait"]["name"],
                  case["scenario"]["name"], result.status, result.message, json.dumps(case, sort_keys=True),
-                 json.dumps(metrics, sort_keys=True), json.dumps(timings, sort_keys=True), timings.get("steps"),
+                 json.dumps(metrics, sort_keys=True), json.dumps(timings, sort_keys=True),
+                 json.dumps(result.extra.get("labels", {}), sort_keys=True), timings.get("steps"),
                  timings.get("steps_per_s"), timings.get("realtime_factor"), timings.get("compile_s"),
                  timings.get("wall_s"), commit, None if dirty is None else int(dirty), json.dumps(mach, sort_keys=True),
                  mach["cpu_model"], mach["cpu_count"], mach["python"], mach["numpy"], mach["numba"],

@@ -73,6 +73,7 @@ from ..fem import kernels as FK
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, segment_cells
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import friction_params
+from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
@@ -265,8 +266,10 @@ class BodyHybrid:
         self._place(case, mesh, half)
         att_local = mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body]
         self.att_local = np.ascontiguousarray(att_local)  # body frame = the build frame
+        self._held = np.zeros(lay.n_rigid, dtype=bool)
         if sc.suspended:
             self.rigid.set_kinematic(0, True)  # the head is held (Fig. 10)
+            self._held[0] = True
 
         # ---- kernel parameters and scratch
         contact = ContactSettings(friction=(case.friction.mu_transverse if cfg.rigid_friction_mu == DERIVED
@@ -308,6 +311,7 @@ class BodyHybrid:
         self._target = np.zeros(rk.N_CORNERS)
         self._lam = np.zeros((rk.N_CORNERS, 3))
         self.acc = np.zeros(K.N_ACC)
+        self._qtmp = np.zeros(4)
         self._J = np.zeros(fem.n_tets)
         self._sigma = np.zeros((fem.n_tets, 3))
         self._reset_samples()
@@ -405,6 +409,21 @@ class BodyHybrid:
         signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
         local = signs[None, :, :] * rb.half_extents[:, None, :]
         return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", self.rotation_matrices(), local)).reshape(-1, 3)
+
+    # ------------------------------------------------------------------ segment interface (legged creatures)
+    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
+        """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the rigid segments."""
+        return self.rigid.c, self.rigid.rotation_matrices()
+
+    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
+        """Supported segments (``kinematic``) are carried to (c_T, R_T) this step (paper Sec. 4.1);
+        the others follow the coupled dynamics."""
+        rb = self.rigid
+        R = rb.rotation_matrices()
+        # a held segment (the suspended head) stays held whatever the controller asks
+        rb.kinematic[:] = kinematic | self._held
+        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, c_T, R_T, dt, self._qtmp)
+        self.sync_attached()
 
     @property
     def body_length_m(self) -> float:
@@ -509,11 +528,20 @@ class BodyHybrid:
         return float(self.acc[K.ACC_MAX_PEN])
 
 
+def make_hybrid(case):
+    """The hybrid body; a creature with legs gets the leg controller on top (``bodies.myriapod``)."""
+    body = BodyHybrid(case)
+    if case.creature.legs_per_segment:
+        from ..myriapod import BodyMyriapod
+        return BodyMyriapod(case, body, body.layout.pitch)
+    return body
+
+
 register_body(BodySpec(
     name="hybrid",
     description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered coupling",
     config_cls=HybridConfig,
-    factory=BodyHybrid,
-    capabilities=frozenset({"friction:miller", "friction:coulomb", "friction:stick"}),
+    factory=make_hybrid,
+    capabilities=frozenset({"legs", "friction:miller", "friction:coulomb", "friction:stick"}),
     default_dt=default_dt,
 ))

@@ -124,14 +124,15 @@ DIRECT = -1
 THETA_AEP, THETA_PEP, ALPHA_S, BETA_S, ALPHA_MUP, ALPHA_MDP = 0, 1, 2, 3, 4, 5
 ADJ_D_THETA, ADJ_D_ALPHA, ADJ_D_BETA = 6, 7, 8
 SWING_SPEED, ARRIVAL_TOL, WAVE_DIRECTION = 9, 10, 11
-N_SWITCHER_PARAMS = 12
+ADJUST_FROM_STANCE = 12  # 1: rule 4 also pulls a STANCE leg into ADJUST ("whenever"); 0: only swinging legs
+N_SWITCHER_PARAMS = 13
 
 
 def switcher_params(theta_aep: float = 0.5, theta_pep: float = -0.5, alpha_s: float = 0.3,
                     beta_s: float = 1.3, alpha_mup: float = 0.6, alpha_mdp: float = -0.4,
                     adj_d_theta: float = -0.3, adj_d_alpha: float = 0.3, adj_d_beta: float = -0.8,
                     swing_speed: float = 4.0, arrival_tol: float = 1e-9,
-                    wave_direction: int = RETROGRADE) -> np.ndarray:
+                    wave_direction: int = RETROGRADE, adjust_from_stance: bool = True) -> np.ndarray:
     """The Switcher parameter vector (see the module docstring for units).
 
     The paper gives no values; the defaults suit ``legs.leg_geometry``'s
@@ -147,6 +148,7 @@ def switcher_params(theta_aep: float = 0.5, theta_pep: float = -0.5, alpha_s: fl
     values[ADJ_D_THETA], values[ADJ_D_ALPHA], values[ADJ_D_BETA] = adj_d_theta, adj_d_alpha, adj_d_beta
     values[SWING_SPEED], values[ARRIVAL_TOL] = swing_speed, arrival_tol
     values[WAVE_DIRECTION] = wave_direction
+    values[ADJUST_FROM_STANCE] = 1.0 if adjust_from_stance else 0.0
     if not np.all(np.isfinite(values)):
         raise ValueError(f"switcher parameters must be finite, got {values}")
     if wave_direction not in (RETROGRADE, DIRECT):
@@ -277,7 +279,7 @@ def switcher_step(states, angles, airborne, touching, ik_failed, params, dt, ent
         if entered_stance[k]:
             continue
         p = previous_leg(k, n_segments, wave)
-        if p >= 0 and entered_stance[p]:
+        if p >= 0 and entered_stance[p] and (states[k] != STANCE or params[ADJUST_FROM_STANCE] != 0.0):
             states[k] = ADJUST
         if states[k] == STANCE:
             continue

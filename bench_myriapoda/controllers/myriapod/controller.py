@@ -1,0 +1,206 @@
+"""The myriapod's decentralized leg controller and head (paper Sec. 4, update order of Sec. 6).
+
+One ``step`` per time step, in the paper's order:
+
+1. antennae -- none yet (a later issue adds them; the brain's AVOIDANCE and
+   TROPHOTROPISM slots stay empty until then);
+2. head -- the brain switches modes (Sec. 4.3): ADJUSTMENT while at most
+   ``adjustment_majority`` of the legs touch the ground (the head follows the
+   dynamics), then RANDOM-WALK or CONTROL (the head is moved kinematically);
+3. rigid segments -- the Targeter (Balancer, then Follower) gives every
+   segment a target pose; supported segments (enough legs in STANCE) are
+   handed to the body to be moved there kinematically, the rest follow the
+   dynamics;
+4. legs -- the Switcher updates the states, STANCE legs solve the IK of App. B
+   against the target poses (a failure sends the leg to SF1 on the next
+   step), the others move by forward kinematics;
+5. deformable segments -- the body's dynamic step, called by the owner after this.
+
+The kernels (``targeter``, ``switcher``, ``bodies.legs``) run in numba; this
+class only sequences them, a few calls per time step.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...bodies import legs as L
+from ...world.terrain import terrain_from_scenario
+from . import switcher as SW
+from . import targeter as TG
+
+# brain modes (Sec. 4.3) in priority order; AVOIDANCE and TROPHOTROPISM arrive with antennae
+ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
+BRAIN_MODE_NAMES = ("ADJUSTMENT", "AVOIDANCE", "TROPHOTROPISM", "RANDOM-WALK", "CONTROL")
+# the state of the swing loop SF1 -> SF2 -> SB1 -> SB2 whose target pose each state starts from
+SWING_LOOP_PREVIOUS = {SW.SF1: SW.SB2, SW.SF2: SW.SF1, SW.SB1: SW.SF2, SW.SB2: SW.SB1}
+
+
+def standing_height(geom_row: np.ndarray, params: np.ndarray) -> float:
+    """Height of a segment centre above flat ground when a leg stands at (0, alpha_S, beta_S) [m]."""
+    O, M, P = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((1, 3))
+    L.legs_forward_kinematics(np.zeros((1, 3)), np.eye(3)[None], geom_row[None].copy(),
+                              np.array([[0.0, params[SW.ALPHA_S], params[SW.BETA_S]]]), O, M, P)
+    return float(-P[0, 1])
+
+
+class MyriapodController:
+    """Legs, Switchers, Targeters and the head of one myriapod.
+
+    State: ``states`` (n_legs,) leg states; ``angles`` (n_legs, 3) [rad];
+    ``tips`` (n_legs, 3) [m] world tip positions (fixed while in STANCE);
+    ``brain`` the head's mode.  A timeline of leg states and tips is recorded
+    every ``record_every`` steps for the gait metrics.
+    """
+
+    def __init__(self, case, n_segments: int, segment_pitch_m: float, record_every: int = 10):
+        cre, lg, ct, sc = case.creature, case.legs, case.controller, case.scenario
+        self.n_seg = n_segments
+        self.n_legs = 2 * n_segments
+        self.dt = case.dt
+        self.geom = L.leg_geometry(n_segments, (lg.root_x_m, lg.root_y_m, lg.root_z_m), lg.femur_m, lg.tibia_m,
+                                   math.radians(lg.gamma_deg))
+        d = math.radians
+        self.sw_params = SW.switcher_params(
+            theta_aep=d(ct.theta_aep_deg), theta_pep=d(ct.theta_pep_deg), alpha_s=d(ct.alpha_s_deg),
+            beta_s=d(ct.beta_s_deg), alpha_mup=d(ct.alpha_mup_deg), alpha_mdp=d(ct.alpha_mdp_deg),
+            adj_d_theta=d(ct.adjust_d_theta_deg), adj_d_alpha=d(ct.adjust_d_alpha_deg),
+            adj_d_beta=d(ct.adjust_d_beta_deg), swing_speed=ct.swing_speed_rad_s,
+            adjust_from_stance=ct.adjust_from_stance,
+            wave_direction=SW.RETROGRADE if ct.wave_direction == "retrograde" else SW.DIRECT)
+        self.tg_params = TG.targeter_params(k1=ct.k1, k2=ct.k2, omega_follow=d(ct.omega_follow_deg_s),
+                                            omega_balance=d(ct.omega_balance_deg_s))
+        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        self.contact_distance = lg.contact_distance_m
+        self.theta_min = self.sw_params[SW.THETA_PEP]
+        h = ct.target_height_m if ct.target_height_m >= 0 else standing_height(self.geom[1], self.sw_params)
+        self.height_target = np.full(n_segments, h)
+        self.link_rest = np.full(n_segments, segment_pitch_m)
+        self.min_stance = ct.min_stance_legs
+        self.majority = ct.adjustment_majority
+        self.walk_mode = CONTROL if sc.brain == "control" else RANDOM_WALK
+        self.schedule = (np.array(sc.control_times_s), np.array(sc.control_speed_m_s),
+                         np.radians(np.array(sc.control_turn_rate_deg_s)))
+        self.head_speed = ct.head_speed_m_s
+        self.turn_max = d(ct.random_turn_max_deg)
+        self.turn_rate = d(ct.random_turn_rate_deg_s)
+        self.rng = np.random.default_rng(case.seed)
+        self.brain = ADJUSTMENT
+        self.t_walk = math.nan  # when ADJUSTMENT ended
+        self.touch_fraction_at_walk = math.nan
+        self._turn_left = 0.0   # RANDOM-WALK: angle still to turn [rad], sign = direction
+        # legs start in the air at random points of their swing loop SF1 -> SF2 -> SB1 -> SB2 (seeded):
+        # a dropped animal's legs are not in lockstep, and a synchronous start is a fixed point of rule 4
+        self.states = self.rng.choice([SW.SF1, SW.SF2, SW.SB1, SW.SB2], size=self.n_legs).astype(np.int64)
+        start = np.array([SW.target_pose(SWING_LOOP_PREVIOUS[int(s)], self.sw_params) for s in self.states])
+        end = np.array([SW.target_pose(s, self.sw_params) for s in self.states])
+        self.angles = start + self.rng.uniform(0.0, 1.0, (self.n_legs, 1)) * (end - start)
+        self.tips = np.zeros((self.n_legs, 3))
+        self._O, self._M = np.zeros((self.n_legs, 3)), np.zeros((self.n_legs, 3))
+        self.touching = np.zeros(self.n_legs, dtype=bool)
+        self.airborne = np.ones(self.n_legs, dtype=bool)
+        self.ik_failed = np.zeros(self.n_legs, dtype=bool)
+        self.entered = np.zeros(self.n_legs, dtype=bool)
+        self.supported = np.zeros(n_segments, dtype=bool)
+        self.kinematic = np.zeros(n_segments, dtype=bool)
+        self.c_T = np.zeros((n_segments, 3))
+        self.R_T = np.zeros((n_segments, 3, 3))
+        self.record_every = record_every
+        self._step = 0
+        self.timeline_t: list[float] = []
+        self.timeline_states: list[np.ndarray] = []
+        self.timeline_tips: list[np.ndarray] = []
+        self.timeline_brain: list[int] = []
+        self.tracking_sq_sum = 0.0
+        self.tracking_n = 0
+        self.heading_cmd = math.nan       # CONTROL: commanded heading [rad] about +y, integrated from the schedule
+        self.heading_err_sum = 0.0
+        self.heading_err_n = 0
+        self.timeline_centers: list[np.ndarray] = []
+
+    # ------------------------------------------------------------------ the head (Sec. 4.3)
+    def _head_command(self, t: float) -> tuple[float, float, float]:
+        """(speed [m/s], turn rate [rad/s], turn direction +1 left / -1 right / 0) of the head."""
+        if self.brain == CONTROL:
+            times, speed, rate = self.schedule
+            k = max(int(np.searchsorted(times, t, side="right")) - 1, 0)
+            return speed[k], abs(rate[k]), math.copysign(1.0, rate[k]) if rate[k] != 0 else 0.0
+        if self.brain == RANDOM_WALK:
+            if abs(self._turn_left) <= self.turn_rate * self.dt:
+                # target attained: a new random direction and target angle (Sec. 4.3)
+                self._turn_left = self.rng.uniform(-self.turn_max, self.turn_max)
+            step = math.copysign(min(abs(self._turn_left), self.turn_rate * self.dt), self._turn_left)
+            self._turn_left -= step
+            return self.head_speed, self.turn_rate, math.copysign(1.0, step) if step != 0 else 0.0
+        return 0.0, 0.0, 0.0
+
+    # ------------------------------------------------------------------ one step (Sec. 6)
+    def step(self, body, t: float) -> None:
+        """Update head, segment targets and legs for the step starting at t; hand targets to ``body``.
+
+        body: a segment body with ``segment_poses() -> (c (n,3), R (n,3,3))`` and
+        ``set_support(kinematic (n,), c_T, R_T, dt)``.
+        """
+        dt = self.dt
+        c, R = body.segment_poses()
+        if self._step == 0:  # the tips of the starting pose
+            L.legs_forward_kinematics(c, R, self.geom, self.angles, self._O, self._M, self.tips)
+        # 2. head: brain mode
+        L.tips_touching(self.terr_kind, self.terr, self.tips, self.contact_distance, self.touching)
+        if self.brain == ADJUSTMENT and self.touching.mean() > self.majority:
+            self.brain = self.walk_mode
+            self.t_walk = t
+            self.touch_fraction_at_walk = float(self.touching.mean())
+        speed, rate, turn_dir = self._head_command(t)
+        if self.brain == CONTROL:
+            heading = math.atan2(-R[0, 2, 0], R[0, 0, 0])  # the head's x axis seen from above (about +y)
+            if math.isnan(self.heading_cmd):
+                self.heading_cmd = heading
+            err = (heading - self.heading_cmd + math.pi) % (2 * math.pi) - math.pi
+            self.heading_err_sum += abs(err)
+            self.heading_err_n += 1
+            self.heading_cmd += turn_dir * rate * dt
+        # 3. rigid segments: supported ones are kinematic; the head is kinematic unless adjusting
+        TG.segments_supported(self.states, self.min_stance, self.supported)
+        self.kinematic[:] = self.supported
+        self.kinematic[0] = self.brain != ADJUSTMENT
+        TG.targeter_step(c, R, self.kinematic, self.terr_kind, self.terr, self.tg_params, self.link_rest,
+                         self.height_target, speed, rate, turn_dir, dt, self.c_T, self.R_T)
+        body.set_support(self.kinematic, self.c_T, self.R_T, dt)
+        # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
+        SW.switcher_step(self.states, self.angles, self.airborne, self.touching, self.ik_failed, self.sw_params,
+                         dt, self.entered)
+        SW.fix_stance_tips(self.entered, self.c_T, self.R_T, self.geom, self.angles, self.tips)
+        SW.stance_inverse_kinematics(self.states, self.c_T, self.R_T, self.geom, self.tips, self.angles,
+                                     self.ik_failed)
+        # App. B's "cannot resolve" includes the leg's joint range: a STANCE leg swept behind its
+        # posterior extreme pose (theta < theta_m) must lift (rule 3), as a real leg's range ends there.
+        self.ik_failed |= (self.states == SW.STANCE) & (self.angles[:, 0] < self.theta_min)
+        stance_tips = self.tips.copy()
+        L.legs_forward_kinematics(self.c_T, self.R_T, self.geom, self.angles, self._O, self._M, self.tips)
+        in_stance = self.states == SW.STANCE
+        self.tips[in_stance] = stance_tips[in_stance]  # a planted tip stays where it touched down
+        if self._step % self.record_every == 0:
+            self.timeline_t.append(t)
+            self.timeline_states.append(self.states.astype(np.int8))
+            self.timeline_tips.append(self.tips.copy())
+            self.timeline_brain.append(self.brain)
+            self.timeline_centers.append(c.copy())
+        self._step += 1
+
+    def record_tracking(self, c: np.ndarray) -> None:
+        """Accumulate the squared distance of supported segments from their targets after the body's step."""
+        err = np.linalg.norm(c[self.supported] - self.c_T[self.supported], axis=1)
+        self.tracking_sq_sum += float(err.sum())
+        self.tracking_n += int(err.size)
+
+    def brain_timeline(self) -> np.ndarray:
+        """Brain mode (T,) at the timeline's sample times."""
+        return np.array(self.timeline_brain, dtype=np.int64)
+
+    def timeline(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(t (T,), states (T, n_legs) int8, tips (T, n_legs, 3)) recorded so far."""
+        if not self.timeline_t:
+            return np.zeros(0), np.zeros((0, self.n_legs), np.int8), np.zeros((0, self.n_legs, 3))
+        return np.array(self.timeline_t), np.stack(self.timeline_states), np.stack(self.timeline_tips)
