@@ -109,3 +109,9 @@ def test_plot_gait_and_labels_from_the_cli(capsys, tmp_path):
     assert d["labels"]["wave_direction"] in ("retrograde", "direct", "undefined", "synchronous")
     assert main(["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat",
                  "--plot-gait", str(tmp_path / "x.png")]) == 2
+
+
+@pytest.mark.parametrize("segments", [3, 100])
+def test_segment_counts_from_3_to_100_run(segments):
+    _, r = run("centipede", "walk", 0.3, f"creature.segments={segments}")
+    assert r.metrics["body_length_m"] > segments * 1.0

@@ -1,0 +1,40 @@
+"""Throughput of a walking centipede (issue target: hybrid, 18 segments, dt = 1/3000 s, > 3,000 steps/s).
+
+Time it with:
+    python -m pytest tests/benchmarks/test_bench_myriapod.py --benchmark-enable --benchmark-only
+The segment-count sweep gives the cost scaling from 6 to 100 segments.
+"""
+import pytest
+
+from bench_myriapoda.core import registry
+from bench_myriapoda.core.config import resolve_case
+
+STEPS_PER_CALL = 300
+WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has formed
+
+
+def walking_body(segments: int, body: str = "hybrid"):
+    registry.load_all()
+    case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
+    b = registry.BODIES[body].factory(case)
+    b.compile()
+    b.advance(0.0, WALK_IN_STEPS)
+    return case, b
+
+
+@pytest.mark.parametrize("segments", [6, 18, 36, 100])
+def test_centipede_walk_step(benchmark, segments):
+    case, b = walking_body(segments)
+    t = [WALK_IN_STEPS * case.dt]
+
+    def chunk():
+        done, status = b.advance(t[0], STEPS_PER_CALL)
+        t[0] += done * case.dt
+        assert status == 0
+
+    benchmark.pedantic(chunk, rounds=8 if segments < 100 else 4, iterations=1, warmup_rounds=1)
+    if benchmark.stats is not None:
+        median = benchmark.stats.stats.median
+        benchmark.extra_info["steps_per_s"] = STEPS_PER_CALL / median
+        benchmark.extra_info["realtime_factor"] = STEPS_PER_CALL * case.dt / median
+        benchmark.extra_info["segments"] = segments
