@@ -153,8 +153,11 @@ def test_bad_fem_resolution_is_bad_input(capsys, tmp_path, monkeypatch):
 def test_fem_body_from_a_closed_surface_is_meshed_once_and_crawls(tmp_path, monkeypatch):
     from bench_myriapoda.bodies.fem import mesh as M
     monkeypatch.setenv("BENCH_MYRIAPODA_CACHE", str(tmp_path / "cache"))
-    case = resolve_case("worm", "fem", "flat", duration=6.0, overrides=["body.mesh=capsule",
-                                                                        "body.mesh_edge_length_fac=0.08"])
+    # fTetWild's meshes differ from call to call (the disk cache freezes the first) and can hold
+    # slivers a few hundred times smaller than the average tet: a smaller dt keeps explicit
+    # elasticity stable whichever mesh comes out
+    case = resolve_case("worm", "fem", "flat", duration=3.0, dt=1e-4,
+                        overrides=["body.mesh=capsule", "body.mesh_edge_length_fac=0.08"])
     body = BodyFEM(case)
     assert set(np.unique(body.tet_seg)) == set(range(case.creature.segments))  # every segment has tets
     extent = body.rest.max(axis=0) - body.rest.min(axis=0)

@@ -59,6 +59,12 @@ class FEMConfig:
                                 "or a path to a closed surface trimesh loads (tetrahedralized with fTetWild)")
     mesh_edge_length_fac: float = rng(0.06, gt=0.0, le=1.0,
                                       doc="fTetWild target edge length as a fraction of the bounding-box diagonal")
+    # Legged creatures only (``fem.myriapod.BodyFEMChain``); the muscle-driven body ignores these keys.
+    link_length_m: float = rng(-1.0, doc="legged chain: soft link length between two stiff blocks [m]; -1: half a segment")
+    rigid_stiffness_factor: float = rng(20.0, ge=1.0, doc="legged chain: Young's modulus of the segment blocks / E")
+    support_stiffness_n_m: float = rng(1.0e7, gt=0.0,
+                                       doc="legged chain: implicit penalty spring pulling a supported block's "
+                                           "leg-attachment node to its target [N/m]")
 
     def __post_init__(self):
         from ...core.errors import InputError
@@ -243,11 +249,22 @@ class BodyFEM:
         return float(self.acc[S.ACC_MAX_PEN])
 
 
+def make_fem(case):
+    """The FEM body; a creature with legs gets one mesh of stiff segment blocks and soft links under the
+    leg controller (``fem.myriapod``, ``bodies.myriapod``)."""
+    if case.creature.legs_per_segment:
+        from ..myriapod import BodyMyriapod
+        from .myriapod import BodyFEMChain
+        body = BodyFEMChain(case)
+        return BodyMyriapod(case, body, body.pitch)
+    return BodyFEM(case)
+
+
 register_body(BodySpec(
     name="fem",
     description="Fang et al. 2013 App. A: every segment a fixed-corotational tetrahedral FEM block; muscles as active strain",
     config_cls=FEMConfig,
-    factory=BodyFEM,
-    capabilities=frozenset({"muscles", "friction:miller", "friction:coulomb", "friction:stick"}),
+    factory=make_fem,
+    capabilities=frozenset({"muscles", "legs", "friction:miller", "friction:coulomb", "friction:stick"}),
     default_dt=default_dt,
 ))

@@ -52,6 +52,19 @@ class MassSpringConfig:
     substeps_per_frame: int = rng(FROM_PRESET, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
     integrator: str = rng("symplectic", choices=("symplectic", "euler"),
                           doc="semi-implicit Euler, or Miller's explicit Euler x += v dt + a dt^2/2")
+    # Legged creatures only (``massspring.myriapod.BodyRigidSpringChain``): rigid boxes joined by
+    # spring-cube links.  The Miller lattice ignores these keys; -1 = derived from the creature.
+    rigid_length_m: float = rng(-1.0, doc="legged chain: rigid segment length [m]; -1: creature.segment_length_m")
+    rigid_width_m: float = rng(-1.0, doc="legged chain: rigid segment width (z) [m]; -1: creature.width_m")
+    rigid_height_m: float = rng(-1.0, doc="legged chain: rigid segment height (y) [m]; -1: creature.height_m")
+    link_length_m: float = rng(-1.0, doc="legged chain: spring link length [m]; -1: half the rigid length")
+    link_width_m: float = rng(-1.0, doc="legged chain: link width [m] (<= rigid width); -1: the rigid width")
+    link_height_m: float = rng(-1.0, doc="legged chain: link height [m] (<= rigid height); -1: the rigid height")
+    link_cells: int = rng(2, ge=1, le=64, doc="legged chain: spring cubes along a link (>= 2 gives free nodes)")
+    link_stiffness_n_m: float = rng(600.0, gt=0.0, doc="legged chain: spring constant of every link spring [N/m]")
+    link_damping_n_s_m: float = rng(5.0, ge=0.0, doc="legged chain: damping constant of every link spring [N s/m]")
+    link_density_kg_m3: float = rng(1.0, gt=0.0, doc="legged chain: link density, lumped equally on its nodes [kg/m^3]")
+    rigid_friction_mu: float = rng(-1.0, doc="legged chain: Coulomb mu of the boxes; -1: friction.mu_transverse")
 
     def __post_init__(self):
         for key, value in MILLER_PRESETS[self.preset].items():
@@ -164,11 +177,22 @@ class BodyMassSpring:
         return float(self.acc[S.ACC_MAX_PEN])
 
 
+def make_massspring(case):
+    """Miller's lattice; a creature with legs gets rigid boxes joined by spring-cube links under the
+    leg controller (``massspring.myriapod``, ``bodies.myriapod``)."""
+    if case.creature.legs_per_segment:
+        from ..myriapod import BodyMyriapod
+        from .myriapod import BodyRigidSpringChain
+        body = BodyRigidSpringChain(case)
+        return BodyMyriapod(case, body, body.layout.pitch)
+    return BodyMassSpring(case)
+
+
 register_body(BodySpec(
     name="massspring",
     description="Miller 1988: cube lattice of point masses, edge and face-diagonal springs, directional friction",
     config_cls=MassSpringConfig,
-    factory=BodyMassSpring,
-    capabilities=frozenset({"muscles", "friction:miller", "friction:coulomb", "friction:stick"}),
+    factory=make_massspring,
+    capabilities=frozenset({"muscles", "legs", "friction:miller", "friction:coulomb", "friction:stick"}),
     default_dt=default_dt,
 ))

@@ -1,0 +1,397 @@
+"""``fem`` for legged creatures: one FEM mesh, stiff blocks where the rigid segments were.
+
+The centipede of ``models/centipede.toml`` with every part deformable: a single
+connected structured tet mesh (``mesh.box_grid`` with its x coordinates
+remapped, like ``chain_grid`` but with alternating block and link lengths)
+along -x from the head face at x = 0.  Block s (the rigid segment s of the
+hybrid) spans x in [-s P - L_rigid, -s P], link k the gap between block k and
+k + 1 (P = L_rigid + L_link).  Tets in a block have Young's modulus
+E * ``rigid_stiffness_factor`` and the density that makes the whole body weigh
+``creature.mass_kg``; link tets are the App. A material (E, nu, gamma,
+``density_kg_m3``, default 1 kg/m^3).  Each part has the hybrid's cells along x
+(``resolution``), so a link is meshed exactly like the hybrid's link.
+
+Imposing a supported segment's target pose (paper Sec. 4.1)
+-----------------------------------------------------------
+Choice: stiff penalty springs, integrated implicitly per node, NOT Dirichlet
+nodes.  With 18 segments the supported set changes every few steps and takes
+far more than the 16 factorizations ``FEMSystem`` caches, so Dirichlet masks
+would refactor (M + dt D)_ff constantly.  Instead the whole mesh is free (one
+factorization for the run) and after the velocity solve of eq. 14 every
+leg-attachment node p of a supported block (its nodes on the two side faces
+z = +-w/2, where the legs attach) gets a spring k_p toward its target x_T,
+integrated with backward Euler on that node alone.  The target is the
+node's current offset from the block's best-fit pose carried rigidly to the
+target pose, x_T = c_T + R_T R^T (x_p - c) (a deformed block keeps its
+deformation instead of being snapped to its rest shape in one step, which
+makes nodes jump by deformation / dt and blew the walk up):
+
+    v_p = (m_p v*_p + dt k_p (x_T - x_p)) / (m_p + dt^2 k_p)
+
+so x_p + dt v_p = x_T up to the factor m_p / (m_p + dt^2 k_p) of the
+remaining error (about 1 % for k_p = 1e7 N/m, dt = 1/3000 s and the ~0.01 kg
+nodes), unconditionally stable and without refactorization.  The rest of the
+block follows elastically; the segment's pose is its nodes' best fit, so a
+supported segment tracks its target within a tracking error that the tests
+report (not exactly, unlike the rigid bodies).
+
+``segment_poses`` returns each block's best-fit rigid pose: the centroid of
+its nodes and the polar rotation of sum (x_i - c)(X_i - X_c)^T (rest shape X).
+The kernel (``advance_chain``) runs n steps per call: elastic forces (eqs.
+7-11) + gravity, the velocity solve, the support penalty, ground contact of
+every node (the suite's point-mass contact), x += dt v, blow-up checks.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ...world.terrain import terrain_from_scenario
+from ...world.terrain_kernels import signed_distance
+from .. import step_status as S
+from ..contact_kernels import collide_path, contact_friction
+from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..observation import Observation
+from ..placement import place_points
+from . import kernels as FK
+from .kernels import elastic_forces, semi_implicit_velocity
+from .mesh import box_grid, segment_cells, signed_volumes
+from .system import FEMSystem
+
+# Scalar parameters (``phys``).
+DT, R_N, R_TAN, MAX_SPEED, MAX_PEN, K_SUPPORT = range(6)
+N_PHYS = 6
+
+
+def chain_mesh(n_blocks, block_length, link_length, height, width, cells, tets_per_cell=6):
+    """Alternating blocks and links along -x from the head face at x = 0, axis on y = z = 0.
+
+    cells: (cx, cy, cz) cells of one block and of one link (cx along the body).
+    Returns nodes (n, 3) [m], tets (m, 4), tet_block (m,) block of a tet or -1
+    for a link tet, node_block (n,) block a node belongs to (-1: inside a link).
+    """
+    cx, cy, cz = cells
+    n_cells_x = n_blocks * cx + (n_blocks - 1) * cx
+    nodes, tets = box_grid((float(n_cells_x), height, width), (n_cells_x, cy, cz),
+                           origin=(0.0, -0.5 * height, -0.5 * width), tets_per_cell=tets_per_cell)
+    # grid line i -> x: from the tail (i = 0) to the head, block / link cells alternating
+    widths = []
+    for part in range(2 * n_blocks - 1):
+        widths += [(block_length if part % 2 == 0 else link_length) / cx] * cx
+    xs = np.concatenate([[0.0], np.cumsum(widths)])
+    xs -= xs[-1]
+    i = np.rint(nodes[:, 0]).astype(np.int64)
+    nodes[:, 0] = xs[i]  # monotone along x: tets keep their orientation
+    P = block_length + link_length
+    tol = 1e-9 * P
+
+    def block_of(x):
+        s = np.floor(-x / P + tol).astype(np.int64)
+        inside = (-x - s * P) <= block_length + tol
+        return np.where(inside & (s >= 0) & (s < n_blocks), s, -1)
+
+    tet_block = block_of(nodes[tets].mean(axis=1)[:, 0])
+    node_block = block_of(nodes[:, 0])
+    # a node on block s's back face also touches link s (fine: it belongs to the block)
+    return nodes, tets, tet_block, node_block
+
+
+@njit(cache=True, error_model="numpy")
+def block_centroids(x, block_nodes, out):
+    """OVERWRITE out (n_blocks, 3) [m] with the mean of each block's nodes; block_nodes (n_blocks, k)."""
+    k = block_nodes.shape[1]
+    for s in range(block_nodes.shape[0]):
+        sx = sy = sz = 0.0
+        for a in range(k):
+            i = block_nodes[s, a]
+            sx += x[i, 0]
+            sy += x[i, 1]
+            sz += x[i, 2]
+        out[s, 0], out[s, 1], out[s, 2] = sx / k, sy / k, sz / k
+
+
+@njit(cache=True, error_model="numpy")
+def block_poses(x, block_nodes, rest_offsets, c, A, R):
+    """Best-fit rigid pose of every block: c (n_blocks, 3) [m] centroid, R (n_blocks, 3, 3) the polar
+    rotation of A = sum_i (x_i - c)(X_i - X_c)^T; rest_offsets (n_blocks, k, 3) [m] = X_i - X_c.
+    OVERWRITES c, A (n_blocks, 3, 3) scratch and R."""
+    block_centroids(x, block_nodes, c)
+    for s in range(block_nodes.shape[0]):
+        for i in range(3):
+            for j in range(3):
+                A[s, i, j] = 0.0
+        for a in range(block_nodes.shape[1]):
+            p = block_nodes[s, a]
+            for i in range(3):
+                d = x[p, i] - c[s, i]
+                for j in range(3):
+                    A[s, i, j] += d * rest_offsets[s, a, j]
+        FK.polar_rotation(A[s], R[s])
+
+
+@njit(cache=True, error_model="numpy")
+def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
+                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+                  block_nodes, node_spine, att_nodes, att_block, att_target, support,
+                  gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
+                  f_work, b_work, cent, spine, acc):
+    """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
+
+    x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, Dm_inv,
+    coef, q_ws (UPDATED), F_work, H_work as ``fem.kernels.elastic_forces``;
+    perm, sky_*, fp_* the factor of (M + dt D) with no fixed node
+    (``FEMSystem.solver``).  block_nodes (n_blocks, k) node ids of each block;
+    node_spine (n_nodes,) the block whose spine a node's friction uses;
+    att_nodes (n_att,) leg-attachment node ids, att_block (n_att,) their
+    block, att_target (n_att, 3) [m] their target positions at the end of the
+    step (used for supported blocks only); support (n_blocks,) bool.  gravity (3,) [m/s^2];
+    terr_kind, terr; fric_model, fric; phys (N_PHYS,): dt [s], r_n, r_t,
+    limits [m/s], [m], k_p [N/m].  Scratch: f_work (n_nodes, 3), b_work
+    (n_nodes, 3), cent, spine (n_blocks, 3).  acc (S.N_ACC,) ACCUMULATES the
+    shared statistics (contact fraction sum, steps, deepest penetration).
+    """
+    n_nodes = x.shape[0]
+    n_blocks = block_nodes.shape[0]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_TAN]
+    vmax2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    max_pen = phys[MAX_PEN]
+    kp = phys[K_SUPPORT]
+    contact_dist = fric[CONTACT_DISTANCE]
+    gx, gy, gz = gravity[0], gravity[1], gravity[2]
+    for step in range(n_steps):
+        status = S.OK
+        f_work[:, :] = 0.0
+        elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        for i in range(n_nodes):
+            m = mass[i]
+            f_work[i, 0] += m * gx
+            f_work[i, 1] += m * gy
+            f_work[i, 2] += m * gz
+        semi_implicit_velocity(v, mass, f_work, dt, perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val, b_work)
+        # implicit penalty of supported blocks' leg-attachment nodes toward their targets
+        for a in range(att_nodes.shape[0]):
+            if not support[att_block[a]]:
+                continue
+            p = att_nodes[a]
+            m = mass[p]
+            den = m + dt * dt * kp
+            for d in range(3):
+                v[p, d] = (m * v[p, d] + dt * kp * (att_target[a, d] - x[p, d])) / den
+        # spines from the block centroids (toward the head)
+        block_centroids(x, block_nodes, cent)
+        for s in range(n_blocks):
+            a = s - 1 if s > 0 else 0
+            b = s + 1 if s < n_blocks - 1 else n_blocks - 1
+            sx, sy, sz = cent[a, 0] - cent[b, 0], cent[a, 1] - cent[b, 1], cent[a, 2] - cent[b, 2]
+            nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+            if nrm > 0.0:
+                spine[s, 0], spine[s, 1], spine[s, 2] = sx / nrm, sy / nrm, sz / nrm
+            else:
+                spine[s, 0], spine[s, 1], spine[s, 2] = 1.0, 0.0, 0.0
+        n_contact = 0
+        for i in range(n_nodes):
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+                s = node_spine[i]
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[s, 0], spine[s, 1], spine[s, 2])
+            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[S.ACC_MAX_PEN]:
+                    acc[S.ACC_MAX_PEN] = pen
+                if pen > max_pen:
+                    status = S.DEEP_PENETRATION
+            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = S.NONFINITE
+            elif vx * vx + vy * vy + vz * vz > vmax2:
+                status = S.RUNAWAY_SPEED
+        acc[S.ACC_CONTACT_SUM] += n_contact / n_nodes
+        acc[S.ACC_STEPS] += 1.0
+        if status != S.OK:
+            return step + 1, status
+    return n_steps, S.OK
+
+
+class BodyFEMChain:
+    """The centipede as one FEM mesh (module docstring), with the segment interface.
+
+    State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] (the ``FEMSystem``'s arrays).
+    """
+
+    name = "fem"
+
+    def __init__(self, case):
+        cre = case.creature
+        cfg = case.body
+        sc = case.scenario
+        if cre.segments < 2:
+            raise ValueError("a legged FEM chain needs at least 2 segments")
+        self.case = case
+        n, lr, w, h = cre.segments, cre.segment_length_m, cre.width_m, cre.height_m
+        ll = cfg.link_length_m if cfg.link_length_m > 0 else 0.5 * lr
+        self.n_blocks, self.block_length, self.link_length = n, lr, ll
+        self.pitch = lr + ll
+        cells = segment_cells(cfg.resolution, cfg.resolution_unit)
+        nodes, tets, tet_block, node_block = chain_mesh(n, lr, ll, h, w, cells, cfg.tets_per_cell)
+        self.rest = nodes
+        self.tet_block = tet_block
+        # materials: links App. A; blocks stiffer and as heavy as the creature's mass requires
+        vol = signed_volumes(nodes, tets)
+        rho_link = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else 1.0
+        in_block = tet_block >= 0
+        m_links = rho_link * vol[~in_block].sum()
+        rho_block = (cre.mass_kg - m_links) / vol[in_block].sum()
+        if rho_block <= 0.0:
+            raise ValueError(f"creature.mass_kg = {cre.mass_kg} kg is less than the links' mass {m_links:.4g} kg")
+        E = np.where(in_block, cfg.youngs_modulus_pa * cfg.rigid_stiffness_factor, cfg.youngs_modulus_pa)
+        rho = np.where(in_block, rho_block, rho_link)
+        self.fem = fem = FEMSystem(nodes, tets, E=E, nu=cfg.poisson_ratio, rho=rho, gamma=cfg.damping_gamma)
+        self.solver = fem.solver(case.dt)  # no fixed node: one factorization for the whole run
+        self.block_nodes = np.ascontiguousarray(np.stack([np.flatnonzero(node_block == s) for s in range(n)]))
+        self.rest_centroids = nodes[self.block_nodes].mean(axis=1)
+        self.rest_offsets = np.ascontiguousarray(nodes[self.block_nodes] - self.rest_centroids[:, None, :])
+        self._A = np.zeros((n, 3, 3))
+        # nodes of links take the spine of the nearest block
+        self.node_spine = np.clip(np.rint(-(nodes[:, 0] + 0.5 * lr) / self.pitch), 0, n - 1).astype(np.int64)
+        side = node_block >= 0
+        side &= np.isclose(np.abs(nodes[:, 2]), 0.5 * w)
+        self.att_nodes = np.flatnonzero(side).astype(np.int64)
+        self.att_block = node_block[self.att_nodes].astype(np.int64)
+        self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
+        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        self.fric_model, self.fric = friction_params(case.friction)
+        phys = np.zeros(N_PHYS)
+        phys[DT] = case.dt
+        phys[R_N] = case.collision.r_n
+        phys[R_TAN] = case.collision.r_t
+        phys[MAX_SPEED] = case.stability.max_speed_m_s
+        phys[MAX_PEN] = case.stability.max_penetration_m
+        phys[K_SUPPORT] = cfg.support_stiffness_n_m
+        self.phys = phys
+        fem.x[:] = place_points(nodes, case)
+        fem.v[:] = 0.0
+        self.x, self.v = fem.x, fem.v
+        self.support = np.zeros(n, dtype=np.bool_)
+        if sc.suspended:
+            self.support[0] = True  # the head block is held where it starts
+        self.att_target = self.x[self.att_nodes].copy()
+        self._f_work = np.zeros_like(self.x)
+        self._b_work = np.zeros((len(self.solver.perm), 3))
+        self._cent = np.zeros((n, 3))
+        self._spine = np.zeros((n, 3))
+        self.acc = np.zeros(S.N_ACC)
+        self._J = np.zeros(len(tets))
+        self._sigma = np.zeros((len(tets), 3))
+        self._min_J = math.inf
+        self._inverted_max = 0
+
+    # ------------------------------------------------------------------ stepping
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused."""
+        f, s = self.fem, self.solver
+        return advance_chain(self.x, self.v, f.mass, f.tets, f.Dm_inv_eff, f.coef, f._q_ws, f._F_work, f._H_work,
+                             s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+                             self.block_nodes, self.node_spine, self.att_nodes, self.att_block,
+                             self.att_target, self.support, self.gravity, self.terr_kind, self.terr,
+                             self.fric_model, self.fric, self.phys, int(n_steps),
+                             self._f_work, self._b_work, self._cent, self._spine, self.acc)
+
+    def _state(self):
+        return [a.copy() for a in (self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc)]
+
+    def _restore(self, saved) -> None:
+        for dst, src in zip((self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc), saved):
+            dst[...] = src
+
+    def compile(self) -> None:
+        saved = self._state()
+        self.advance(0.0, 1)
+        self._restore(saved)
+
+    @staticmethod
+    def status_text(code: int) -> str:
+        return S.STATUS_TEXT.get(code, f"status {code}")
+
+    # ------------------------------------------------------------------ segment interface
+    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
+        """Best-fit rigid pose of every block: centroid (n, 3) [m] and rotation (n, 3, 3).
+
+        R = polar factor of A = sum_i (x_i - c)(X_i - X_c)^T over the block's nodes.
+        """
+        c, R = np.empty((self.n_blocks, 3)), np.empty((self.n_blocks, 3, 3))
+        block_poses(self.x, self.block_nodes, self.rest_offsets, c, self._A, R)
+        return c, R
+
+    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
+        """Supported blocks (``kinematic`` (n,) bool) are carried to (c_T (n, 3) [m], R_T (n, 3, 3)) during
+        the next step: each leg-attachment node p gets the target x_T = c_T + R_T R^T (x_p - c), its current
+        offset from the block's best-fit pose (c, R) transported rigidly, and the implicit penalty pulls it
+        there (module docstring).  Transporting the current offsets (not the rest shape) moves the block by
+        exactly the rigid increment and never snaps a deformed block back in one step."""
+        self.support[:] = kinematic
+        sel = self.support[self.att_block]
+        if sel.any():
+            c, R = self.segment_poses()
+            b = self.att_block[sel]
+            p = self.att_nodes[sel]
+            rel = np.einsum("nji,nj->ni", R[b], self.x[p] - c[b])   # R^T (x_p - c)
+            self.att_target[sel] = c_T[b] + np.einsum("nij,nj->ni", R_T[b], rel)
+
+    def support_error(self) -> float:
+        """Max distance [m] of a supported block's leg-attachment node from its target (current state)."""
+        sel = self.support[self.att_block]
+        if not sel.any():
+            return 0.0
+        return float(np.linalg.norm(self.x[self.att_nodes[sel]] - self.att_target[sel], axis=1).max())
+
+    @property
+    def body_length_m(self) -> float:
+        return self.n_blocks * self.block_length + (self.n_blocks - 1) * self.link_length
+
+    # ------------------------------------------------------------------ observation
+    def segment_centers(self) -> np.ndarray:
+        """(2 n - 1, 3) [m]: block 0, link 0, block 1, ... (block centroids; link = mean of its two blocks' faces)."""
+        c = self.segment_poses()[0]
+        out = np.empty((2 * self.n_blocks - 1, 3))
+        out[0::2] = c
+        out[1::2] = 0.5 * (c[:-1] + c[1:])
+        return out
+
+    def observe(self, t: float, with_nodes: bool = False) -> Observation:
+        m = self.fem.mass
+        com = m @ self.x / m.sum()
+        head = self.x[self.rest[:, 0] >= -1e-9].mean(axis=0)
+        tail = self.x[self.rest[:, 0] <= self.rest[:, 0].min() + 1e-9].mean(axis=0)
+        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
+        self._min_J = min(self._min_J, float(self._J.min()))
+        self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
+        return Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
+                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+
+    def energy(self, t: float = 0.0) -> tuple[float, float, float]:
+        """(kinetic, elastic (eq. 6), gravitational from y = 0) [J]."""
+        m = self.fem.mass
+        kinetic = float(0.5 * np.einsum("i,ij,ij->", m, self.v, self.v))
+        return kinetic, self.fem.elastic_energy(), float(-self.gravity[1] * (m @ self.x[:, 1]))
+
+    def extra_metrics(self) -> dict[str, float]:
+        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max)}
+
+    def contact_fraction_mean(self) -> float:
+        return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        return float(self.acc[S.ACC_MAX_PEN])
+

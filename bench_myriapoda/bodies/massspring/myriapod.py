@@ -1,0 +1,520 @@
+"""``massspring`` for legged creatures: rigid boxes joined by Miller spring-cube links.
+
+The centipede of ``models/centipede.toml`` with the hybrid body's rigid
+segments (same boxes, masses, box-terrain contact, ``RigidBoxes`` /
+``rigid_kernels``) but the FEM links replaced by Miller's cube lattice
+(``lattice.build_lattice``: four corner masses per cross-section face, springs
+along every cube edge and across every face diagonal, f = k (L - l) - D dl/dt,
+``kernels.spring_forces``).  A link of ``link_cells`` cubes along the body has
+``link_cells + 1`` faces; its two end faces' corners are glued to the facing
+faces of the two boxes (attached nodes), the inner faces' corners are free
+point masses (symplectic Euler, the suite's shared ground contact
+``contact_kernels``, like the hybrid's free FEM nodes).
+
+Coupling: the hybrid's three staggered steps (paper Sec. 3), inside one numba
+kernel (``advance_chain``) running n steps per call:
+
+1. spring forces at (x^n, v^n); free nodes: v += dt (f/m + g), ground contact,
+   x += dt v;
+2. the forces on the attached nodes act on their boxes as force + torque about
+   the box centre; rigid step (``rigid_kernels._step_body``, gravity and
+   box-terrain contact) of every non-kinematic box;
+3. the attached nodes are put back onto their boxes (x = c + R l,
+   v = v_c + w x (x - c)).
+
+Springs between two nodes glued to the same box are dropped (they never change
+length).  Spring forces are internal, so the total linear momentum of boxes and
+free nodes changes only by gravity and contact (tests/test_myriapod_bodies.py).
+
+SI units throughout: ``link_stiffness_n_m`` [N/m] and ``link_damping_n_s_m``
+[N s/m] are per spring (not Miller's per-unit-mass frame units of the lattice
+body).  The default 600 N/m gives a 2-cube, 0.5 m link of the centipede's
+1 x 0.5 m cross-section an axial stiffness of about 2000 N/m, the order of the
+hybrid's FEM link (E A / L = 4000 N/m).  Masses: the link density
+(``link_density_kg_m3``, App. A's 1 kg/m^3) lumped equally on a link's nodes;
+the attached nodes' share belongs to the boxes, whose mass makes boxes + free
+nodes weigh ``creature.mass_kg``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+from scipy.spatial.transform import Rotation
+
+from ...world.terrain import terrain_from_scenario
+from ...world.terrain_kernels import signed_distance
+from .. import rigid_kernels as rk
+from ..contact_kernels import collide_path, contact_friction
+from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..hybrid.kernels import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
+                              N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
+                              VEL_ITERATIONS, VEL_TOLERANCE, link_spines, place_attached_nodes)
+from ..kinematic_targets import drive_to_targets
+from ..observation import Observation
+from ..placement import initial_transform
+from ..rigid import ContactSettings, RigidBoxes
+from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
+from ..step_status import STATUS_TEXT
+from .kernels import spring_forces
+from .lattice import build_lattice
+
+DERIVED = -1.0
+
+
+@dataclass(frozen=True)
+class ChainLayout:
+    """Resolved sizes [m] of the chain; ``cells`` spring cubes along each link."""
+
+    n_rigid: int
+    rigid_length: float
+    rigid_width: float
+    rigid_height: float
+    link_length: float
+    link_width: float
+    link_height: float
+    cells: int
+
+    @property
+    def pitch(self) -> float:
+        """Distance between consecutive rigid centres [m]."""
+        return self.rigid_length + self.link_length
+
+    @property
+    def body_length(self) -> float:
+        """Head front face to tail back face [m]."""
+        return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
+
+
+def chain_layout(cfg, creature) -> ChainLayout:
+    """Sizes from ``[bodies.massspring]`` with defaults from the creature (-1 = derived)."""
+    if creature.segments < 2:
+        raise ValueError(f"a rigid-spring chain needs at least 2 segments; {creature.name!r} has {creature.segments}")
+    pick = lambda value, default: default if value == DERIVED else value  # noqa: E731
+    lr = pick(cfg.rigid_length_m, creature.segment_length_m)
+    wr = pick(cfg.rigid_width_m, creature.width_m)
+    hr = pick(cfg.rigid_height_m, creature.height_m)
+    ll = pick(cfg.link_length_m, 0.5 * lr)
+    wl = pick(cfg.link_width_m, wr)
+    hl = pick(cfg.link_height_m, hr)
+    if min(lr, wr, hr, ll, wl, hl) <= 0.0:
+        raise ValueError("rigid and link sizes must be positive")
+    if wl > wr or hl > hr:
+        raise ValueError(f"the link cross-section {hl} x {wl} m must fit on the rigid face {hr} x {wr} m")
+    return ChainLayout(creature.segments, lr, wr, hr, ll, wl, hl, int(cfg.link_cells))
+
+
+@dataclass(frozen=True)
+class ChainMesh:
+    """Spring links in the build frame (head front face at x = 0, axis on y = z = 0, body along -x).
+
+    nodes (n_nodes, 3) [m]; springs (n_springs, 2); rest (n_springs,) [m];
+    node_link (n_nodes,); link_nodes (n_links, 4 (cells + 1)); mass (n_nodes,)
+    [kg]; attached (n_nodes,) bool; att_body (n_nodes,) box of an attached node
+    (-1 if free); rigid_centres (n_rigid, 3) [m].
+    """
+
+    nodes: np.ndarray
+    springs: np.ndarray
+    rest: np.ndarray
+    node_link: np.ndarray
+    link_nodes: np.ndarray
+    mass: np.ndarray
+    attached: np.ndarray
+    att_body: np.ndarray
+    rigid_centres: np.ndarray
+
+
+def build_chain(lay: ChainLayout, density: float) -> ChainMesh:
+    """Link k: a ``lay.cells``-cube Miller lattice spanning x in [-(k+1) P, -k P - L_rigid]."""
+    P = lay.pitch
+    nodes, springs, rest, node_link, mass, attached, att_body, link_nodes = [], [], [], [], [], [], [], []
+    offset = 0
+    for k in range(lay.n_rigid - 1):
+        lat = build_lattice(lay.cells, lay.link_length / lay.cells, lay.link_width, lay.link_height)
+        nd = lat.rest_nodes + np.array([-k * P - lay.rigid_length, -0.5 * lay.link_height, 0.0])
+        n = len(nd)
+        face = np.arange(n) // 4
+        body = np.full(n, -1, dtype=np.int64)
+        body[face == 0] = k                 # front face on rigid k's back face
+        body[face == lay.cells] = k + 1     # back face on rigid k+1's front face
+        sp = lat.springs
+        keep = ~((body[sp[:, 0]] >= 0) & (body[sp[:, 0]] == body[sp[:, 1]]))  # same-box springs never stretch
+        nodes.append(nd)
+        springs.append(sp[keep] + offset)
+        rest.append(lat.rest_length[keep])
+        node_link.append(np.full(n, k, dtype=np.int64))
+        mass.append(np.full(n, density * lay.link_length * lay.link_width * lay.link_height / n))
+        attached.append(body >= 0)
+        att_body.append(body)
+        link_nodes.append(np.arange(n, dtype=np.int64) + offset)
+        offset += n
+    centres = np.zeros((lay.n_rigid, 3))
+    centres[:, 0] = -np.arange(lay.n_rigid) * P - 0.5 * lay.rigid_length
+    return ChainMesh(np.concatenate(nodes), np.ascontiguousarray(np.concatenate(springs)), np.concatenate(rest),
+                     np.concatenate(node_link), np.stack(link_nodes), np.concatenate(mass),
+                     np.concatenate(attached), np.concatenate(att_body), centres)
+
+
+@njit(cache=True, error_model="numpy")
+def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, springs, stiffness, damping, rest,
+                  c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
+                  gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
+                  f_work, f_att, x_att, x_pred, residual, spine, force, torque, Rb,
+                  R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc):
+    """Advance the rigid-spring chain ``n_steps`` staggered steps (module docstring); return (steps, status).
+
+    Nodes: x, v (n_nodes, 3) [m], [m/s] UPDATED (attached rows rewritten from
+    the boxes every step); mass (n_nodes,) [kg]; free (n_free,), fixed
+    (n_fixed,) node ids; att_body (n_fixed,), att_local (n_fixed, 3) [m] box
+    and body-frame position of each attached node (``fixed`` order);
+    node_link (n_nodes,).  Springs: springs (n_springs, 2), stiffness [N/m],
+    damping [N s/m], rest [m] (n_springs,).  Boxes (``rigid_kernels``
+    conventions): c, q, vr, w, impulse_cache UPDATED; rmass, inertia_body,
+    half_extents, kinematic (kinematic boxes are not stepped: they hold the
+    pose and velocity ``set_support`` gave them).  World: gravity (3,)
+    [m/s^2]; terr_kind, terr; fric_model, fric (free nodes); phys (N_PHYS,) in
+    ``hybrid.kernels``' layout.  Scratch: f_work (n_nodes, 3); f_att, x_att,
+    x_pred (n_fixed, 3); residual (n_fixed,); spine (n_links, 3); force,
+    torque (n_rigid, 3); Rb (n_rigid, 3, 3); the contact scratch of
+    ``rigid_kernels._solve_contacts``.  acc (N_ACC,) ACCUMULATES the
+    statistics of ``hybrid.kernels`` (its slow-tet slot stays 0).
+    """
+    n_fixed = fixed.shape[0]
+    n_free = free.shape[0]
+    n_rigid = c.shape[0]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    max_pen = phys[MAX_PEN]
+    vmax = phys[MAX_SPEED]
+    vmax2 = vmax * vmax
+    mu_r = phys[RIGID_MU]
+    e_r = phys[RIGID_RESTITUTION]
+    bounce = phys[BOUNCE_THRESHOLD]
+    n_vel = int(phys[VEL_ITERATIONS])
+    vel_tol = phys[VEL_TOLERANCE]
+    n_pos = int(phys[POS_ITERATIONS])
+    beta = phys[POS_BETA]
+    slop = phys[SLOP]
+    contact_dist = fric[CONTACT_DISTANCE]
+    gx, gy, gz = gravity[0], gravity[1], gravity[2]
+    n_points = n_free + rk.N_CORNERS * n_rigid
+    for step in range(n_steps):
+        status = OK
+        # ---------------- (1) spring forces at step n; free nodes advance
+        f_work[:, :] = 0.0
+        spring_forces(x, v, springs, stiffness, damping, rest, f_work)
+        for a in range(n_fixed):
+            p = fixed[a]
+            for d in range(3):
+                f_att[a, d] = f_work[p, d]
+                x_att[a, d] = x[p, d]
+                x_pred[a, d] = x[p, d] + dt * v[p, d]
+        link_spines(c, spine)
+        n_contact = 0
+        for k in range(n_free):
+            i = free[k]
+            inv_m = 1.0 / mass[i]
+            vx = v[i, 0] + dt * (f_work[i, 0] * inv_m + gx)
+            vy = v[i, 1] + dt * (f_work[i, 1] * inv_m + gy)
+            vz = v[i, 2] + dt * (f_work[i, 2] * inv_m + gz)
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+                s = node_link[i]
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[s, 0], spine[s, 1], spine[s, 2])
+            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > max_pen:
+                    status = DEEP_PENETRATION
+            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = NONFINITE
+            elif vx * vx + vy * vy + vz * vz > vmax2:
+                status = RUNAWAY_SPEED
+
+        # ---------------- (2) rigid step under the springs' forces
+        force[:, :] = 0.0
+        torque[:, :] = 0.0
+        rk.accumulate_point_forces(att_body, x_att, f_att, c, force, torque)
+        for i in range(n_rigid):
+            if kinematic[i]:
+                continue
+            rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
+                          impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
+                          n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
+                          kn, kt, target, lam)
+
+        # ---------------- (3) attached nodes follow the boxes
+        place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+        for a in range(n_fixed):
+            r = residual[a]
+            acc[ACC_RES_SUM] += r
+            if r > acc[ACC_RES_MAX]:
+                acc[ACC_RES_MAX] = r
+        acc[ACC_RES_COUNT] += n_fixed
+
+        for i in range(n_rigid):
+            hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
+            s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
+                 + w[i, 0] + w[i, 1] + w[i, 2] + q[i, 0] + q[i, 1] + q[i, 2] + q[i, 3])
+            if not math.isfinite(s):
+                status = NONFINITE
+                continue
+            speed = math.sqrt(vr[i, 0] ** 2 + vr[i, 1] ** 2 + vr[i, 2] ** 2)
+            spin = math.sqrt(w[i, 0] ** 2 + w[i, 1] ** 2 + w[i, 2] ** 2)
+            if speed + spin * math.sqrt(hx * hx + hy * hy + hz * hz) > vmax:
+                status = RUNAWAY_SPEED
+            for corner in range(rk.N_CORNERS):
+                sx = hx if (corner & 1) else -hx
+                sy = hy if (corner & 2) else -hy
+                sz = hz if (corner & 4) else -hz
+                px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
+                py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
+                pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
+                phi = signed_distance(terr_kind, terr, px, py, pz)
+                if phi < contact_dist:
+                    n_contact += 1
+                if -phi > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = -phi
+                if -phi > max_pen:
+                    status = DEEP_PENETRATION
+        acc[ACC_CONTACT_SUM] += n_contact / n_points
+        acc[ACC_STEPS] += 1.0
+        if status != OK:
+            return step + 1, status
+    return n_steps, OK
+
+
+class BodyRigidSpringChain:
+    """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
+
+    State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] of the link nodes (attached
+    rows always equal the boxes' points); the boxes' c, q, v, w in ``self.rigid``.
+    """
+
+    name = "massspring"
+
+    def __init__(self, case):
+        cre = case.creature
+        cfg = case.body
+        sc = case.scenario
+        self.case = case
+        self.layout = lay = chain_layout(cfg, cre)
+        self.mesh = mesh = build_chain(lay, cfg.link_density_kg_m3)
+        self.dt = float(case.dt)
+        self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
+        self.mass = mesh.mass.copy()
+        self.fixed = np.flatnonzero(mesh.attached).astype(np.int64)
+        self.free = np.flatnonzero(~mesh.attached).astype(np.int64)
+        self.att_body = np.ascontiguousarray(mesh.att_body[self.fixed])
+        self.springs = mesh.springs
+        self.rest = mesh.rest
+        self.stiffness = np.full(len(self.rest), cfg.link_stiffness_n_m)
+        self.damping = np.full(len(self.rest), cfg.link_damping_n_s_m)
+
+        half = np.array([0.5 * lay.rigid_length, 0.5 * lay.rigid_height, 0.5 * lay.rigid_width])
+        free_mass = float(self.mass[self.free].sum())
+        m_rigid = (cre.mass_kg - free_mass) / lay.n_rigid
+        if m_rigid <= 0.0:
+            raise ValueError(f"creature.mass_kg = {cre.mass_kg} kg is less than the free link nodes' {free_mass:.4g} kg")
+        self.rigid = RigidBoxes(np.tile(half, (lay.n_rigid, 1)), np.full(lay.n_rigid, m_rigid))
+        self.total_mass = m_rigid * lay.n_rigid + free_mass
+
+        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        self.fric_model, self.fric = friction_params(case.friction)
+        self.x = np.zeros_like(mesh.nodes)
+        self.v = np.zeros_like(mesh.nodes)
+        self._place(case, mesh, half)
+        self.att_local = np.ascontiguousarray(mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body])
+        if sc.suspended:
+            self.rigid.set_kinematic(0, True)
+
+        mu = case.friction.mu_transverse if cfg.rigid_friction_mu < 0.0 else cfg.rigid_friction_mu
+        self.contact = contact = ContactSettings(friction=mu, restitution=0.0)
+        phys = np.zeros(N_PHYS)
+        phys[DT] = self.dt
+        phys[R_N] = case.collision.r_n
+        phys[R_T] = case.collision.r_t
+        phys[MAX_SPEED] = case.stability.max_speed_m_s
+        phys[MAX_PEN] = case.stability.max_penetration_m
+        phys[RIGID_MU] = contact.friction
+        phys[RIGID_RESTITUTION] = contact.restitution
+        phys[BOUNCE_THRESHOLD] = contact.bounce_threshold
+        phys[VEL_ITERATIONS] = contact.velocity_iterations
+        phys[VEL_TOLERANCE] = contact.velocity_tolerance
+        phys[POS_ITERATIONS] = contact.position_iterations
+        phys[POS_BETA] = contact.position_beta
+        phys[SLOP] = contact.slop
+        self.phys = phys
+        n_nodes, n_fixed, n_rigid = len(self.x), len(self.fixed), lay.n_rigid
+        self._f_work = np.zeros((n_nodes, 3))
+        self._f_att = np.zeros((n_fixed, 3))
+        self._x_att = np.zeros((n_fixed, 3))
+        self._x_pred = np.zeros((n_fixed, 3))
+        self._residual = np.zeros(n_fixed)
+        self._spine = np.zeros((n_rigid - 1, 3))
+        self._Rb = np.zeros((n_rigid, 3, 3))
+        self._R = np.zeros((3, 3))
+        self._Iw = np.zeros((3, 3))
+        self._corner_of = np.zeros(rk.N_CORNERS, dtype=np.int64)
+        self._lin = np.zeros((rk.N_CORNERS, 3, 3))
+        self._ang = np.zeros((rk.N_CORNERS, 3, 3))
+        self._resp = np.zeros((rk.N_CORNERS, 3, 3))
+        self._kn = np.zeros(rk.N_CORNERS)
+        self._kt = np.zeros((rk.N_CORNERS, 6))
+        self._target = np.zeros(rk.N_CORNERS)
+        self._lam = np.zeros((rk.N_CORNERS, 3))
+        self._qtmp = np.zeros(4)
+        self.acc = np.zeros(N_ACC)
+        self.sync_attached()
+
+    def _place(self, case, mesh, half) -> None:
+        """The suite's placement rule (``bodies.placement``) applied to the nodes and box corners."""
+        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+        corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
+        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case)
+        q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)
+        x = mesh.nodes @ R0.T + t
+        sc = case.scenario
+        if sc.perturbation_m > 0:
+            free = ~mesh.attached
+            x[free] += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=(free.sum(), 3))
+        self.x[:] = x
+        self.v[:] = 0.0
+        c = mesh.rigid_centres @ R0.T + t
+        for i in range(self.layout.n_rigid):
+            self.rigid.set_pose(i, c=c[i], q=q0, v=np.zeros(3), w=np.zeros(3))
+
+    def sync_attached(self) -> None:
+        """Put the attached nodes on the boxes' current state."""
+        x_pred = np.ascontiguousarray(self.x[self.fixed])
+        place_attached_nodes(self.fixed, self.att_body, self.att_local, self.rigid.c, self.rigid.q,
+                             self.rigid.v, self.rigid.w, self._Rb, self.x, self.v, x_pred, self._residual)
+
+    # ------------------------------------------------------------------ stepping
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused."""
+        rb = self.rigid
+        return advance_chain(self.x, self.v, self.mass, self.free, self.fixed, self.att_body, self.att_local,
+                             self.mesh.node_link, self.springs, self.stiffness, self.damping, self.rest,
+                             rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
+                             rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
+                             self.phys, int(n_steps), self._f_work, self._f_att, self._x_att, self._x_pred,
+                             self._residual, self._spine, rb.force, rb.torque, self._Rb, self._R, self._Iw,
+                             self._corner_of, self._lin, self._ang, self._resp, self._kn, self._kt, self._target,
+                             self._lam, self.acc)
+
+    def _state(self):
+        rb = self.rigid
+        return [a.copy() for a in (self.x, self.v, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc)]
+
+    def _restore(self, saved) -> None:
+        rb = self.rigid
+        for dst, src in zip((self.x, self.v, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc), saved):
+            dst[...] = src
+
+    def compile(self) -> None:
+        """Trigger (or load from cache) the JIT compilation without changing the state."""
+        saved = self._state()
+        self.advance(0.0, 1)
+        self.set_support(np.zeros(self.layout.n_rigid, bool), *self.segment_poses(), self.dt)
+        self._restore(saved)
+
+    @staticmethod
+    def status_text(code: int) -> str:
+        return STATUS_TEXT.get(code, f"status {code}")
+
+    # ------------------------------------------------------------------ segment interface
+    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
+        """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the boxes."""
+        return self.rigid.c, self.rigid.rotation_matrices()
+
+    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
+        """Supported boxes (``kinematic`` (n,) bool) are put at (c_T (n, 3) [m], R_T (n, 3, 3)) with the
+        finite-difference velocities that take them there in dt [s] (Sec. 4.1); the others follow the dynamics."""
+        rb = self.rigid
+        R = rb.rotation_matrices()
+        rb.kinematic[:] = kinematic
+        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, np.ascontiguousarray(c_T, dtype=np.float64),
+                         np.ascontiguousarray(R_T, dtype=np.float64), float(dt), self._qtmp)
+        self.sync_attached()
+
+    @property
+    def body_length_m(self) -> float:
+        return self.layout.body_length
+
+    # ------------------------------------------------------------------ observation
+    def box_corners(self) -> np.ndarray:
+        """(n_rigid * 8, 3) [m] box corners."""
+        rb = self.rigid
+        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+        local = signs[None, :, :] * rb.half_extents[:, None, :]
+        return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", rb.rotation_matrices(), local)).reshape(-1, 3)
+
+    def segment_centers(self) -> np.ndarray:
+        """(2 n_rigid - 1, 3) [m]: rigid 0, link 0, rigid 1, ... (box centres, link node means)."""
+        n = self.layout.n_rigid
+        out = np.empty((2 * n - 1, 3))
+        out[0::2] = self.rigid.c
+        out[1::2] = self.x[self.mesh.link_nodes].mean(axis=1)
+        return out
+
+    def centre_of_mass(self) -> np.ndarray:
+        rb = self.rigid
+        return (rb.mass @ rb.c + self.mass[self.free] @ self.x[self.free]) / self.total_mass
+
+    def momentum(self) -> np.ndarray:
+        """(3,) [kg m/s] linear momentum of the boxes and the free nodes (attached nodes are the boxes')."""
+        rb = self.rigid
+        return rb.mass @ rb.v + self.mass[self.free] @ self.v[self.free]
+
+    def observe(self, t: float, with_nodes: bool = False) -> Observation:
+        rb = self.rigid
+        R = rb.rotation_matrices()
+        half_len = 0.5 * self.layout.rigid_length
+        head = rb.c[0] + R[0][:, 0] * half_len
+        tail = rb.c[-1] - R[-1][:, 0] * half_len
+        nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
+        return Observation(t=t, segment_centers=self.segment_centers(), com=self.centre_of_mass(), head=head,
+                           tail=tail, energy=np.array(self.energy(t)), nodes=nodes)
+
+    def energy(self, t: float = 0.0) -> tuple[float, float, float]:
+        """(kinetic, spring elastic 1/2 k (L - l)^2, gravitational from y = 0) [J] of boxes and free nodes."""
+        rb = self.rigid
+        e_r = rb.energy(self.gravity)
+        m = self.mass[self.free]
+        v = self.v[self.free]
+        kinetic = float(e_r.kinetic_linear.sum() + e_r.kinetic_rotational.sum() + 0.5 * np.einsum("i,ij,ij->", m, v, v))
+        d = self.x[self.springs[:, 1]] - self.x[self.springs[:, 0]]
+        elastic = float(0.5 * np.sum(self.stiffness * (np.linalg.norm(d, axis=1) - self.rest) ** 2))
+        g = -self.gravity[1]
+        grav = float(g * (rb.mass @ rb.c[:, 1] + m @ self.x[self.free, 1]))
+        return kinetic, elastic, grav
+
+    # ------------------------------------------------------------------ metrics
+    def extra_metrics(self) -> dict[str, float]:
+        """Coupling residual |x_p + dt v_p - x_p(box, n+1)| over all steps and attached nodes [m]."""
+        acc = self.acc
+        mean = acc[ACC_RES_SUM] / acc[ACC_RES_COUNT] if acc[ACC_RES_COUNT] > 0 else 0.0
+        return {"coupling_residual_max_m": float(acc[ACC_RES_MAX]), "coupling_residual_mean_m": float(mean)}
+
+    def contact_fraction_mean(self) -> float:
+        return float(self.acc[ACC_CONTACT_SUM] / max(self.acc[ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        return float(self.acc[ACC_MAX_PEN])
+
+
+__all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout"]
