@@ -227,14 +227,30 @@ def test_massspring_free_fall_linear_momentum_is_p0_plus_mg_t():
 
 
 # ------------------------------------------------------------------ walking
-@pytest.mark.parametrize("body", ["massspring", "fem"])
-def test_centipede_walks_forward_for_10_s(body):
-    r = run_case(_case(body))
-    m = r.metrics
-    print(f"{body}: speed {m['speed_m_per_s']:.3f} m/s, phase lag {m.get('phase_lag_mean')}, "
-          f"duty {m.get('duty_factor_mean')}, tracking {m.get('tracking_error_mean_m')}, "
-          f"{r.timings['steps_per_s']:.0f} steps/s")
-    assert r.status == "ok", r.message
-    assert m["speed_m_per_s"] > MIN_SPEED
-    assert np.isfinite(m["phase_lag_mean"]) and 0.0 < m["duty_factor_mean"] < 1.0
+@pytest.fixture(scope="module")
+def walks():
+    """The 18-segment centipede walking 10 s on each body model (one run each)."""
+    return {body: run_case(_case(body)) for body in ("hybrid", "massspring", "fem")}
 
+
+SIDE_BY_SIDE = ("speed_m_per_s", "phase_lag_mean", "duty_factor_mean", "stride_frequency_hz",
+                "stance_fraction_mean", "foot_slip_mean_m", "tracking_error_mean_m", "body_undulation_amp_bl")
+
+
+def test_the_centipede_walks_10_s_on_all_three_bodies_side_by_side(walks, capsys):
+    for body, r in walks.items():
+        assert r.status == "ok", (body, r.message)
+        assert r.metrics["speed_m_per_s"] > MIN_SPEED, body
+        assert np.isfinite(r.metrics["phase_lag_mean"]) and 0.0 < r.metrics["duty_factor_mean"] < 1.0, body
+    with capsys.disabled():
+        print("\n" + "metric".ljust(24) + "".join(b.rjust(13) for b in walks))
+        for k in SIDE_BY_SIDE + ("steps_per_s",):
+            vals = [r.timings[k] if k == "steps_per_s" else r.metrics.get(k, float("nan")) for r in walks.values()]
+            print(k.ljust(24) + "".join(f"{v:13.4g}" for v in vals))
+
+
+def test_supporting_the_all_fem_body_is_the_harder_control_problem(walks):
+    # paper Sec. 3: legs on deformable segments have only a local effect; the supported blocks of the
+    # fem body miss their targets by more than the rigid segments of the other two bodies
+    track = {b: r.metrics["tracking_error_mean_m"] for b, r in walks.items()}
+    assert track["fem"] > 3 * max(track["hybrid"], track["massspring"]), track
