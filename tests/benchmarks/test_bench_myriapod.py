@@ -22,9 +22,10 @@ def walking_body(segments: int, body: str = "hybrid"):
     return case, b
 
 
-@pytest.mark.parametrize("segments", [6, 18, 36, 100])
-def test_centipede_walk_step(benchmark, segments):
-    case, b = walking_body(segments)
+@pytest.mark.parametrize("body,segments", [("hybrid", 6), ("hybrid", 18), ("hybrid", 36), ("hybrid", 100),
+                                           ("massspring", 18), ("fem", 18)])
+def test_centipede_walk_step(benchmark, body, segments):
+    case, b = walking_body(segments, body)
     t = [WALK_IN_STEPS * case.dt]
 
     def chunk():
@@ -38,3 +39,4 @@ def test_centipede_walk_step(benchmark, segments):
         benchmark.extra_info["steps_per_s"] = STEPS_PER_CALL / median
         benchmark.extra_info["realtime_factor"] = STEPS_PER_CALL * case.dt / median
         benchmark.extra_info["segments"] = segments
+        benchmark.extra_info["body"] = body
