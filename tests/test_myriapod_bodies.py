@@ -254,3 +254,21 @@ def test_supporting_the_all_fem_body_is_the_harder_control_problem(walks):
     # fem body miss their targets by more than the rigid segments of the other two bodies
     track = {b: r.metrics["tracking_error_mean_m"] for b, r in walks.items()}
     assert track["fem"] > 3 * max(track["hybrid"], track["massspring"]), track
+
+
+@pytest.mark.parametrize("body", ["massspring", "fem"])
+@pytest.mark.parametrize("segments", [3, 100])
+def test_segment_counts_from_3_to_100_run(body, segments):
+    r = run_case(resolve_case("centipede", body, "walk", duration=0.3, overrides=[f"creature.segments={segments}"]))
+    assert r.status == "ok", r.message
+
+
+@pytest.mark.parametrize("body", ["massspring", "fem"])
+def test_hanging_head_stays_held_and_the_body_elongates(body):
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    r = run_case(resolve_case("centipede", body, "hang", duration=2.0))
+    assert r.status == "ok", r.message
+    assert r.metrics["hanging_elongation_m"] > 0.01
+    assert np.abs(r.series.head - r.series.head[0]).max() < 0.05  # the head does not fall
+    _, states, _ = r.extra["leg_timeline"]
+    assert not np.any(states == SW.STANCE)

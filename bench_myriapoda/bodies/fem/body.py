@@ -61,6 +61,7 @@ class FEMConfig:
                                       doc="fTetWild target edge length as a fraction of the bounding-box diagonal")
     # Legged creatures only (``fem.myriapod.BodyFEMChain``); the muscle-driven body ignores these keys.
     link_length_m: float = rng(-1.0, doc="legged chain: soft link length between two stiff blocks [m]; -1: half a segment")
+    block_density_kg_m3: float = rng(-1.0, doc="legged: density of the stiff blocks [kg/m^3]; -1: the rest of creature.mass_kg")
     rigid_stiffness_factor: float = rng(20.0, ge=1.0, doc="legged chain: Young's modulus of the segment blocks / E")
     support_stiffness_n_m: float = rng(1.0e7, gt=0.0,
                                        doc="legged chain: implicit penalty spring pulling a supported block's "

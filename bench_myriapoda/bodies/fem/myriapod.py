@@ -252,7 +252,10 @@ class BodyFEMChain:
         rho_link = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else 1.0
         in_block = tet_block >= 0
         m_links = rho_link * vol[~in_block].sum()
-        rho_block = (cre.mass_kg - m_links) / vol[in_block].sum()
+        if cfg.block_density_kg_m3 > 0:
+            rho_block = cfg.block_density_kg_m3
+        else:
+            rho_block = (cre.mass_kg - m_links) / vol[in_block].sum()
         if rho_block <= 0.0:
             raise ValueError(f"creature.mass_kg = {cre.mass_kg} kg is less than the links' mass {m_links:.4g} kg")
         E = np.where(in_block, cfg.youngs_modulus_pa * cfg.rigid_stiffness_factor, cfg.youngs_modulus_pa)
@@ -284,8 +287,10 @@ class BodyFEMChain:
         fem.v[:] = 0.0
         self.x, self.v = fem.x, fem.v
         self.support = np.zeros(n, dtype=np.bool_)
+        self._held = np.zeros(n, dtype=np.bool_)
         if sc.suspended:
-            self.support[0] = True  # the head block is held where it starts
+            self.support[0] = True  # the head block is held where it starts, whatever the controller asks
+            self._held[0] = True
         self.att_target = self.x[self.att_nodes].copy()
         self._f_work = np.zeros_like(self.x)
         self._b_work = np.zeros((len(self.solver.perm), 3))
@@ -340,8 +345,8 @@ class BodyFEMChain:
         offset from the block's best-fit pose (c, R) transported rigidly, and the implicit penalty pulls it
         there (module docstring).  Transporting the current offsets (not the rest shape) moves the block by
         exactly the rigid increment and never snaps a deformed block back in one step."""
-        self.support[:] = kinematic
-        sel = self.support[self.att_block]
+        self.support[:] = kinematic | self._held
+        sel = (kinematic & ~self._held)[self.att_block]  # held blocks keep their starting targets
         if sel.any():
             c, R = self.segment_poses()
             b = self.att_block[sel]

@@ -338,8 +338,10 @@ class BodyRigidSpringChain:
         self.v = np.zeros_like(mesh.nodes)
         self._place(case, mesh, half)
         self.att_local = np.ascontiguousarray(mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body])
+        self._held = np.zeros(lay.n_rigid, dtype=np.bool_)
         if sc.suspended:
             self.rigid.set_kinematic(0, True)
+            self._held[0] = True  # the suspended head stays held whatever the controller asks
 
         mu = case.friction.mu_transverse if cfg.rigid_friction_mu < 0.0 else cfg.rigid_friction_mu
         self.contact = contact = ContactSettings(friction=mu, restitution=0.0)
@@ -446,7 +448,7 @@ class BodyRigidSpringChain:
         finite-difference velocities that take them there in dt [s] (Sec. 4.1); the others follow the dynamics."""
         rb = self.rigid
         R = rb.rotation_matrices()
-        rb.kinematic[:] = kinematic
+        rb.kinematic[:] = kinematic | self._held
         drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, np.ascontiguousarray(c_T, dtype=np.float64),
                          np.ascontiguousarray(R_T, dtype=np.float64), float(dt), self._qtmp)
         self.sync_attached()
