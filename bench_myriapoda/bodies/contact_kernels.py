@@ -12,13 +12,19 @@ A step of a mass in contact has two parts, in this order:
    tangent, and the velocity likewise.  A curved surface can leave the
    reflected point inside: it is then pushed out along the normal, and the
    depth before that correction is returned as the penetration.
+
+``advance_point`` does both, plus the position update and the blow-up checks,
+for one free mass: every backend's step loop calls it for its free nodes.
 """
 from __future__ import annotations
+
+import math
 
 from numba import njit
 
 from ..world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
 from .friction_kernels import ground_friction
+from .step_status import ACC_MAX_PEN, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -62,3 +68,42 @@ def collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi_p, qx, qy, qz, phi_q
         qx, qy, qz = qx - phi_r * mx, qy - phi_r * my, qz - phi_r * mz
         return qx, qy, qz, vx, vy, vz, -phi_r
     return qx, qy, qz, vx, vy, vz, 0.0
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr, fric_model, fric, r_n, r_t,
+                  contact_dist, max_pen, max_speed2, acc, euler, ox, oy, oz):
+    """Move free point mass i one step: friction, position, Miller's collision, checks.
+
+    (vx, vy, vz): its velocity after the step's forces [m/s]; s: unit spine
+    vector at the mass (used by friction only when it touches); the position
+    update is x += dt v (semi-implicit), or x += dt (v_old + v) / 2 with
+    v_old = (ox, oy, oz) when ``euler`` (Miller's Euler).  Writes x[i], v[i]
+    (n, 3); raises acc[ACC_MAX_PEN] to the penetration left by a collision.
+    Returns (touching, status) with status a ``step_status`` code.
+    """
+    px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+    phi = signed_distance(terr_kind, terr, px, py, pz)
+    touching = phi < contact_dist
+    if touching:
+        vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz, sx, sy, sz)
+    if euler:
+        qx, qy, qz = px + 0.5 * dt * (ox + vx), py + 0.5 * dt * (oy + vy), pz + 0.5 * dt * (oz + vz)
+    else:
+        qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+    status = OK
+    phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+    if phi_q < 0.0:
+        qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                   qx, qy, qz, phi_q, vx, vy, vz)
+        if pen > acc[ACC_MAX_PEN]:
+            acc[ACC_MAX_PEN] = pen
+        if pen > max_pen:
+            status = DEEP_PENETRATION
+    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+    v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+    if not math.isfinite(qx + qy + qz + vx + vy + vz):
+        status = NONFINITE
+    elif vx * vx + vy * vy + vz * vz > max_speed2:
+        status = RUNAWAY_SPEED
+    return touching, status

@@ -22,10 +22,9 @@ import math
 from numba import njit
 
 from ...controllers.muscle_waves import segment_activation
-from ...world.terrain_kernels import signed_distance
-from ..contact_kernels import collide_path, contact_friction
+from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
-from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
+from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
 from .kernels import LANES, elastic_forces, semi_implicit_velocity
 
 # scalar parameter vector layout (``phys``)
@@ -127,29 +126,13 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, s_seg
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
-            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
-            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                s = node_seg[i]
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[s, 0], spine[s, 1], spine[s, 2])
-            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > phys[MAX_PEN]:
-                    status = DEEP_PENETRATION
-            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
-            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = NONFINITE
-            elif vx * vx + vy * vy + vz * vz > max_speed2:
-                status = RUNAWAY_SPEED
+            s = node_seg[i]
+            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1],
+                                         spine[s, 2], dt, terr_kind, terr, fric_model, fric, r_n, r_t,
+                                         contact_dist, phys[MAX_PEN], max_speed2, acc, False, 0.0, 0.0, 0.0)
+            n_contact += touching
+            if st != OK:
+                status = st
         acc[ACC_CONTACT_SUM] += n_contact / x.shape[0]
         acc[ACC_STEPS] += 1.0
         if status != OK:

@@ -49,9 +49,8 @@ import numpy as np
 from numba import njit
 
 from ...world.terrain import terrain_from_scenario
-from ...world.terrain_kernels import signed_distance
 from .. import step_status as S
-from ..contact_kernels import collide_path, contact_friction
+from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..observation import Observation
 from ..placement import place_points
@@ -194,29 +193,13 @@ def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
                 spine[s, 0], spine[s, 1], spine[s, 2] = 1.0, 0.0, 0.0
         n_contact = 0
         for i in range(n_nodes):
-            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                s = node_spine[i]
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[s, 0], spine[s, 1], spine[s, 2])
-            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[S.ACC_MAX_PEN]:
-                    acc[S.ACC_MAX_PEN] = pen
-                if pen > max_pen:
-                    status = S.DEEP_PENETRATION
-            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
-            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = S.NONFINITE
-            elif vx * vx + vy * vy + vz * vz > vmax2:
-                status = S.RUNAWAY_SPEED
+            s = node_spine[i]
+            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1], spine[s, 2],
+                                         dt, terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
+                                         vmax2, acc, False, 0.0, 0.0, 0.0)
+            n_contact += touching
+            if st != S.OK:
+                status = st
         acc[S.ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[S.ACC_STEPS] += 1.0
         if status != S.OK:

@@ -54,7 +54,7 @@ from numba import njit
 
 from ...world.terrain_kernels import signed_distance
 from .. import rigid_kernels as rk
-from ..contact_kernels import collide_path, contact_friction
+from ..contact_kernels import advance_point
 from ..fem.kernels import elastic_forces, semi_implicit_velocity
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -224,29 +224,13 @@ def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
-            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                s = node_link[i]
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[s, 0], spine[s, 1], spine[s, 2])
-            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > max_pen:
-                    status = DEEP_PENETRATION
-            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
-            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = NONFINITE
-            elif vx * vx + vy * vy + vz * vz > vmax2:
-                status = RUNAWAY_SPEED
+            s = node_link[i]
+            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1],
+                                         spine[s, 2], dt, terr_kind, terr, fric_model, fric, r_n, r_t,
+                                         contact_dist, max_pen, vmax2, acc, False, 0.0, 0.0, 0.0)
+            n_contact += touching
+            if st != OK:
+                status = st
 
         # ---------------- (2) rigid step under the mesh's forces (Sec. 3 step 2)
         force[:, :] = 0.0

@@ -47,7 +47,7 @@ from scipy.spatial.transform import Rotation
 from ...world.terrain import terrain_from_scenario
 from ...world.terrain_kernels import signed_distance
 from .. import rigid_kernels as rk
-from ..contact_kernels import collide_path, contact_friction
+from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..hybrid.kernels import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
                               N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
@@ -221,28 +221,13 @@ def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, sprin
             vx = v[i, 0] + dt * (f_work[i, 0] * inv_m + gx)
             vy = v[i, 1] + dt * (f_work[i, 1] * inv_m + gy)
             vz = v[i, 2] + dt * (f_work[i, 2] * inv_m + gz)
-            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                s = node_link[i]
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[s, 0], spine[s, 1], spine[s, 2])
-            qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > max_pen:
-                    status = DEEP_PENETRATION
-            x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
-            v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = NONFINITE
-            elif vx * vx + vy * vy + vz * vz > vmax2:
-                status = RUNAWAY_SPEED
+            s = node_link[i]
+            touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2], dt,
+                                         terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
+                                         vmax2, acc, False, 0.0, 0.0, 0.0)
+            n_contact += touching
+            if st != OK:
+                status = st
 
         # ---------------- (2) rigid step under the springs' forces
         force[:, :] = 0.0

@@ -55,7 +55,7 @@ class MyriapodController:
     """
 
     def __init__(self, case, n_segments: int, segment_pitch_m: float, record_every: int = 10):
-        cre, lg, ct, sc = case.creature, case.legs, case.controller, case.scenario
+        lg, ct, sc = case.legs, case.controller, case.scenario
         self.n_seg = n_segments
         self.n_legs = 2 * n_segments
         self.dt = case.dt
