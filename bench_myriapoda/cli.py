@@ -24,13 +24,15 @@ from .harness.progress import ProgressBar
 
 EXIT_OK, EXIT_FAIL, EXIT_BAD_INPUT = 0, 1, 2
 
-# The default quick set: one case per creature and gait across Miller's scenarios.
+# The default quick set: Miller's gaits on the lattice, the FEM worm, and the paper's centipede.
 QUICK_CASES = (
     ("worm", "massspring", "flat", "rectilinear", 20.0),
     ("worm", "massspring", "cliff", "rectilinear", 30.0),
     ("snake", "massspring", "flat", "lateral-undulation", 16.0),
     ("snake", "massspring", "flat", "sidewinding", 16.0),
     ("caterpillar", "massspring", "slope", "arching", 16.0),
+    ("worm", "fem", "flat", "rectilinear", 20.0),
+    ("centipede", "hybrid", "walk", "leg-wave", 6.0),
 )
 
 TABLE_METRICS = ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg", "slip_ratio",

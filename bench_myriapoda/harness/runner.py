@@ -109,6 +109,11 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))
+        if case.creature.legs_per_segment:
+            # these refer to a muscle wave's period and speed; a legged gait has its own stride metrics
+            for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
+                      "cycles_measured"):
+                metrics[k] = float("nan")
         metrics.update(body.extra_metrics())
         extra = {}
         if hasattr(body, "leg_timeline"):
