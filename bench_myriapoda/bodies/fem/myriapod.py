@@ -6,8 +6,8 @@ remapped, like ``chain_grid`` but with alternating block and link lengths)
 along -x from the head face at x = 0.  Block s (the rigid segment s of the
 hybrid) spans x in [-s P - L_rigid, -s P], link k the gap between block k and
 k + 1 (P = L_rigid + L_link).  Tets in a block have Young's modulus
-E * ``rigid_stiffness_factor`` and the density that makes the whole body weigh
-``creature.mass_kg``; link tets are the App. A material (E, nu, gamma,
+E * ``rigid_stiffness_factor`` and density ``block_density_kg_m3`` (default: what
+makes the whole body weigh ``creature.mass_kg``); link tets are the App. A material (E, nu, gamma,
 ``density_kg_m3``, default 1 kg/m^3).  Each part has the hybrid's cells along x
 (``resolution``), so a link is meshed exactly like the hybrid's link.
 
