@@ -77,6 +77,7 @@ from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
+from ..segment_chain import SegmentChainLayout
 from . import kernels as K
 
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
@@ -123,31 +124,7 @@ def default_dt(cfg: HybridConfig) -> float:
     return DT_PAPER
 
 
-@dataclass(frozen=True)
-class HybridLayout:
-    """Resolved sizes of a hybrid body [m]; cells (nx, ny, nz) of one link along (x, y, z)."""
-
-    n_rigid: int
-    rigid_length: float
-    rigid_width: float
-    rigid_height: float
-    link_length: float
-    link_width: float
-    link_height: float
-    cells: tuple
-
-    @property
-    def pitch(self) -> float:
-        """Distance between consecutive rigid centres [m]."""
-        return self.rigid_length + self.link_length
-
-    @property
-    def body_length(self) -> float:
-        """Head front face to tail back face [m]."""
-        return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
-
-
-def hybrid_layout(cfg: HybridConfig, creature) -> HybridLayout:
+def hybrid_layout(cfg: HybridConfig, creature) -> SegmentChainLayout:
     """Sizes of the body from the config, defaults taken from the creature (module docstring)."""
     if creature.segments < 2:
         raise ValueError(f"a hybrid body needs at least 2 rigid segments (one link); creature "
@@ -163,7 +140,7 @@ def hybrid_layout(cfg: HybridConfig, creature) -> HybridLayout:
         raise ValueError(f"the link cross-section {hl} x {wl} m (height x width) must fit on the rigid "
                          f"face {hr} x {wr} m")
     cells = segment_cells(cfg.resolution, cfg.resolution_unit)
-    return HybridLayout(creature.segments, lr, wr, hr, ll, wl, hl, cells)
+    return SegmentChainLayout(creature.segments, lr, wr, hr, ll, wl, hl, cells)
 
 
 @dataclass(frozen=True)
@@ -185,7 +162,7 @@ class HybridMesh:
     rigid_centres: np.ndarray
 
 
-def build_mesh(lay: HybridLayout, tets_per_cell: int = 6) -> HybridMesh:
+def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
     """Links between consecutive boxes: link k spans x in [-(k+1) P, -k P - L_rigid] (P the pitch)."""
     nx, ny, nz = lay.cells
     per_layer = (ny + 1) * (nz + 1)

@@ -56,6 +56,7 @@ from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
+from ..segment_chain import SegmentChainLayout
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 from ..step_status import STATUS_TEXT
 from .kernels import spring_forces
@@ -64,31 +65,7 @@ from .lattice import build_lattice
 DERIVED = -1.0
 
 
-@dataclass(frozen=True)
-class ChainLayout:
-    """Resolved sizes [m] of the chain; ``cells`` spring cubes along each link."""
-
-    n_rigid: int
-    rigid_length: float
-    rigid_width: float
-    rigid_height: float
-    link_length: float
-    link_width: float
-    link_height: float
-    cells: int
-
-    @property
-    def pitch(self) -> float:
-        """Distance between consecutive rigid centres [m]."""
-        return self.rigid_length + self.link_length
-
-    @property
-    def body_length(self) -> float:
-        """Head front face to tail back face [m]."""
-        return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
-
-
-def chain_layout(cfg, creature) -> ChainLayout:
+def chain_layout(cfg, creature) -> SegmentChainLayout:
     """Sizes from ``[bodies.massspring]`` with defaults from the creature (-1 = derived)."""
     if creature.segments < 2:
         raise ValueError(f"a rigid-spring chain needs at least 2 segments; {creature.name!r} has {creature.segments}")
@@ -103,7 +80,7 @@ def chain_layout(cfg, creature) -> ChainLayout:
         raise ValueError("rigid and link sizes must be positive")
     if wl > wr or hl > hr:
         raise ValueError(f"the link cross-section {hl} x {wl} m must fit on the rigid face {hr} x {wr} m")
-    return ChainLayout(creature.segments, lr, wr, hr, ll, wl, hl, int(cfg.link_cells))
+    return SegmentChainLayout(creature.segments, lr, wr, hr, ll, wl, hl, int(cfg.link_cells))
 
 
 @dataclass(frozen=True)
@@ -127,7 +104,7 @@ class ChainMesh:
     rigid_centres: np.ndarray
 
 
-def build_chain(lay: ChainLayout, density: float) -> ChainMesh:
+def build_chain(lay: SegmentChainLayout, density: float) -> ChainMesh:
     """Link k: a ``lay.cells``-cube Miller lattice spanning x in [-(k+1) P, -k P - L_rigid]."""
     P = lay.pitch
     nodes, springs, rest, node_link, mass, attached, att_body, link_nodes = [], [], [], [], [], [], [], []
