@@ -128,6 +128,88 @@ def link_spines(c, spine):
 
 
 @njit(cache=True, error_model="numpy")
+def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, residual,
+                        c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
+                        gravity, terr_kind, terr, fric, phys, force, torque, Rb,
+                        R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc):
+    """Sec. 3 steps 2 and 3 for rigid segments joined by deformable links; return (status, box corners touching).
+
+    Step 2: the links' forces on the attached nodes f_att (n_fixed, 3) [N], at
+    x_att (n_fixed, 3) [m], act on the boxes as force and torque, plus gravity;
+    one rigid step for every box that is not kinematic.  Step 3: the attached
+    nodes are moved onto the boxes (x, v updated for ``fixed``) and the
+    coupling residual accumulated.  Then the rigid checks: finite state, the
+    speed of any box point, corner depth after the position projection.
+    Shared by the hybrid (FEM links) and the legged mass-spring chain (spring links).
+    """
+    n_fixed = fixed.shape[0]
+    n_rigid = c.shape[0]
+    dt = phys[DT]
+    max_pen = phys[MAX_PEN]
+    vmax = phys[MAX_SPEED]
+    mu_r = phys[RIGID_MU]
+    e_r = phys[RIGID_RESTITUTION]
+    bounce = phys[BOUNCE_THRESHOLD]
+    n_vel = int(phys[VEL_ITERATIONS])
+    vel_tol = phys[VEL_TOLERANCE]
+    n_pos = int(phys[POS_ITERATIONS])
+    beta = phys[POS_BETA]
+    slop = phys[SLOP]
+    contact_dist = fric[CONTACT_DISTANCE]
+    status = OK
+    n_contact = 0
+    # (2) rigid step under the links' forces
+    force[:, :] = 0.0
+    torque[:, :] = 0.0
+    rk.accumulate_point_forces(att_body, x_att, f_att, c, force, torque)
+    for i in range(n_rigid):
+        if kinematic[i]:
+            continue
+        rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
+                      impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
+                      n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
+                      kn, kt, target, lam)
+
+    # (3) attached nodes follow the rigid bodies
+    place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+    for a in range(n_fixed):
+        r = residual[a]
+        acc[ACC_RES_SUM] += r
+        if r > acc[ACC_RES_MAX]:
+            acc[ACC_RES_MAX] = r
+    acc[ACC_RES_COUNT] += n_fixed
+
+    # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
+    # corner depth (after the position projection) and contact count.
+    for i in range(n_rigid):
+        hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
+        s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
+             + w[i, 0] + w[i, 1] + w[i, 2] + q[i, 0] + q[i, 1] + q[i, 2] + q[i, 3])
+        if not math.isfinite(s):
+            status = NONFINITE
+            continue
+        speed = math.sqrt(vr[i, 0] ** 2 + vr[i, 1] ** 2 + vr[i, 2] ** 2)
+        spin = math.sqrt(w[i, 0] ** 2 + w[i, 1] ** 2 + w[i, 2] ** 2)
+        if speed + spin * math.sqrt(hx * hx + hy * hy + hz * hz) > vmax:
+            status = RUNAWAY_SPEED
+        for corner in range(N_CORNERS):
+            sx = hx if (corner & 1) else -hx
+            sy = hy if (corner & 2) else -hy
+            sz = hz if (corner & 4) else -hz
+            px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
+            py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
+            pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+            if -phi > acc[ACC_MAX_PEN]:
+                acc[ACC_MAX_PEN] = -phi
+            if -phi > max_pen:
+                status = DEEP_PENETRATION
+    return status, n_contact
+
+
+@njit(cache=True, error_model="numpy")
 def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
@@ -173,14 +255,14 @@ def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
     max_pen = phys[MAX_PEN]
     vmax = phys[MAX_SPEED]
     vmax2 = vmax * vmax
-    mu_r = phys[RIGID_MU]
-    e_r = phys[RIGID_RESTITUTION]
-    bounce = phys[BOUNCE_THRESHOLD]
-    n_vel = int(phys[VEL_ITERATIONS])
-    vel_tol = phys[VEL_TOLERANCE]
-    n_pos = int(phys[POS_ITERATIONS])
-    beta = phys[POS_BETA]
-    slop = phys[SLOP]
+    phys[RIGID_MU]
+    phys[RIGID_RESTITUTION]
+    phys[BOUNCE_THRESHOLD]
+    int(phys[VEL_ITERATIONS])
+    phys[VEL_TOLERANCE]
+    int(phys[POS_ITERATIONS])
+    phys[POS_BETA]
+    phys[SLOP]
     contact_dist = fric[CONTACT_DISTANCE]
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     n_points = n_free + N_CORNERS * n_rigid
@@ -232,54 +314,14 @@ def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
             if st != OK:
                 status = st
 
-        # ---------------- (2) rigid step under the mesh's forces (Sec. 3 step 2)
-        force[:, :] = 0.0
-        torque[:, :] = 0.0
-        rk.accumulate_point_forces(att_body, x_att, f_att, c, force, torque)
-        for i in range(n_rigid):
-            if kinematic[i]:
-                continue
-            rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
-                          impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
-                          n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
-                          kn, kt, target, lam)
-
-        # ---------------- (3) attached nodes follow the rigid bodies (Sec. 3 step 3)
-        place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
-        for a in range(n_fixed):
-            r = residual[a]
-            acc[ACC_RES_SUM] += r
-            if r > acc[ACC_RES_MAX]:
-                acc[ACC_RES_MAX] = r
-        acc[ACC_RES_COUNT] += n_fixed
-
-        # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
-        # corner depth (after the position projection) and contact count.
-        for i in range(n_rigid):
-            hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
-            s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
-                 + w[i, 0] + w[i, 1] + w[i, 2] + q[i, 0] + q[i, 1] + q[i, 2] + q[i, 3])
-            if not math.isfinite(s):
-                status = NONFINITE
-                continue
-            speed = math.sqrt(vr[i, 0] ** 2 + vr[i, 1] ** 2 + vr[i, 2] ** 2)
-            spin = math.sqrt(w[i, 0] ** 2 + w[i, 1] ** 2 + w[i, 2] ** 2)
-            if speed + spin * math.sqrt(hx * hx + hy * hy + hz * hz) > vmax:
-                status = RUNAWAY_SPEED
-            for corner in range(N_CORNERS):
-                sx = hx if (corner & 1) else -hx
-                sy = hy if (corner & 2) else -hy
-                sz = hz if (corner & 4) else -hz
-                px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
-                py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
-                pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
-                phi = signed_distance(terr_kind, terr, px, py, pz)
-                if phi < contact_dist:
-                    n_contact += 1
-                if -phi > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = -phi
-                if -phi > max_pen:
-                    status = DEEP_PENETRATION
+        # ---------------- (2) rigid step under the mesh's forces, (3) attached nodes follow (Sec. 3)
+        st, nc = rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, residual,
+                                     c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
+                                     gravity, terr_kind, terr, fric, phys, force, torque, Rb,
+                                     R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
+        n_contact += nc
+        if st != OK:
+            status = st
         acc[ACC_CONTACT_SUM] += n_contact / n_points
         acc[ACC_STEPS] += 1.0
         if status != OK:

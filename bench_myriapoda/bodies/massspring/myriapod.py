@@ -37,7 +37,6 @@ nodes weigh ``creature.mass_kg``.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,11 +44,10 @@ from numba import njit
 from scipy.spatial.transform import Rotation
 
 from ...world.terrain import terrain_from_scenario
-from ...world.terrain_kernels import signed_distance
 from .. import rigid_kernels as rk
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
-from ..hybrid.kernels import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
+from ..hybrid.kernels import (rigid_segments_step, ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
                               N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
                               VEL_ITERATIONS, VEL_TOLERANCE, link_spines, place_attached_nodes)
 from ..kinematic_targets import drive_to_targets
@@ -57,7 +55,7 @@ from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..segment_chain import SegmentChainLayout
-from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
+from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
 from .kernels import spring_forces
 from .lattice import build_lattice
@@ -168,14 +166,14 @@ def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, sprin
     max_pen = phys[MAX_PEN]
     vmax = phys[MAX_SPEED]
     vmax2 = vmax * vmax
-    mu_r = phys[RIGID_MU]
-    e_r = phys[RIGID_RESTITUTION]
-    bounce = phys[BOUNCE_THRESHOLD]
-    n_vel = int(phys[VEL_ITERATIONS])
-    vel_tol = phys[VEL_TOLERANCE]
-    n_pos = int(phys[POS_ITERATIONS])
-    beta = phys[POS_BETA]
-    slop = phys[SLOP]
+    phys[RIGID_MU]
+    phys[RIGID_RESTITUTION]
+    phys[BOUNCE_THRESHOLD]
+    int(phys[VEL_ITERATIONS])
+    phys[VEL_TOLERANCE]
+    int(phys[POS_ITERATIONS])
+    phys[POS_BETA]
+    phys[SLOP]
     contact_dist = fric[CONTACT_DISTANCE]
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     n_points = n_free + rk.N_CORNERS * n_rigid
@@ -206,52 +204,14 @@ def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, sprin
             if st != OK:
                 status = st
 
-        # ---------------- (2) rigid step under the springs' forces
-        force[:, :] = 0.0
-        torque[:, :] = 0.0
-        rk.accumulate_point_forces(att_body, x_att, f_att, c, force, torque)
-        for i in range(n_rigid):
-            if kinematic[i]:
-                continue
-            rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
-                          impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
-                          n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
-                          kn, kt, target, lam)
-
-        # ---------------- (3) attached nodes follow the boxes
-        place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
-        for a in range(n_fixed):
-            r = residual[a]
-            acc[ACC_RES_SUM] += r
-            if r > acc[ACC_RES_MAX]:
-                acc[ACC_RES_MAX] = r
-        acc[ACC_RES_COUNT] += n_fixed
-
-        for i in range(n_rigid):
-            hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
-            s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
-                 + w[i, 0] + w[i, 1] + w[i, 2] + q[i, 0] + q[i, 1] + q[i, 2] + q[i, 3])
-            if not math.isfinite(s):
-                status = NONFINITE
-                continue
-            speed = math.sqrt(vr[i, 0] ** 2 + vr[i, 1] ** 2 + vr[i, 2] ** 2)
-            spin = math.sqrt(w[i, 0] ** 2 + w[i, 1] ** 2 + w[i, 2] ** 2)
-            if speed + spin * math.sqrt(hx * hx + hy * hy + hz * hz) > vmax:
-                status = RUNAWAY_SPEED
-            for corner in range(rk.N_CORNERS):
-                sx = hx if (corner & 1) else -hx
-                sy = hy if (corner & 2) else -hy
-                sz = hz if (corner & 4) else -hz
-                px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
-                py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
-                pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
-                phi = signed_distance(terr_kind, terr, px, py, pz)
-                if phi < contact_dist:
-                    n_contact += 1
-                if -phi > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = -phi
-                if -phi > max_pen:
-                    status = DEEP_PENETRATION
+        # ---------------- (2) rigid step under the springs' forces, (3) attached nodes follow
+        st, nc = rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, residual,
+                                     c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
+                                     gravity, terr_kind, terr, fric, phys, force, torque, Rb,
+                                     R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
+        n_contact += nc
+        if st != OK:
+            status = st
         acc[ACC_CONTACT_SUM] += n_contact / n_points
         acc[ACC_STEPS] += 1.0
         if status != OK:
