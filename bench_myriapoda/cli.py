@@ -4,6 +4,7 @@
     bench-myriapoda list [--json]        creatures, bodies, gaits, scenarios, supported combinations
     bench-myriapoda run --creature C --body B --scenario S [...]   one case
     bench-myriapoda stable-dt --creature C --body B --scenario S [...]   largest stable dt
+    bench-myriapoda matrix FILE [--executor local|dask] [--resume] [...]  a whole scenario matrix
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -73,6 +74,19 @@ def build_parser() -> argparse.ArgumentParser:
     q = sub.add_parser("quick", help="run the default quick set of cases (also what no arguments do)")
     q.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     q.add_argument("--json", action="store_true", help="print one JSON object per case, one per line")
+
+    mx = sub.add_parser("matrix", help="run a scenario matrix (scenarios/matrix/NAME.toml) on a process pool or Dask")
+    mx.add_argument("file", metavar="FILE", help="matrix file (.toml) or a name in scenarios/matrix/")
+    mx.add_argument("--executor", choices=("local", "dask"), default="local",
+                    help="local: a process pool on this machine (default); dask: a dask.distributed cluster")
+    mx.add_argument("--workers", type=int, metavar="N", default=None, help="worker processes (default: CPU count)")
+    mx.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                    help="dask scheduler address (default: start a LocalCluster)")
+    mx.add_argument("--resume", action="store_true", help="run only the cases without a result in the store")
+    mx.add_argument("--timeout-per-case", type=float, metavar="SECONDS", default=None,
+                    help="record a case that runs longer as status timeout and stop its worker")
+    mx.add_argument("--out", metavar="DIR", default=None,
+                    help="results.sqlite and results.csv go here (default reports/matrix/NAME)")
     return p
 
 
@@ -283,6 +297,87 @@ def cmd_quick(args) -> int:
     return worst
 
 
+def cmd_matrix(args) -> int:
+    """Expand a matrix file, list what is not supported, run the rest, store and tabulate the results.
+
+    Exit 0 when every case ran to a status ok or unstable, 1 when any case of the matrix (this run or an
+    earlier one that --resume kept) is error or timeout, 2 for bad input (nothing written).
+    """
+    import time
+
+    from .harness.executors import matrix_rows, run_matrix
+    from .harness.matrix import expand_matrix, locate_matrix
+
+    if args.workers is not None and args.workers < 1:
+        raise InputError("--workers", None, f"{args.workers} is out of range; must be >= 1")
+    if args.timeout_per_case is not None and not args.timeout_per_case > 0:
+        raise InputError("--timeout-per-case", None, f"{args.timeout_per_case} is out of range; must be > 0")
+    if args.scheduler and args.executor != "dask":
+        raise InputError("--scheduler", None, "only meaningful with --executor dask")
+    if args.executor == "dask":
+        try:
+            import dask.distributed  # noqa: F401
+        except ImportError:
+            raise InputError("--executor", None, "dask is not installed; pip install 'dask[distributed]'") from None
+    exp = expand_matrix(locate_matrix(args.file))
+    out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name
+    if out.exists() and not out.is_dir():
+        raise InputError("--out", None, f"{out} exists and is not a directory")
+    store = out / "results.sqlite"
+    print(f"matrix {exp.name}: {len(exp.cases)} cases ({exp.excluded} excluded, {exp.duplicates} duplicates, "
+          f"{len(exp.unsupported)} unsupported combinations)")
+    if exp.unsupported:
+        print("unsupported combinations (not run):")
+        for u in exp.unsupported:
+            print(f"  {u}")
+    if not exp.cases:
+        raise InputError(str(exp.path), None, "no case left to run after exclusions and unsupported combinations")
+    labels = {m.case.case_hash(): m.label for m in exp.cases}
+    tty = sys.stderr.isatty()
+    t0, failed = time.perf_counter(), 0
+
+    def on_result(result, done, total):
+        nonlocal failed
+        failed += result.status in ("error", "timeout")
+        if tty:
+            el = time.perf_counter() - t0
+            eta = el / done * (total - done)
+            print(f"[{done}/{total}] failed {failed}  eta {eta:.0f}s  {labels[result.case.case_hash()]}: {result.status}"
+                  + (f" ({result.message})" if result.message else ""), file=sys.stderr)
+
+    cases = [m.case for m in exp.cases]
+    run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
+               timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
+               resume=args.resume)
+    rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
+    rows = rows[rows.case_hash.isin(labels)]
+    table = []
+    for _, r in rows.iterrows():
+        m = json.loads(r.metrics_json)
+        case = json.loads(r.case_json)
+        axes = next(mc.axes for mc in exp.cases if mc.case.case_hash() == r.case_hash)
+        table.append({"case_hash": r.case_hash, **{k: v for k, v in axes.items()}, "dt": case["dt"],
+                      "duration": case["duration"], "status": r.status, "message": r.message or "",
+                      **{k: m.get(k) for k in TABLE_METRICS}, "steps_per_s": r.steps_per_s, "wall_s": r.wall_s,
+                      **{f"metric.{k}": v for k, v in sorted(m.items())}})
+    import pandas as pd
+    df = pd.DataFrame(table)
+    df.to_csv(out / "results.csv", index=False)
+    try:
+        df.to_parquet(out / "results.parquet", index=False)
+    except ImportError:  # pyarrow (or fastparquet) not installed: CSV only
+        pass
+    head = ["creature", "body", "gait", "scenario", "status", *TABLE_METRICS[:3], "steps_per_s"]
+    lines = [head] + [[_fmt(t.get(k)) for k in head] for t in table]
+    widths = [max(len(str(row[i])) for row in lines) for i in range(len(head))]
+    for row in lines:
+        print("  ".join(str(v).ljust(w) for v, w in zip(row, widths)))
+    missing = set(labels) - set(rows.case_hash)
+    bad = sum(t["status"] in ("error", "timeout") for t in table)
+    print(f"{len(table)} of {len(labels)} cases stored in {store}; {bad} error or timeout; table in {out / 'results.csv'}")
+    return EXIT_FAIL if bad or missing else EXIT_OK
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
@@ -290,7 +385,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv or ["quick"])
         if args.command is None:
             args = parser.parse_args(["quick", *argv])
-        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt}[args.command](args)
+        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
+                "matrix": cmd_matrix}[args.command](args)
     except InputError as exc:
         print(f"bench-myriapoda: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

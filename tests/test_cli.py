@@ -218,3 +218,19 @@ def test_cliff_worm_slides_off_the_book():
     assert r.series.com[0, 1] > slab_top            # starts above the book
     assert r.series.com[-1, 1] < 0.5 * slab_top     # ends on the floor below it
     assert r.series.com[-1, 0] > case.scenario.slab_edge_x_m
+
+
+def test_a_store_from_before_later_columns_is_upgraded_on_open(tmp_path, capsys):
+    import sqlite3 as sq
+    db = tmp_path / "old.sqlite"
+    con = sq.connect(db)
+    con.executescript("CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, case_hash TEXT NOT NULL, creature TEXT,"
+                      " body TEXT, gait TEXT, scenario TEXT, status TEXT NOT NULL, message TEXT, case_json TEXT NOT NULL,"
+                      " metrics_json TEXT NOT NULL, timings_json TEXT NOT NULL, steps INTEGER, steps_per_s REAL,"
+                      " realtime_factor REAL, compile_s REAL, wall_s REAL, git_commit TEXT, git_dirty INTEGER,"
+                      " machine_json TEXT NOT NULL, cpu_model TEXT, cpu_count INTEGER, python_version TEXT,"
+                      " numpy_version TEXT, numba_version TEXT, timestamp TEXT NOT NULL);")
+    con.close()
+    assert main([*RUN, "--json", "--store", str(db)]) == 0
+    cols = {r[1] for r in sq.connect(db).execute("PRAGMA table_info(runs)")}
+    assert {"command", "labels_json", "matrix"} <= cols

@@ -58,13 +58,32 @@ def connect(path: Path | str = DEFAULT_STORE) -> sqlite3.Connection:
     path.parent.mkdir(parents=True, exist_ok=True)
     con = sqlite3.connect(path, timeout=60)
     con.executescript(SCHEMA)
+    _add_missing_columns(con)
     return con
 
 
-def record_run(path: Path | str, result, command: str = "run") -> int:
+# Columns added after the first release of the store; an older database gets them on open.
+LATER_COLUMNS = (("command", "TEXT NOT NULL DEFAULT 'run'"), ("labels_json", "TEXT NOT NULL DEFAULT '{}'"),
+                 ("matrix", "TEXT DEFAULT NULL"))  # matrix: the matrix name of a ``matrix`` row, else NULL
+
+
+def _add_missing_columns(con: sqlite3.Connection) -> None:
+    have = {row[1] for row in con.execute("PRAGMA table_info(runs)")}
+    for name, decl in LATER_COLUMNS:
+        if name not in have:
+            try:
+                with con:
+                    con.execute(f"ALTER TABLE runs ADD COLUMN {name} {decl}")
+            except sqlite3.OperationalError as exc:  # another process added it first
+                if "duplicate column" not in str(exc):
+                    raise
+
+
+def record_run(path: Path | str, result, command: str = "run", matrix: str | None = None) -> int:
     """Insert a ``RunResult`` in one transaction; return its run id.
 
-    ``command`` says what produced the row: ``run``, ``quick``, ``stable-dt``.
+    ``command`` says what produced the row: ``run``, ``quick``, ``stable-dt``, ``matrix``;
+    ``matrix`` is the matrix name of a ``matrix`` row.
     """
     case = result.case.to_dict()
     mach = machine_fingerprint()
@@ -77,8 +96,8 @@ def record_run(path: Path | str, result, command: str = "run") -> int:
             cur = con.execute(
                 "INSERT INTO runs (case_hash, command, creature, body, gait, scenario, status, message, case_json, metrics_json,"
                 " timings_json, labels_json, steps, steps_per_s, realtime_factor, compile_s, wall_s, git_commit, git_dirty,"
-                " machine_json, cpu_model, cpu_count, python_version, numpy_version, numba_version, timestamp)"
-                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                " machine_json, cpu_model, cpu_count, python_version, numpy_version, numba_version, timestamp, matrix)"
+                " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
                 (result.case.case_hash(), command, case["creature"]["name"], case["body"]["name"], case["gait"]["name"],
                  case["scenario"]["name"], result.status, result.message, json.dumps(case, sort_keys=True),
                  json.dumps(metrics, sort_keys=True), json.dumps(timings, sort_keys=True),
@@ -86,7 +105,7 @@ def record_run(path: Path | str, result, command: str = "run") -> int:
                  timings.get("steps_per_s"), timings.get("realtime_factor"), timings.get("compile_s"),
                  timings.get("wall_s"), commit, None if dirty is None else int(dirty), json.dumps(mach, sort_keys=True),
                  mach["cpu_model"], mach["cpu_count"], mach["python"], mach["numpy"], mach["numba"],
-                 time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())))
+                 time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), matrix))
             run_id = cur.lastrowid
             con.executemany("INSERT INTO metrics (run_id, name, value) VALUES (?,?,?)",
                             [(run_id, k, v if isinstance(v, (int, float)) else None) for k, v in metrics.items()])

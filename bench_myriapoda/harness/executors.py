@@ -1,0 +1,290 @@
+"""Running many cases: a local process pool or a Dask cluster, one store row per case.
+
+:func:`run_matrix` runs resolved cases and records each result in the SQLite
+store from this (the parent) process only, one transaction per case, tagged
+``command = 'matrix'`` and ``matrix = NAME``.  Workers never touch the store.
+
+``local``: ``workers`` long-lived ``spawn`` processes, each fed one case at a
+time over a pipe.  A case that outruns ``timeout_per_case`` (measured from the
+moment it is handed to a worker) is recorded with status ``timeout``; its worker
+is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
+recorded as ``error`` with its exit code and replaced.  A case that raises is
+already status ``error`` from :func:`run_case`.
+
+``dask``: the same cases as ``dask.distributed`` tasks on the cluster at
+``scheduler`` (``Client(ADDRESS)``), or on a ``LocalCluster`` of ``workers``
+single-threaded workers.  The timeout clock starts when the scheduler reports
+the task processing on a worker; a case that outruns it is recorded as
+``timeout`` and its future cancelled, but Dask cannot stop a running task: the
+worker thread stays busy until the case ends (on a LocalCluster with worker
+processes the worker is restarted).
+
+Resume (``resume=True``): cases whose ``case_hash`` already has a row for this
+matrix in the store are skipped, so an interrupted matrix picks up where it
+stopped; a result is stored only once it is complete, so no case is stored
+twice and there is no partial row.
+"""
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+import signal
+import sqlite3
+import time
+from collections import deque
+from dataclasses import dataclass
+from multiprocessing.connection import wait as mp_wait
+from pathlib import Path
+from typing import Callable, Sequence
+
+from ..core.config import Case
+from .runner import RunResult, run_case
+from .store import connect, record_run
+
+EXECUTORS = ("local", "dask")
+STARTUP_GRACE_S = 120.0  # a fresh worker's imports before its first case do not count against the timeout
+
+
+def slim_result(result: RunResult) -> RunResult:
+    """A result without its time series and traceback: what crosses a process boundary."""
+    extra = {"labels": result.extra["labels"]} if "labels" in result.extra else {}
+    return RunResult(result.case, result.status, result.metrics, result.timings, result.message, None, extra)
+
+
+def run_case_slim(case: Case) -> RunResult:
+    """:func:`run_case` for a worker: never raises, returns no series."""
+    return slim_result(run_case(case))
+
+
+def _nan_timings(wall_s: float) -> dict[str, float]:
+    nan = float("nan")
+    return {"steps": 0, "steps_per_s": nan, "realtime_factor": nan, "compile_s": nan, "wall_s": wall_s}
+
+
+def timeout_result(case: Case, timeout: float, wall_s: float) -> RunResult:
+    return RunResult(case, "timeout", {}, _nan_timings(wall_s),
+                     f"outran the per-case timeout of {timeout:g} s; its worker was stopped")
+
+
+def died_result(case: Case, exitcode: int | None, wall_s: float) -> RunResult:
+    how = f"signal {-exitcode}" if exitcode is not None and exitcode < 0 else f"exit code {exitcode}"
+    return RunResult(case, "error", {}, _nan_timings(wall_s), f"worker process died ({how}) while running the case")
+
+
+def done_hashes(store_path: Path | str, matrix: str) -> set[str]:
+    """Case hashes that already have a row for ``matrix`` in the store (empty when there is no store)."""
+    if not Path(store_path).exists():
+        return set()
+    con = connect(store_path)
+    try:
+        return {h for (h,) in con.execute("SELECT case_hash FROM runs WHERE command = 'matrix' AND matrix = ?", (matrix,))}
+    finally:
+        con.close()
+
+
+# --------------------------------------------------------------------------- local
+
+def _worker_main(conn) -> None:
+    """A local worker: receive ``(index, case)``; send ``("started", index)``, then ``("done", slim result)``.
+
+    ``None`` ends it.  The body models are imported once, before the first case.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and stops its workers
+    from ..core import registry
+    registry.load_all()
+    while True:
+        try:
+            msg = conn.recv()
+        except (EOFError, OSError):
+            return
+        if msg is None:
+            return
+        index, case = msg
+        conn.send(("started", index))
+        conn.send(("done", run_case_slim(case)))
+
+
+@dataclass
+class _Slot:
+    proc: mp.Process
+    conn: object
+    job: tuple[int, Case] | None = None
+    started: float = 0.0  # when the case was handed over, then when the worker reported starting it
+    running: bool = False
+
+    def deadline(self, timeout: float) -> float:
+        """A case times out ``timeout`` s after its worker starts it; a worker still starting up gets a grace."""
+        return self.started + timeout + (0.0 if self.running else STARTUP_GRACE_S)
+
+    def stop(self, kill: bool = False) -> None:
+        if self.proc.is_alive():
+            if kill:
+                self.proc.kill()
+            else:
+                try:
+                    self.conn.send(None)
+                except (OSError, ValueError):
+                    self.proc.kill()
+        self.proc.join(timeout=5)
+        if self.proc.is_alive():
+            self.proc.kill()
+            self.proc.join()
+        self.conn.close()
+
+
+def _start_slot(ctx) -> _Slot:
+    parent, child = ctx.Pipe(duplex=True)
+    proc = ctx.Process(target=_worker_main, args=(child,), daemon=True, name="bench-myriapoda-matrix-worker")
+    proc.start()
+    child.close()
+    return _Slot(proc, parent)
+
+
+def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None]) -> None:
+    ctx = mp.get_context("spawn")
+    pending = deque(enumerate(cases))
+    slots = [_start_slot(ctx) for _ in range(max(1, min(workers, len(cases))))]
+    try:
+        while pending or any(s.job for s in slots):
+            for s in slots:
+                if s.job is None and pending:
+                    s.job = pending.popleft()
+                    s.started, s.running = time.monotonic(), False
+                    s.conn.send(s.job)
+            busy = [s for s in slots if s.job]
+            wait_s = None
+            if timeout is not None:
+                wait_s = max(0.0, min(s.deadline(timeout) for s in busy) - time.monotonic())
+            mp_wait([s.conn for s in busy] + [s.proc.sentinel for s in busy], timeout=wait_s)
+            for i, s in enumerate(slots):
+                if s.job is None:
+                    continue
+                _, case = s.job
+                result = None
+                while result is None and s.conn.poll():
+                    try:
+                        kind, payload = s.conn.recv()
+                    except (EOFError, OSError):
+                        break
+                    if kind == "started":  # the clock starts when the worker starts the case
+                        s.started, s.running = time.monotonic(), True
+                    else:
+                        result = payload
+                elapsed = time.monotonic() - s.started
+                if result is None and not s.proc.is_alive():
+                    s.proc.join()
+                    result = died_result(case, s.proc.exitcode, elapsed)
+                    s.stop(kill=True)
+                    slots[i] = _start_slot(ctx)
+                elif result is None and timeout is not None and time.monotonic() >= s.deadline(timeout):
+                    result = timeout_result(case, timeout, elapsed)
+                    s.stop(kill=True)
+                    slots[i] = _start_slot(ctx)
+                if result is not None:
+                    slots[i].job = None
+                    emit(result)
+    finally:
+        for s in slots:
+            s.stop(kill=s.job is not None)
+
+
+# --------------------------------------------------------------------------- dask
+
+def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeout: float | None,
+              emit: Callable[[RunResult], None], processes: bool = True) -> None:
+    from dask.distributed import Client, LocalCluster, wait  # optional dependency: imported only here
+
+    cluster = None
+    if scheduler:
+        client = Client(scheduler)
+    else:
+        cluster = LocalCluster(n_workers=max(1, workers), threads_per_worker=1, processes=processes,
+                               dashboard_address=None)
+        client = Client(cluster)
+    try:
+        futures = {client.submit(run_case_slim, case, pure=False): case for case in cases}
+        started: dict[str, float] = {}
+        remaining = set(futures)
+        while remaining:
+            done, _ = wait(list(remaining), timeout=0.5 if timeout is not None else None, return_when="FIRST_COMPLETED")
+            for fut in done:
+                remaining.discard(fut)
+                case = futures[fut]
+                if fut.status == "finished":
+                    emit(fut.result())
+                else:  # the task failed outside run_case (a worker died, a pickling error)
+                    exc = fut.exception()
+                    emit(RunResult(case, "error", {}, _nan_timings(float("nan")),
+                                   f"dask task {fut.status}: {type(exc).__name__}: {exc}"))
+            if timeout is None or not remaining:
+                continue
+            now = time.monotonic()
+            processing = {key: addr for addr, keys in client.processing().items() for key in keys}
+            for fut in list(remaining):
+                if fut.key in processing:
+                    started.setdefault(fut.key, now)
+                if fut.key in started and now - started[fut.key] >= timeout:
+                    remaining.discard(fut)
+                    fut.cancel()
+                    emit(timeout_result(futures[fut], timeout, now - started[fut.key]))
+                    if cluster is not None and processes:
+                        try:
+                            client.restart_workers([processing[fut.key]])
+                        except Exception:  # best effort: the case is recorded either way
+                            pass
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+# --------------------------------------------------------------------------- entry point
+
+def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | None = None, scheduler: str | None = None,
+               timeout_per_case: float | None = None, store_path: Path | str = "results.sqlite",
+               on_result: Callable[[RunResult, int, int], None] | None = None, *, matrix: str = "matrix",
+               resume: bool = False, dask_processes: bool = True) -> list[RunResult]:
+    """Run ``cases`` and record each result in ``store_path`` as it arrives.
+
+    Returns this call's results in the order they finished.  ``on_result(result,
+    done, total)`` is called after each result is stored.  With ``resume``,
+    cases already stored for ``matrix`` are skipped (``total`` counts only the
+    cases left).  Duplicate cases (equal hashes) run once.
+    """
+    if executor not in EXECUTORS:
+        raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
+    skip = done_hashes(store_path, matrix) if resume else set()
+    todo, seen = [], set(skip)
+    for c in cases:
+        h = c.case_hash()
+        if h not in seen:
+            seen.add(h)
+            todo.append(c)
+    results: list[RunResult] = []
+    if not todo:
+        return results
+    workers = workers or os.cpu_count() or 1
+
+    def emit(result: RunResult) -> None:
+        record_run(store_path, result, command="matrix", matrix=matrix)
+        results.append(result)
+        if on_result is not None:
+            on_result(result, len(results), len(todo))
+
+    if executor == "local":
+        _run_local(todo, workers, timeout_per_case, emit)
+    else:
+        _run_dask(todo, workers, scheduler, timeout_per_case, emit, processes=dask_processes)
+    return results
+
+
+def matrix_rows(store_path: Path | str, matrix: str):
+    """This matrix's rows of ``runs`` as a DataFrame, in the order they were stored."""
+    import pandas as pd
+
+    con = sqlite3.connect(store_path)
+    try:
+        return pd.read_sql("SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", con,
+                           params=(matrix,))
+    finally:
+        con.close()

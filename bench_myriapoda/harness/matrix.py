@@ -1,0 +1,318 @@
+"""Scenario matrices: a TOML file that expands into many resolved cases.
+
+A matrix file (``scenarios/matrix/NAME.toml``) names axes whose product is the
+set of cases to run::
+
+    [matrix]
+    name = "demo"                       # optional; default: the file name
+    description = "..."
+    creatures = ["worm", "snake"]
+    bodies = ["massspring", "fem"]
+    gaits = ["default"]                 # optional; "default" is each creature's default gait
+    scenarios = ["flat"]
+    seeds = [0, 1]                      # optional
+    duration = 2.0                      # optional, seconds
+    set = { "creature.segments" = 6 }   # optional: fixed overrides for every case
+    [matrix.grid]                       # optional: any dotted key -> list of values
+    "dt" = [0.001, 0.002]
+    "friction.mu_transverse" = [0.2, 0.5]
+
+    [[block]]                           # optional: more products, unioned with [matrix]'s;
+    creatures = ["chain"]               # a block's keys replace [matrix]'s for that block
+    bodies = ["hybrid"]
+
+    [[exclude]]                         # optional: drop every case matching all these keys
+    creature = "snake"
+    body = "fem"
+    "friction.mu_transverse" = 0.5      # a grid key; a list means "any of"
+
+When a ``[[block]]`` is given, the cases are the union of the blocks' products
+and ``[matrix]`` only supplies their defaults; without blocks ``[matrix]`` is the
+one block.  Every case is resolved with :func:`resolve_case` before anything
+runs, so a bad key or value in a grid is reported as an ``InputError`` naming
+the matrix file and the key.  A combination that resolution rejects as an
+"unsupported combination" (a worm with the sidewinding gait, a worm on the
+hybrid body, a ``body.*`` grid key the body model lacks) is not an error: it is
+listed in :attr:`Expansion.unsupported` and not run.  Cases that resolve to the
+same configuration (equal :meth:`Case.case_hash`) are run once.
+"""
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..core import registry
+from ..core.config import Case, creature_names, read_toml, resolve_case, scenario_paths
+from ..core.errors import InputError
+from ..core.paths import scenarios_dir
+
+AXIS_KEYS = {"creatures": "creature", "bodies": "body", "gaits": "gait", "scenarios": "scenario", "seeds": "seed"}
+BLOCK_KEYS = set(AXIS_KEYS) | {"grid", "set", "duration"}
+MATRIX_KEYS = BLOCK_KEYS | {"name", "description"}
+TOP_TABLES = {"matrix", "block", "exclude"}
+REQUIRED_AXES = ("creatures", "bodies", "scenarios")
+DEFAULT_GAIT = "default"
+UNSUPPORTED = "unsupported combination"
+
+
+@dataclass(frozen=True)
+class MatrixCase:
+    """One resolved case of a matrix and the axis values that produced it."""
+
+    case: Case
+    axes: dict[str, Any]  # creature, body, gait (resolved name), scenario, seed, and every grid key
+
+    @property
+    def label(self) -> str:
+        a = self.axes
+        grid = " ".join(f"{k}={v}" for k, v in a.items() if k not in ("creature", "body", "gait", "scenario", "seed"))
+        seed = "" if a.get("seed") is None else f" seed={a['seed']}"
+        return f"{a['creature']}/{a['body']}/{a['gait']}/{a['scenario']}{seed}" + (f" {grid}" if grid else "")
+
+
+@dataclass(frozen=True)
+class Unsupported:
+    """A combination resolution rejected; listed before the run, never run."""
+
+    creature: str
+    body: str
+    gait: str
+    scenario: str
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.creature}/{self.body}/{self.gait}/{self.scenario}: {self.reason}"
+
+
+@dataclass
+class Expansion:
+    """The cases of a matrix file, with what was left out and why."""
+
+    name: str
+    path: Path
+    description: str
+    cases: list[MatrixCase]
+    unsupported: list[Unsupported]
+    excluded: int = 0  # distinct cases removed by [[exclude]]
+    duplicates: int = 0  # grid points that resolved to a case already in the matrix
+    grid_keys: list[str] = field(default_factory=list)
+
+
+# --------------------------------------------------------------------------- loading
+
+def matrix_paths() -> dict[str, Path]:
+    """Matrix name -> file, for ``scenarios/matrix/*.toml``."""
+    d = scenarios_dir() / "matrix"
+    return {p.stem: p for p in sorted(d.glob("*.toml"))} if d.is_dir() else {}
+
+
+def locate_matrix(name_or_path: str) -> Path:
+    """A matrix file from a path or a name in ``scenarios/matrix/``."""
+    p = Path(name_or_path)
+    if p.suffix == ".toml" or p.exists():
+        return p
+    known = matrix_paths()
+    if name_or_path not in known:
+        raise InputError("matrix", None, f"unknown matrix {name_or_path!r}; give a .toml path or one of "
+                                         f"{', '.join(sorted(known)) or '(none found)'}")
+    return known[name_or_path]
+
+
+def _check_list(src: str, key: str, value: Any, item_type: type | tuple) -> list:
+    if not isinstance(value, list) or not value:
+        raise InputError(src, key, f"expected a non-empty list, got {value!r}")
+    for v in value:
+        if isinstance(v, bool) and item_type is not bool or not isinstance(v, item_type):
+            name = item_type.__name__ if isinstance(item_type, type) else " or ".join(t.__name__ for t in item_type)
+            raise InputError(src, key, f"expected a list of {name}, got item {v!r}")
+    return value
+
+
+def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[str, Any]:
+    """Types and names of one ``[matrix]`` or ``[[block]]`` table."""
+    if not isinstance(table, dict):
+        raise InputError(src, prefix, "expected a table")
+    for key in table:
+        if key not in allowed:
+            raise InputError(src, f"{prefix}.{key}", f"unknown key; allowed: {', '.join(sorted(allowed))}")
+    out = dict(table)
+    for key in ("creatures", "bodies", "gaits", "scenarios"):
+        if key in out:
+            _check_list(src, f"{prefix}.{key}", out[key], str)
+    if "seeds" in out:
+        _check_list(src, f"{prefix}.seeds", out["seeds"], int)
+        if any(s < 0 for s in out["seeds"]):
+            raise InputError(src, f"{prefix}.seeds", "seeds must be >= 0")
+    if "duration" in out:
+        d = out["duration"]
+        if isinstance(d, bool) or not isinstance(d, (int, float)) or not d > 0:
+            raise InputError(src, f"{prefix}.duration", f"expected a number of seconds > 0, got {d!r}")
+    for key in ("name", "description"):
+        if key in out and not isinstance(out[key], str):
+            raise InputError(src, f"{prefix}.{key}", f"expected a string, got {out[key]!r}")
+    if "set" in out and not isinstance(out["set"], dict):
+        raise InputError(src, f"{prefix}.set", "expected a table of dotted keys and values")
+    if "grid" in out:
+        if not isinstance(out["grid"], dict) or not out["grid"]:
+            raise InputError(src, f"{prefix}.grid", "expected a table of dotted keys and lists of values")
+        for k, v in out["grid"].items():
+            if not isinstance(v, list) or not v:
+                raise InputError(src, f"{prefix}.grid.{k}", f"expected a non-empty list of values, got {v!r}")
+    registry.load_all()
+    names = {"creatures": creature_names(), "bodies": sorted(registry.BODIES),
+             "gaits": sorted(registry.GAITS) + [DEFAULT_GAIT], "scenarios": sorted(scenario_paths())}
+    for key, known in names.items():
+        for v in out.get(key, ()):
+            if v not in known and not (key in ("creatures", "scenarios") and v.endswith(".toml")):
+                raise InputError(src, f"{prefix}.{key}", f"unknown {AXIS_KEYS[key]} {v!r}; choose one of {', '.join(known)}")
+    return out
+
+
+def load_matrix(path: Path | str) -> dict[str, Any]:
+    """Read and type-check a matrix file; returns ``{"name", "description", "blocks", "exclude"}``.
+
+    Each block is a complete set of axes (``[matrix]``'s keys filled in).
+    Raises :class:`InputError` naming the file and the key.
+    """
+    path = Path(path)
+    src = str(path)
+    data = read_toml(path)
+    for table in data:
+        if table not in TOP_TABLES:
+            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(TOP_TABLES))}")
+    if "matrix" not in data:
+        raise InputError(src, "matrix", "missing table [matrix]")
+    base = _check_block(src, "matrix", data["matrix"], MATRIX_KEYS)
+    raw_blocks = data.get("block", [])
+    if not isinstance(raw_blocks, list):
+        raise InputError(src, "block", "expected an array of tables [[block]]")
+    blocks = []
+    shared = {k: v for k, v in base.items() if k in BLOCK_KEYS}
+    for i, b in enumerate(raw_blocks or [None]):
+        blk = dict(shared) if b is None else {**shared, **_check_block(src, f"block[{i}]", b, BLOCK_KEYS)}
+        prefix = "matrix" if b is None else f"block[{i}]"
+        for key in REQUIRED_AXES:
+            if key not in blk:
+                raise InputError(src, f"{prefix}.{key}", "missing axis (give it in [matrix] or in the block)")
+        blk.setdefault("gaits", [DEFAULT_GAIT])
+        blk["_prefix"] = prefix
+        blocks.append(blk)
+    excludes = data.get("exclude", [])
+    if not isinstance(excludes, list) or not all(isinstance(e, dict) and e for e in excludes):
+        raise InputError(src, "exclude", "expected an array of non-empty tables [[exclude]]")
+    axis_names = set(AXIS_KEYS.values()) | {k for b in blocks for k in b.get("grid", {})}
+    for i, e in enumerate(excludes):
+        for k in e:
+            if k not in axis_names:
+                raise InputError(src, f"exclude[{i}].{k}", f"not an axis of this matrix; axes: {', '.join(sorted(axis_names))}")
+    return {"name": base.get("name", path.stem), "description": base.get("description", ""),
+            "blocks": blocks, "exclude": excludes}
+
+
+# --------------------------------------------------------------------------- expansion
+
+def _toml_value(v: Any) -> str:
+    """A value as TOML text, the form ``--set KEY=VALUE`` reads."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v) if not (isinstance(v, float) and math.isinf(v)) else ("inf" if v > 0 else "-inf")
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise TypeError(f"cannot write {v!r} as TOML")
+
+
+def _matches(rule: dict[str, Any], axes: dict[str, Any]) -> bool:
+    for k, want in rule.items():
+        have = axes.get(k)
+        options = want if isinstance(want, list) else [want]
+        if not any(have == w and isinstance(have, bool) == isinstance(w, bool) for w in options):
+            return False
+    return True
+
+
+def _body_fields(body: str) -> set[str]:
+    return {f.name for f in dataclasses.fields(registry.BODIES[body].config_cls)}
+
+
+def expand_matrix(path: Path | str) -> Expansion:
+    """Load ``path`` and resolve every case of its product (see the module docstring)."""
+    path = Path(path)
+    src = str(path)
+    spec = load_matrix(path)
+    cases: list[MatrixCase] = []
+    unsupported: dict[tuple, Unsupported] = {}
+    seen: set[str] = set()
+    excluded: set[str] = set()  # hashes of excluded cases, so a duplicate is not counted twice
+    duplicates = 0
+    grid_keys: list[str] = []
+    for blk in spec["blocks"]:
+        prefix = blk["_prefix"]
+        grid: dict[str, list] = blk.get("grid", {})
+        fixed: dict[str, Any] = blk.get("set", {})
+        grid_keys += [k for k in grid if k not in grid_keys]
+        # a body.* key must belong to some body model of the block; bodies without it are unsupported
+        for kind, table in (("grid", grid), ("set", fixed)):
+            for key in table:
+                if key.startswith("body.") and not any(key[5:] in _body_fields(b) for b in blk["bodies"]):
+                    raise InputError(src, f"{prefix}.{kind}.{key}", f"unknown key for body models "
+                                                                    f"{', '.join(blk['bodies'])}")
+        seeds = blk.get("seeds", [None])
+        grid_items = list(grid.items())
+        for creature, body, gait, scenario, seed in itertools.product(
+                blk["creatures"], blk["bodies"], blk["gaits"], blk["scenarios"], seeds):
+            for values in itertools.product(*(v for _, v in grid_items)):
+                point = dict(zip((k for k, _ in grid_items), values))
+                gait_arg = None if gait == DEFAULT_GAIT else gait
+                missing = [k for k in list(fixed) + list(point) if k.startswith("body.") and k[5:] not in _body_fields(body)]
+                if missing:
+                    u = Unsupported(creature, body, gait, scenario, f"{UNSUPPORTED}: body {body!r} has no key "
+                                                                    f"{', '.join(missing)}")
+                    unsupported.setdefault((creature, body, gait, scenario, u.reason), u)
+                    continue
+                overrides = [f"{k}={_toml_value(v)}" for k, v in {**fixed, **point}.items()]
+                try:
+                    case = resolve_case(creature, body, scenario, gait_arg, duration=blk.get("duration"),
+                                        seed=seed, overrides=overrides)
+                except InputError as exc:
+                    if UNSUPPORTED in exc.message:
+                        u = Unsupported(creature, body, gait, scenario, exc.message)
+                        unsupported.setdefault((creature, body, gait, scenario, exc.message), u)
+                        continue
+                    raise _in_file(exc, src, prefix, grid, fixed) from None
+                axes = {"creature": creature, "body": body, "gait": case.gait.name, "scenario": scenario,
+                        "seed": seed, **point}
+                h = case.case_hash()
+                if h in seen or h in excluded:
+                    duplicates += 1
+                    continue
+                if any(_matches(rule, axes) for rule in spec["exclude"]):
+                    excluded.add(h)
+                    continue
+                seen.add(h)
+                cases.append(MatrixCase(case, axes))
+    return Expansion(spec["name"], path, spec["description"], cases, list(unsupported.values()), len(excluded),
+                     duplicates, grid_keys)
+
+
+def _in_file(exc: InputError, src: str, prefix: str, grid: dict, fixed: dict) -> InputError:
+    """Re-attribute an error of resolution to the matrix file and the key that caused it."""
+    flag_axes = {"--creature": "creatures", "--body": "bodies", "--gait": "gaits", "--scenario": "scenarios",
+                 "--seed": "seeds", "--duration": "duration"}
+    if exc.source.startswith("--"):
+        key = exc.key or exc.source.lstrip("-")
+        if key in grid:
+            key = f"{prefix}.grid.{key}"
+        elif key in fixed:
+            key = f"{prefix}.set.{key}"
+        else:
+            key = f"{prefix}.{flag_axes.get(exc.source, key)}"
+        return InputError(src, key, exc.message)
+    return exc  # an error inside a creature or scenario file already names that file
