@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 
 @dataclass(frozen=True)
 class SegmentChainLayout:
@@ -35,3 +37,40 @@ class SegmentChainLayout:
     def body_length(self) -> float:
         """Head front face to tail back face [m]."""
         return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
+
+
+@dataclass(frozen=True)
+class CouplingScratch:
+    """Work arrays of ``hybrid.kernels.rigid_segments_step`` (Sec. 3 steps 2-3), allocated once per body.
+
+    f_att, x_att, x_pred (n_fixed, 3) and residual (n_fixed,): attached nodes' forces, positions,
+    predicted positions, coupling residuals; spine (n_rigid - 1, 3); Rb (n_rigid, 3, 3) box
+    rotations; the rest is the rigid contact solver's per-box scratch (``rigid_kernels``).
+    """
+
+    f_att: np.ndarray
+    x_att: np.ndarray
+    x_pred: np.ndarray
+    residual: np.ndarray
+    spine: np.ndarray
+    Rb: np.ndarray
+    R: np.ndarray
+    Iw: np.ndarray
+    corner_of: np.ndarray
+    lin: np.ndarray
+    ang: np.ndarray
+    resp: np.ndarray
+    kn: np.ndarray
+    kt: np.ndarray
+    target: np.ndarray
+    lam: np.ndarray
+    qtmp: np.ndarray
+
+    @classmethod
+    def new(cls, n_fixed: int, n_rigid: int, n_corners: int) -> "CouplingScratch":
+        z = np.zeros
+        return cls(f_att=z((n_fixed, 3)), x_att=z((n_fixed, 3)), x_pred=z((n_fixed, 3)), residual=z(n_fixed),
+                   spine=z((n_rigid - 1, 3)), Rb=z((n_rigid, 3, 3)), R=z((3, 3)), Iw=z((3, 3)),
+                   corner_of=z(n_corners, dtype=np.int64), lin=z((n_corners, 3, 3)), ang=z((n_corners, 3, 3)),
+                   resp=z((n_corners, 3, 3)), kn=z(n_corners), kt=z((n_corners, 6)), target=z(n_corners),
+                   lam=z((n_corners, 3)), qtmp=z(4))

@@ -85,6 +85,17 @@ def read_toml(path: Path) -> dict[str, Any]:
         raise InputError(str(path), None, f"malformed TOML: {exc}") from None
 
 
+def read_tables(path: Path, allowed: set[str], required: str) -> dict[str, Any]:
+    """A TOML file whose top-level tables must be among ``allowed`` and include ``required``."""
+    data = read_toml(path)
+    for table in data:
+        if table not in allowed:
+            raise InputError(str(path), table, f"unknown table; allowed: {', '.join(sorted(allowed))}")
+    if required not in data:
+        raise InputError(str(path), required, f"missing table [{required}]")
+    return data
+
+
 def _available(directory: Path, pattern: str) -> list[str]:
     return sorted(p.stem for p in directory.glob(pattern)) if directory.is_dir() else []
 
@@ -114,13 +125,8 @@ def _locate(name: str, kind: str, flag: str, known: Mapping[str, Path]) -> Path:
 
 def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
     path = _locate(name, "creature", "--creature", {n: models_dir() / f"{n}.toml" for n in creature_names()})
-    data = read_toml(path)
+    data = read_tables(path, CREATURE_FILE_TABLES, "creature")
     src = str(path)
-    for table in data:
-        if table not in CREATURE_FILE_TABLES:
-            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(CREATURE_FILE_TABLES))}")
-    if "creature" not in data:
-        raise InputError(src, "creature", "missing table [creature]")
     check_section(CreatureConfig, data["creature"], src, "creature")
     for table in ("legs", "controller", "friction", "collision", "record", "stability", "metrics"):
         if table in data:
@@ -142,13 +148,8 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
 
 def load_scenario_file(name: str) -> tuple[Path, dict[str, Any]]:
     path = _locate(name, "scenario", "--scenario", scenario_paths())
-    data = read_toml(path)
+    data = read_tables(path, SCENARIO_FILE_TABLES, "scenario")
     src = str(path)
-    for table in data:
-        if table not in SCENARIO_FILE_TABLES:
-            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(SCENARIO_FILE_TABLES))}")
-    if "scenario" not in data:
-        raise InputError(src, "scenario", "missing table [scenario]")
     for table in data:
         check_section(SECTIONS[table], data[table], src, table)
     return path, data

@@ -47,7 +47,7 @@ from pathlib import Path
 from typing import Any
 
 from ..core import registry
-from ..core.config import Case, creature_names, read_toml, resolve_case, scenario_paths
+from ..core.config import Case, creature_names, read_tables, resolve_case, scenario_paths
 from ..core.errors import InputError
 from ..core.paths import scenarios_dir
 
@@ -181,12 +181,7 @@ def load_matrix(path: Path | str) -> dict[str, Any]:
     """
     path = Path(path)
     src = str(path)
-    data = read_toml(path)
-    for table in data:
-        if table not in TOP_TABLES:
-            raise InputError(src, table, f"unknown table; allowed: {', '.join(sorted(TOP_TABLES))}")
-    if "matrix" not in data:
-        raise InputError(src, "matrix", "missing table [matrix]")
+    data = read_tables(path, TOP_TABLES, "matrix")
     base = _check_block(src, "matrix", data["matrix"], MATRIX_KEYS)
     raw_blocks = data.get("block", [])
     if not isinstance(raw_blocks, list):

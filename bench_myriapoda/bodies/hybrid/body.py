@@ -77,7 +77,7 @@ from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
-from ..segment_chain import SegmentChainLayout
+from ..segment_chain import CouplingScratch, SegmentChainLayout
 from . import kernels as K
 
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
@@ -271,24 +271,8 @@ class BodyHybrid:
         n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
         self._b_work = np.zeros((len(self.free), 3))
-        self._f_att = np.zeros((n_fixed, 3))
-        self._x_att = np.zeros((n_fixed, 3))
-        self._x_pred = np.zeros((n_fixed, 3))
-        self._residual = np.zeros(n_fixed)
-        self._spine = np.zeros((n_rigid - 1, 3))
-        self._Rb = np.zeros((n_rigid, 3, 3))
-        self._R = np.zeros((3, 3))
-        self._Iw = np.zeros((3, 3))
-        self._corner_of = np.zeros(rk.N_CORNERS, dtype=np.int64)
-        self._lin = np.zeros((rk.N_CORNERS, 3, 3))
-        self._ang = np.zeros((rk.N_CORNERS, 3, 3))
-        self._resp = np.zeros((rk.N_CORNERS, 3, 3))
-        self._kn = np.zeros(rk.N_CORNERS)
-        self._kt = np.zeros((rk.N_CORNERS, 6))
-        self._target = np.zeros(rk.N_CORNERS)
-        self._lam = np.zeros((rk.N_CORNERS, 3))
+        self.scratch = CouplingScratch.new(n_fixed, n_rigid, rk.N_CORNERS)
         self.acc = np.zeros(K.N_ACC)
-        self._qtmp = np.zeros(4)
         self._J = np.zeros(fem.n_tets)
         self._sigma = np.zeros((fem.n_tets, 3))
         self._reset_samples()
@@ -331,7 +315,7 @@ class BodyHybrid:
         """Put the attached nodes on the boxes' current state (after editing the rigid state by hand)."""
         x_pred = np.ascontiguousarray(self.x[self.fixed])
         K.place_attached_nodes(self.fixed, self.att_body, self.att_local, self.rigid.c, self.rigid.q,
-                               self.rigid.v, self.rigid.w, self._Rb, self.x, self.v, x_pred, self._residual)
+                               self.rigid.v, self.rigid.w, self.scratch.Rb, self.x, self.v, x_pred, self.scratch.residual)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
@@ -347,9 +331,9 @@ class BodyHybrid:
                          rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
                          rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
                          self.phys, int(n_steps),
-                         self._f_work, self._b_work, self._f_att, self._x_att, self._x_pred, self._residual,
-                         self._spine, rb.force, rb.torque, self._Rb, self._R, self._Iw, self._corner_of,
-                         self._lin, self._ang, self._resp, self._kn, self._kt, self._target, self._lam, self.acc)
+                         self._f_work, self._b_work, self.scratch.f_att, self.scratch.x_att, self.scratch.x_pred, self.scratch.residual,
+                         self.scratch.spine, rb.force, rb.torque, self.scratch.Rb, self.scratch.R, self.scratch.Iw, self.scratch.corner_of,
+                         self.scratch.lin, self.scratch.ang, self.scratch.resp, self.scratch.kn, self.scratch.kt, self.scratch.target, self.scratch.lam, self.acc)
 
     def _state(self):
         rb = self.rigid
@@ -399,7 +383,7 @@ class BodyHybrid:
         R = rb.rotation_matrices()
         # a held segment (the suspended head) stays held whatever the controller asks
         rb.kinematic[:] = kinematic | self._held
-        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, c_T, R_T, dt, self._qtmp)
+        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, c_T, R_T, dt, self.scratch.qtmp)
         self.sync_attached()
 
     @property
@@ -454,9 +438,9 @@ class BodyHybrid:
         if origin is None:
             origin = self.centre_of_mass()
         out = np.zeros(6)
-        rk.quat_to_matrix(rb.q, self._Rb)
+        rk.quat_to_matrix(rb.q, self.scratch.Rb)
         K.momenta(self.x, self.v, self.fem.mass, self.free, rb.c, rb.v, rb.w, rb.mass, rb.inertia_body,
-                  self._Rb, np.ascontiguousarray(origin, dtype=np.float64), out)
+                  self.scratch.Rb, np.ascontiguousarray(origin, dtype=np.float64), out)
         return out[:3].copy(), out[3:].copy()
 
     # ------------------------------------------------------------------ metrics
