@@ -1,10 +1,12 @@
 """``bench-myriapoda``: the command line.
 
-    bench-myriapoda                      run the default quick set of cases, print a table, store results
+    bench-myriapoda                      run scenarios/matrix/quick.toml, write reports/quick/index.html
     bench-myriapoda list [--json]        creatures, bodies, gaits, scenarios, supported combinations
     bench-myriapoda run --creature C --body B --scenario S [...]   one case
     bench-myriapoda stable-dt --creature C --body B --scenario S [...]   largest stable dt
     bench-myriapoda matrix FILE [--executor local|dask] [--resume] [...]  a whole scenario matrix
+    bench-myriapoda report DIR [--baseline DIR2]   index.html and summary.md of a matrix run
+    bench-myriapoda regress [--baseline COMMIT_OR_RUN] [...]   throughput suite vs. the stored history
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -25,16 +27,9 @@ from .harness.progress import ProgressBar
 
 EXIT_OK, EXIT_FAIL, EXIT_BAD_INPUT = 0, 1, 2
 
-# The default quick set: Miller's gaits on the lattice, the FEM worm, and the paper's centipede.
-QUICK_CASES = (
-    ("worm", "massspring", "flat", "rectilinear", 20.0),
-    ("worm", "massspring", "cliff", "rectilinear", 30.0),
-    ("snake", "massspring", "flat", "lateral-undulation", 16.0),
-    ("snake", "massspring", "flat", "sidewinding", 16.0),
-    ("caterpillar", "massspring", "slope", "arching", 16.0),
-    ("worm", "fem", "flat", "rectilinear", 20.0),
-    ("centipede", "hybrid", "walk", "leg-wave", 6.0),
-)
+# What no arguments do: this matrix, written (with its report) to this directory.
+QUICK_MATRIX = "quick"
+QUICK_OUT = Path("reports") / "quick"
 
 TABLE_METRICS = ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg", "slip_ratio",
                  "path_following_error_bl", "contact_fraction", "t_fail_s")
@@ -62,6 +57,12 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--no-store", action="store_true", help="do not record the run in the results database")
     run.add_argument("--strict", action="store_true", help="exit 1 when the run is unstable")
     run.add_argument("--plot-gait", metavar="FILE.png", help="draw the gait diagram (legs x time, paper Fig. 10)")
+    run.add_argument("--animate", metavar="FILE", help="animation of the body from above and from the side "
+                                                       "(.gif, or .mp4 with ffmpeg)")
+    run.add_argument("--export-frames", metavar="DIR", help="one mesh per recorded sample (DIR/frame_00000.obj ...) "
+                                                            "and DIR/frames.json, for Blender or Maya")
+    run.add_argument("--frame-format", choices=("obj", "ply"), default=None,
+                     help="mesh format of --export-frames (default obj)")
 
     sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
     _case_arguments(sd)
@@ -71,9 +72,10 @@ def build_parser() -> argparse.ArgumentParser:
     sd.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     sd.add_argument("--no-store", action="store_true", help="do not record the result in the results database")
 
-    q = sub.add_parser("quick", help="run the default quick set of cases (also what no arguments do)")
-    q.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
-    q.add_argument("--json", action="store_true", help="print one JSON object per case, one per line")
+    q = sub.add_parser("quick", help="run scenarios/matrix/quick.toml and write reports/quick/index.html "
+                                     "(also what no arguments do)")
+    q.add_argument("--out", metavar="DIR", default=str(QUICK_OUT), help=f"output directory (default {QUICK_OUT})")
+    q.add_argument("--workers", type=int, metavar="N", default=None, help="worker processes (default: CPU count)")
 
     mx = sub.add_parser("matrix", help="run a scenario matrix (scenarios/matrix/NAME.toml) on a process pool or Dask")
     mx.add_argument("file", metavar="FILE", help="matrix file (.toml) or a name in scenarios/matrix/")
@@ -86,7 +88,31 @@ def build_parser() -> argparse.ArgumentParser:
     mx.add_argument("--timeout-per-case", type=float, metavar="SECONDS", default=None,
                     help="record a case that runs longer as status timeout and stop its worker")
     mx.add_argument("--out", metavar="DIR", default=None,
-                    help="results.sqlite and results.csv go here (default reports/matrix/NAME)")
+                    help="results.sqlite, results.csv, matrix.json and series/ go here (default reports/matrix/NAME)")
+    mx.add_argument("--report", action="store_true", help="write DIR/index.html and DIR/summary.md when done")
+
+    rp = sub.add_parser("report", help="write DIR/index.html and DIR/summary.md from a matrix output directory")
+    rp.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
+    rp.add_argument("--baseline", metavar="DIR2", default=None,
+                    help="another matrix output directory to compare against; regressions are highlighted")
+    rp.add_argument("--threshold", type=float, default=0.10, metavar="FRACTION",
+                    help="relative change of a metric that counts (default 0.10; throughput: 0.15)")
+    rp.add_argument("--history-store", metavar="PATH", default=None,
+                    help="results store with the regress history to plot (default reports/results.sqlite)")
+    rp.add_argument("--strict", action="store_true", help="exit 1 when the baseline comparison finds a regression")
+
+    rg = sub.add_parser("regress", help="time the fixed throughput suite, store it, compare with a baseline run")
+    rg.add_argument("--baseline", metavar="COMMIT_OR_RUN", default=None,
+                    help="a regress run id or a git commit (prefix) with a run in the store "
+                         "(default: the latest earlier run on this machine)")
+    rg.add_argument("--repeats", type=int, metavar="N", default=7, help="timed repetitions per entry (default 7)")
+    rg.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    rg.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    rg.add_argument("--threshold", type=float, metavar="FRACTION", default=0.10,
+                    help="smallest drop of the normalized figure that counts as a regression (default 0.10; "
+                         "raised to 3x the measured noise when that is larger)")
+    rg.add_argument("--suite", nargs="+", action="extend", metavar="NAME", default=None,
+                    help="run only these entries of the suite (default: all)")
     return p
 
 
@@ -200,11 +226,13 @@ def cmd_run(args) -> int:
         raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
     if args.plot_gait and not args.plot_gait.endswith(".png"):
         raise InputError("--plot-gait", None, f"{args.plot_gait!r}: the file name must end in .png")
+    _check_frame_outputs(args)
     case = _resolve(args)
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
+    frames, anim_stride = _frame_recorder(args, case)
     bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(), label=f"{args.creature}/{args.body}")
-    result = run_case(case, progress=bar.update, keep_nodes=bool(args.record))
+    result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames)
     bar.close()
     if not args.no_store:
         record_run(args.store or DEFAULT_STORE, result, command="run")
@@ -219,6 +247,7 @@ def cmd_run(args) -> int:
         if len(t):
             plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
                               title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
+    written = _write_frame_outputs(args, case, frames, anim_stride)
     if args.json:
         print(json.dumps(result.to_json_dict()))
     else:
@@ -226,9 +255,84 @@ def cmd_run(args) -> int:
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
         return EXIT_FAIL
+    if not written:
+        return EXIT_FAIL
     if result.status == "unstable" and args.strict:
         return EXIT_FAIL
     return EXIT_OK
+
+
+def _check_frame_outputs(args) -> None:
+    """Validate --animate, --export-frames and --frame-format before anything runs or is written."""
+    if args.animate:
+        from matplotlib.animation import FFMpegWriter
+
+        from .report.animate import SUFFIXES
+
+        suffix = Path(args.animate).suffix.lower()
+        if suffix not in SUFFIXES:
+            raise InputError("--animate", None, f"{args.animate!r}: the file name must end in .gif or .mp4")
+        if suffix == ".mp4" and not FFMpegWriter.isAvailable():
+            raise InputError("--animate", None, f"{args.animate!r}: writing .mp4 needs ffmpeg, which is not on PATH; "
+                                                "install ffmpeg or write a .gif")
+    if args.frame_format and not args.export_frames:
+        raise InputError("--frame-format", None, "only meaningful with --export-frames")
+    if args.export_frames:
+        from .report.export_frames import check_out_dir
+
+        try:
+            check_out_dir(args.export_frames)
+        except ValueError as exc:
+            raise InputError("--export-frames", None, str(exc)) from None
+
+
+def _frame_recorder(args, case):
+    """(the runner's on_sample hook or None, every how many recorded frames the animation keeps one)."""
+    if not (args.animate or args.export_frames):
+        return None, 1
+    from .report.animate import FrameRecorder, expected_samples, frame_stride, sample_period
+
+    anim_stride = frame_stride(expected_samples(case), sample_period(case))
+    if args.export_frames:  # the export wants every sample; the animation takes every anim_stride-th of them
+        return FrameRecorder(1), anim_stride
+    return FrameRecorder(anim_stride), 1
+
+
+def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
+    """Write the animation and the exported frames of what was recorded (up to a blow-up, if any).
+
+    Returns False (after one line on stderr) when a file could not be written; nothing half-written
+    is left (both writers write to a temporary name and rename at the end).
+    """
+    if frames is None:
+        return True
+    note = sys.stderr if args.json else sys.stdout  # --json keeps stdout to exactly one JSON object
+    if not frames.frames:
+        print("bench-myriapoda: no frame was recorded; nothing animated or exported", file=sys.stderr)
+        return False
+    import subprocess
+
+    try:
+        if args.animate:
+            from .report.animate import write_animation
+            from .world.terrain import terrain_from_scenario
+
+            terrain = None if case.scenario.terrain == "none" else terrain_from_scenario(case.scenario)
+            title = f"{case.creature.name} / {case.body.name} / {case.gait.name} / {case.scenario.name}"
+            info = write_animation(frames.frames[::anim_stride], frames.times[::anim_stride], terrain,
+                                   Path(args.animate), title=title)
+            print(f"animation: {info['path']} ({info['frames']} frames at {info['fps']:.3g} fps)", file=note)
+        if args.export_frames:
+            from .report.export_frames import export_frames
+
+            meta = export_frames(frames.frames, frames.times, case.to_dict(), Path(args.export_frames),
+                                 args.frame_format or "obj")
+            print(f"frames: {args.export_frames} ({meta['n_frames']} {meta['format']} files and frames.json)",
+                  file=note)
+    except (OSError, ValueError, subprocess.SubprocessError) as exc:  # full disk, ffmpeg failing, DIR filled
+        print(f"bench-myriapoda: could not write the animation or frames: {exc}", file=sys.stderr)
+        return False
+    return True
 
 
 def cmd_stable_dt(args) -> int:
@@ -266,35 +370,24 @@ def cmd_stable_dt(args) -> int:
 
 
 def cmd_quick(args) -> int:
-    from .harness.runner import run_case
-    from .harness.store import DEFAULT_STORE, record_run
+    """The main job: the quick matrix on a local process pool, then its report."""
+    ns = argparse.Namespace(file=QUICK_MATRIX, executor="local", workers=args.workers, scheduler=None, resume=False,
+                            timeout_per_case=None, out=args.out, report=True)
+    return cmd_matrix(ns)
 
-    cases = [resolve_case(c, b, s, g, duration=d) for c, b, s, g, d in QUICK_CASES]  # validate all first
-    store = args.store or DEFAULT_STORE
-    rows, worst = [], EXIT_OK
-    for case in cases:
-        bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(),
-                          label=f"{case.creature.name}/{case.gait.name}/{case.scenario.name}")
-        result = run_case(case, progress=bar.update)
-        bar.close()
-        record_run(store, result, command="quick")
-        if args.json:
-            print(json.dumps(result.to_json_dict()))
-        rows.append(result)
-        if result.status == "error":
-            worst = EXIT_FAIL
-    if not args.json:
-        head = ["creature", "body", "gait", "scenario", "status", *TABLE_METRICS, "steps_per_s"]
-        table = [head]
-        for r in rows:
-            m = r.to_json_dict()["metrics"]
-            table.append([r.case.creature.name, r.case.body.name, r.case.gait.name, r.case.scenario.name, r.status,
-                          *(_fmt(m.get(k)) for k in TABLE_METRICS), _fmt(r.timings.get("steps_per_s"))])
-        widths = [max(len(str(row[i])) for row in table) for i in range(len(head))]
-        for row in table:
-            print("  ".join(str(v).ljust(w) for v, w in zip(row, widths)))
-        print(f"results stored in {store}")
-    return worst
+
+def cmd_report(args) -> int:
+    from .harness.store import DEFAULT_STORE
+    from .report.build import build_report
+
+    if not 0 < args.threshold < 10:
+        raise InputError("--threshold", None, f"{args.threshold} is out of range; must be in (0, 10)")
+    history = Path(args.history_store) if args.history_store else DEFAULT_STORE
+    summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold)
+    print(f"report written to {summary.index} and {summary.summary} ({len(summary.figures)} figures)")
+    if args.baseline:
+        print(f"{summary.regressions} regression(s) against {args.baseline}")
+    return EXIT_FAIL if args.strict and summary.regressions else EXIT_OK
 
 
 def cmd_matrix(args) -> int:
@@ -306,7 +399,7 @@ def cmd_matrix(args) -> int:
     import time
 
     from .harness.executors import matrix_rows, run_matrix
-    from .harness.matrix import expand_matrix, locate_matrix
+    from .harness.matrix import expand_matrix, locate_matrix, write_matrix_manifest
 
     if args.workers is not None and args.workers < 1:
         raise InputError("--workers", None, f"{args.workers} is out of range; must be >= 1")
@@ -346,9 +439,10 @@ def cmd_matrix(args) -> int:
                   + (f" ({result.message})" if result.message else ""), file=sys.stderr)
 
     cases = [m.case for m in exp.cases]
+    write_matrix_manifest(out, exp)
     run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
                timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
-               resume=args.resume)
+               resume=args.resume, series_dir=out / "series")
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(labels)]
     table = []
@@ -375,7 +469,68 @@ def cmd_matrix(args) -> int:
     missing = set(labels) - set(rows.case_hash)
     bad = sum(t["status"] in ("error", "timeout") for t in table)
     print(f"{len(table)} of {len(labels)} cases stored in {store}; {bad} error or timeout; table in {out / 'results.csv'}")
+    if args.report:
+        from .harness.store import DEFAULT_STORE
+        from .report.build import build_report
+        summary = build_report(out, history_store=DEFAULT_STORE)
+        print(f"report written to {summary.index} ({len(summary.figures)} figures)")
     return EXIT_FAIL if bad or missing else EXIT_OK
+
+
+def cmd_regress(args) -> int:
+    """Time the throughput suite, store it in ``regress_history``, compare with the baseline run.
+
+    Exit 1 when any entry's normalized figure dropped beyond the noise-aware threshold, 0 otherwise
+    (also with no baseline yet), 2 for bad input (nothing timed, nothing written).
+    """
+    from .harness import regress as R
+    from .harness.machine import git_commit, machine_fingerprint
+    from .harness.store import DEFAULT_STORE, record_regress_run
+
+    repeats = R.check_repeats(args.repeats)
+    threshold = R.check_threshold(args.threshold)
+    names = R.check_suite_names(args.suite)
+    store = Path(args.store) if args.store else DEFAULT_STORE
+    if store.exists() and not store.is_file():
+        raise InputError("--store", None, f"{store} exists and is not a file")
+    machine = json.dumps(machine_fingerprint(), sort_keys=True)
+    base = R.resolve_baseline(store, args.baseline, machine, names)
+    tty = not args.json and sys.stderr.isatty()
+
+    def progress(msg: str) -> None:
+        if tty:
+            print(f"regress: {msg}", file=sys.stderr)
+
+    try:
+        results = R.run_suite(names, repeats, progress=progress)
+    except RuntimeError as exc:  # a kernel stopped early: no figure to store
+        print(f"bench-myriapoda: regress failed: {exc}", file=sys.stderr)
+        return EXIT_FAIL
+    run_id = record_regress_run(store, [r.row() for r in results])
+    rows = R.compare(results, base, threshold)
+    regressed = [r["entry"] for r in rows if r["verdict"] == "regression"]
+    commit, dirty = git_commit()
+    if args.json:
+        print(json.dumps({
+            "run_id": run_id, "git_commit": commit, "git_dirty": dirty, "store": str(store), "repeats": repeats,
+            "threshold": threshold, "noise_k": R.NOISE_K,
+            "baseline": None if base is None else {"run_id": base.run_id, "git_commit": base.git_commit,
+                                                   "git_dirty": base.git_dirty, "timestamp": base.timestamp},
+            "message": "no baseline yet" if base is None else None,
+            "entries": rows, "regressions": regressed}))
+    else:
+        here = f"regress run {run_id} at {(commit or '?')[:7]}{'+' if dirty else ''}"
+        print(here + (f" vs. baseline {base.describe()}" if base else "") + f"; {repeats} repetitions per entry")
+        for line in R.format_table(rows):
+            print(line)
+        ref = sorted(r.reference_ops_per_s for r in results)[len(results) // 2]
+        print(f"normalized = steps/s / reference ops/s (reference kernel: {ref:.3g} ops per CPU second); "
+              f"stored in {store}")
+        if base is None:
+            print("no baseline yet")
+        elif regressed:
+            print(f"{len(regressed)} regression(s): {', '.join(regressed)}")
+    return EXIT_FAIL if regressed else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -386,7 +541,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command is None:
             args = parser.parse_args(["quick", *argv])
         return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
-                "matrix": cmd_matrix}[args.command](args)
+                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress}[args.command](args)
     except InputError as exc:
         print(f"bench-myriapoda: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

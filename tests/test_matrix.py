@@ -94,10 +94,16 @@ def test_body_grid_key_missing_from_a_body_model_is_unsupported_and_blocks_union
 def test_the_shipped_matrices_expand_without_unsupported_combinations():
     quick = expand_matrix(ROOT / "scenarios" / "matrix" / "quick.toml")
     assert {(m.axes["creature"], m.axes["body"]) for m in quick.cases} == {
-        ("worm", "massspring"), ("worm", "fem"), ("chain", "hybrid"),
+        ("worm", "massspring"), ("worm", "fem"), ("snake", "massspring"), ("snake", "fem"), ("chain", "hybrid"),
         ("centipede", "hybrid"), ("centipede", "massspring"), ("centipede", "fem")}
+    # the report's stability and scaling sections need these sweeps
+    assert {"dt", "body.stiffness", "body.youngs_modulus_pa", "creature.segments", "body.resolution"} <= set(
+        quick.grid_keys)
+    assert {m.axes["body"] for m in quick.cases if "dt" in m.axes} == {"massspring", "fem", "hybrid"}
     miller = expand_matrix(ROOT / "scenarios" / "matrix" / "miller.toml")
-    assert len(miller.cases) == 10 and not quick.unsupported and not miller.unsupported
+    paper = expand_matrix(ROOT / "scenarios" / "matrix" / "paper.toml")
+    assert {m.axes["scenario"] for m in paper.cases} == {"fig4-drop", "hang", "drop-adjust", "walk", "control"}
+    assert len(miller.cases) == 10 and not quick.unsupported and not miller.unsupported and not paper.unsupported
 
 
 # --------------------------------------------------------------------------- bad files

@@ -13,6 +13,7 @@ import numpy as np
 from ..controllers.myriapod.controller import BRAIN_MODE_NAMES, MyriapodController
 from ..metrics.gait import gait_metrics
 from .observation import Observation
+from .scene import Scene, legs_scene
 
 
 def body_undulation(centers: np.ndarray) -> float:
@@ -74,6 +75,20 @@ class BodyMyriapod:
 
     def energy(self, t: float):
         return self.segments.energy(t)
+
+    def scene(self) -> Scene:
+        """The segment body's scene plus the legs (``bodies.scene``).
+
+        The controller stores angles, not joint positions: O, M, P come from
+        forward kinematics (``legs.legs_forward_kinematics``) of its current angles
+        on the segments' current poses, so a leg is drawn where its segment is now
+        (a STANCE tip within the tracking error of where it was planted).
+        """
+        scene = self.segments.scene()
+        c, R = self.segments.segment_poses()
+        ctrl = self.controller
+        scene.legs, scene.leg_states = legs_scene(c, R, ctrl.geom, ctrl.angles, ctrl.states)
+        return scene
 
     @property
     def body_length_m(self) -> float:

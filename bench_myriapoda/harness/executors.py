@@ -38,6 +38,7 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from ..core.config import Case
+from .recorder import compact_recording, save_recording
 from .runner import RunResult, run_case
 from .store import connect, record_run
 
@@ -46,13 +47,19 @@ STARTUP_GRACE_S = 120.0  # a fresh worker's imports before its first case do not
 
 
 def slim_result(result: RunResult) -> RunResult:
-    """A result without its time series and traceback: what crosses a process boundary."""
+    """What crosses a process boundary: the result without its full series and traceback.
+
+    ``extra["recording"]`` carries a :func:`~.recorder.compact_recording` of the run (float32
+    series and the leg-state timeline, tens of kB), which the parent saves for the report.
+    """
     extra = {"labels": result.extra["labels"]} if "labels" in result.extra else {}
+    if result.series is not None:
+        extra["recording"] = compact_recording(result.series, result.extra)
     return RunResult(result.case, result.status, result.metrics, result.timings, result.message, None, extra)
 
 
 def run_case_slim(case: Case) -> RunResult:
-    """:func:`run_case` for a worker: never raises, returns no series."""
+    """:func:`run_case` for a worker: never raises; returns the compact recording, not the full series."""
     return slim_result(run_case(case))
 
 
@@ -243,8 +250,12 @@ def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeou
 def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | None = None, scheduler: str | None = None,
                timeout_per_case: float | None = None, store_path: Path | str = "results.sqlite",
                on_result: Callable[[RunResult, int, int], None] | None = None, *, matrix: str = "matrix",
-               resume: bool = False, dask_processes: bool = True) -> list[RunResult]:
+               resume: bool = False, dask_processes: bool = True,
+               series_dir: Path | str | None = None) -> list[RunResult]:
     """Run ``cases`` and record each result in ``store_path`` as it arrives.
+
+    With ``series_dir``, each case's compact recording is saved as ``series_dir/CASE_HASH.npz``
+    (atomically, before its store row, so a stored case always has its recording).
 
     Returns this call's results in the order they finished.  ``on_result(result,
     done, total)`` is called after each result is stored.  With ``resume``,
@@ -266,6 +277,9 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
     workers = workers or os.cpu_count() or 1
 
     def emit(result: RunResult) -> None:
+        recording = result.extra.pop("recording", None)
+        if series_dir is not None and recording is not None:
+            save_recording(Path(series_dir) / f"{result.case.case_hash()}.npz", recording)
         record_run(store_path, result, command="matrix", matrix=matrix)
         results.append(result)
         if on_result is not None:

@@ -311,3 +311,30 @@ def _in_file(exc: InputError, src: str, prefix: str, grid: dict, fixed: dict) ->
             key = f"{prefix}.{flag_axes.get(exc.source, key)}"
         return InputError(src, key, exc.message)
     return exc  # an error inside a creature or scenario file already names that file
+
+
+# --------------------------------------------------------------------------- manifest
+
+MANIFEST = "matrix.json"
+
+
+def write_matrix_manifest(out_dir: Path, exp: Expansion) -> Path:
+    """Write ``out_dir/matrix.json``: the matrix's name, description, grid keys, and each case's axes.
+
+    The report reads it to know which axis values produced each stored case (the store keeps the
+    resolved configuration, not the grid point that led to it).  Written atomically before any case runs.
+    """
+    import os
+    import tempfile
+
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    doc = {"name": exp.name, "description": exp.description, "file": str(exp.path), "grid_keys": exp.grid_keys,
+           "cases": {m.case.case_hash(): {"label": m.label, "axes": m.axes} for m in exp.cases},
+           "unsupported": [str(u) for u in exp.unsupported]}
+    fd, tmp = tempfile.mkstemp(suffix=".json", dir=out_dir)
+    with os.fdopen(fd, "w") as fh:
+        json.dump(doc, fh, indent=1, sort_keys=True)
+    path = out_dir / MANIFEST
+    os.replace(tmp, path)
+    return path

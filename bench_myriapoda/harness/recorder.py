@@ -43,14 +43,45 @@ class Recorder:
                       energy=np.stack([o.energy for o in s]), nodes=nodes)
 
 
-def save_npz(path: Path, series: Series, case_dict: dict, extra: dict | None = None) -> None:
-    """Write a recording atomically: a temporary file renamed into place, so no half-written file remains."""
-    path = Path(path)
+def compact_recording(series: Series, extra: dict | None = None) -> dict[str, np.ndarray]:
+    """What a report needs of a run, small enough to send from a worker process.
+
+    The observation series in float32 (millimetre resolution over kilometres is plenty for plots),
+    and for legged creatures the leg-state timeline: ``leg_t`` (T_leg,) [s], ``leg_states``
+    (T_leg, n_legs) int8 state codes, and ``brain`` (T_leg,) int8 brain-mode codes.  Leg tip
+    positions and node positions are left out: they are what makes a recording large.
+    """
+    rec = {k: np.asarray(v, dtype=np.float32) for k, v in vars(series).items() if v is not None and k != "nodes"}
+    rec["t"] = np.asarray(series.t, dtype=np.float64)
+    extra = extra or {}
+    if "leg_timeline" in extra:
+        leg_t, leg_states = extra["leg_timeline"][0], extra["leg_timeline"][1]
+        rec["leg_t"] = np.asarray(leg_t, dtype=np.float64)
+        rec["leg_states"] = np.asarray(leg_states, dtype=np.int8)
+    if "brain_timeline" in extra:
+        rec["brain"] = np.asarray(extra["brain_timeline"], dtype=np.int8)
+    return rec
+
+
+def series_from_recording(rec: dict[str, np.ndarray]) -> Series:
+    """The :class:`Series` of a compact recording (float64, no nodes)."""
+    return Series(**{k: np.asarray(rec[k], dtype=np.float64)
+                     for k in ("t", "com", "head", "tail", "segment_centers", "energy")}, nodes=None)
+
+
+def load_recording(path: Path) -> dict[str, np.ndarray]:
+    """A recording written by :func:`save_recording` (or ``run --record``) as a dict of arrays."""
+    with np.load(path, allow_pickle=False) as z:
+        return {k: z[k] for k in z.files}
+
+
+def save_recording(path: Path, recording: dict[str, np.ndarray]) -> None:
+    """Write a :func:`compact_recording` atomically (a temporary file renamed into place)."""
+    _atomic_savez(Path(path), recording)
+
+
+def _atomic_savez(path: Path, arrays: dict[str, np.ndarray]) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
-    arrays = {k: v for k, v in vars(series).items() if v is not None}
-    arrays["case_json"] = np.array(json.dumps(case_dict))
-    for k, v in (extra or {}).items():
-        arrays[k] = np.asarray(v)
     fd, tmp = tempfile.mkstemp(suffix=".npz", dir=path.parent)
     os.close(fd)
     try:
@@ -60,3 +91,13 @@ def save_npz(path: Path, series: Series, case_dict: dict, extra: dict | None = N
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
+
+
+def save_npz(path: Path, series: Series, case_dict: dict, extra: dict | None = None) -> None:
+    """Write a recording atomically: a temporary file renamed into place, so no half-written file remains."""
+    path = Path(path)
+    arrays = {k: v for k, v in vars(series).items() if v is not None}
+    arrays["case_json"] = np.array(json.dumps(case_dict))
+    for k, v in (extra or {}).items():
+        arrays[k] = np.asarray(v)
+    _atomic_savez(path, arrays)

@@ -63,10 +63,13 @@ def body_length(body, case: Case) -> float:
     return float(getattr(body, "body_length_m", case.creature.body_length_m))
 
 
-def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False) -> RunResult:
+def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False,
+             on_sample: Callable[[float, Any], None] | None = None) -> RunResult:
     """Simulate ``case`` and return its status, metrics and timings.
 
     ``progress`` is called with the fraction done after each chunk.
+    ``on_sample(t [s], body)`` is called at every observation sample, t = 0
+    included, after the sample is recorded (e.g. ``report.animate.FrameRecorder``).
     """
     wall0 = time.perf_counter()
     timings = {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
@@ -79,6 +82,8 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         timings["compile_s"] = time.perf_counter() - c0
         recorder = Recorder(keep_nodes=keep_nodes)
         recorder.add(body.observe(0.0, keep_nodes))
+        if on_sample is not None:
+            on_sample(0.0, body)
         total = case.steps
         chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
         done = 0
@@ -95,6 +100,8 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
                 status, t_fail, message = "unstable", t, body.status_text(code)
                 break
             recorder.add(body.observe(t, keep_nodes))
+            if on_sample is not None:
+                on_sample(t, body)
             if progress is not None:
                 progress(done / total)
         series = recorder.series()

@@ -3,6 +3,8 @@
 One row per run in ``runs`` (resolved configuration and metrics as JSON, plus
 the most-queried fields as columns) and one row per metric in ``metrics``,
 written in a single transaction so an interrupted run leaves no partial row.
+``regress_history`` holds one row per suite entry of each ``bench-myriapoda regress``
+run (``harness/regress.py``), again one transaction per run.
 Both tables read directly with ``pandas.read_sql``::
 
     pd.read_sql("SELECT * FROM runs", sqlite3.connect("reports/results.sqlite"))
@@ -46,6 +48,24 @@ CREATE TABLE IF NOT EXISTS metrics (
     value REAL,
     PRIMARY KEY (run_id, name)
 );
+CREATE TABLE IF NOT EXISTS regress_history (
+    run_id INTEGER NOT NULL,              -- one regress run: all its entries share it (1, 2, ... per store)
+    entry TEXT NOT NULL,                  -- suite entry name (harness/throughput_suite.py)
+    git_commit TEXT,
+    git_dirty INTEGER,
+    machine_json TEXT NOT NULL,           -- harness/machine.py fingerprint, JSON with sorted keys
+    timestamp TEXT NOT NULL,
+    steps_per_rep INTEGER NOT NULL,       -- steps of one timed repetition
+    repeats INTEGER NOT NULL,
+    steps_per_s REAL NOT NULL,            -- median over the repetitions, per CPU second of the timing thread
+    spread REAL NOT NULL,                 -- MAD / median of the repetitions' steps/s
+    reference_ops_per_s REAL NOT NULL,    -- median of the reference kernel timed before each repetition
+    reference_spread REAL NOT NULL,       -- MAD / median of those
+    normalized REAL NOT NULL,             -- steps_per_s / reference_ops_per_s
+    samples_json TEXT NOT NULL DEFAULT '{}',  -- every repetition: steps/s and reference ops/s (CPU and wall)
+    PRIMARY KEY (run_id, entry)
+);
+CREATE INDEX IF NOT EXISTS regress_history_commit ON regress_history(git_commit);
 """
 
 
@@ -110,5 +130,37 @@ def record_run(path: Path | str, result, command: str = "run", matrix: str | Non
             con.executemany("INSERT INTO metrics (run_id, name, value) VALUES (?,?,?)",
                             [(run_id, k, v if isinstance(v, (int, float)) else None) for k, v in metrics.items()])
         return run_id
+    finally:
+        con.close()
+
+
+REGRESS_FIELDS = ("entry", "steps_per_rep", "repeats", "steps_per_s", "spread", "reference_ops_per_s",
+                  "reference_spread", "normalized", "samples_json")
+
+
+def record_regress_run(path: Path | str, rows: list[dict[str, Any]]) -> int:
+    """Insert the entries of one ``regress`` run into ``regress_history`` in one transaction; return its run id.
+
+    Each row holds ``REGRESS_FIELDS``; the commit, machine fingerprint and timestamp are added here.
+    Run ids count up from 1 in each store.
+    """
+    mach = json.dumps(machine_fingerprint(), sort_keys=True)
+    commit, dirty = git_commit()
+    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    con = connect(path)
+    try:
+        con.execute("BEGIN IMMEDIATE")  # the new run id and its rows: one writer, one transaction
+        try:
+            run_id = con.execute("SELECT COALESCE(MAX(run_id), 0) + 1 FROM regress_history").fetchone()[0]
+            con.executemany(
+                "INSERT INTO regress_history (run_id, git_commit, git_dirty, machine_json, timestamp, "
+                + ", ".join(REGRESS_FIELDS) + ") VALUES (?,?,?,?,?," + ",".join("?" * len(REGRESS_FIELDS)) + ")",
+                [(run_id, commit, None if dirty is None else int(dirty), mach, stamp,
+                  *(_finite(r[k]) for k in REGRESS_FIELDS)) for r in rows])
+            con.commit()
+        except BaseException:
+            con.rollback()
+            raise
+        return int(run_id)
     finally:
         con.close()

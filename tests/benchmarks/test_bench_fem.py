@@ -14,28 +14,20 @@ from __future__ import annotations
 
 import time
 
-import numpy as np
 import pytest
 
-from bench_myriapoda.bodies.fem.mesh import chain_grid
-from bench_myriapoda.bodies.fem.system import DT_PAPER, FEMSystem
-from bench_myriapoda.world import terrain_kernels as T
+from bench_myriapoda.bodies.fem.system import DT_PAPER
+from bench_myriapoda.harness.throughput_suite import fem_chain, fem_terrain
 
-N_SEGMENTS = 17
 N_STEPS = 200
-TERRAIN = (T.PLANE, np.zeros(T.N_TERRAIN_PARAMS))
+TERRAIN = fem_terrain()
 
 
 @pytest.mark.parametrize("resolution, unit, n_tets", [(3, "nodes", 816), (3, "cells", 2754)],
                          ids=["2x2x2cells-816tets", "3x3x3cells-2754tets"])
 def test_bench_fem_chain_advance(benchmark, resolution, unit, n_tets):
-    nodes, tets, _seg = chain_grid(N_SEGMENTS, 1.0, cross_section=(1.0, 1.0),
-                                   resolution=resolution, resolution_unit=unit)
-    assert len(tets) == n_tets
-    body = FEMSystem(nodes, tets)
-    centre = nodes.mean(axis=0)
-    x0 = nodes + [0.0, 0.05, 0.0]
-    v0 = np.cross([0.0, 2.0, 0.0], nodes - centre)
+    body, x0, v0 = fem_chain(resolution, unit)  # the scene of `bench-myriapoda regress`
+    assert body.n_tets == n_tets
 
     t0 = time.perf_counter()
     body.advance(1, dt=DT_PAPER, terrain=TERRAIN)  # JIT compile or cache load, and the factorization
@@ -53,7 +45,7 @@ def test_bench_fem_chain_advance(benchmark, resolution, unit, n_tets):
     assert body.x[:, 1].min() >= 0.0 and body.count_inverted() == 0
     benchmark.extra_info["compile_or_cache_load_s"] = compile_s
     benchmark.extra_info["n_tets"] = n_tets
-    benchmark.extra_info["n_nodes"] = len(nodes)
+    benchmark.extra_info["n_nodes"] = body.n_nodes
     if benchmark.stats is not None:
         median = benchmark.stats.stats.median
         benchmark.extra_info["ns_per_tet_step"] = median / N_STEPS / n_tets * 1e9

@@ -14,36 +14,19 @@ from __future__ import annotations
 
 import time
 
-import numpy as np
-
 from bench_myriapoda.bodies.friction_kernels import CONTACT_DISTANCE
 from bench_myriapoda.bodies.hybrid import kernels as K
-from bench_myriapoda.bodies.hybrid.body import BodyHybrid
-from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness.throughput_suite import HYBRID_RIGID as N_RIGID
+from bench_myriapoda.harness.throughput_suite import hybrid_chain, hybrid_state_fields
 
-N_RIGID = 18
 N_TETS = 816
 N_STEPS = 300
-SPIN = np.array([0.0, 0.2, 0.0])  # [rad/s] about the vertical through the centre of mass
-
-
-def make_body() -> BodyHybrid:
-    case = resolve_case("chain", "hybrid", "flat", overrides=[
-        f"creature.segments={N_RIGID}", "body.rigid_density_kg_m3=1.0", "scenario.start_height_m=0.01"])
-    body = BodyHybrid(case)
-    com = body.observe(0.0).com
-    body.rigid.v[:] = np.cross(SPIN, body.rigid.c - com)
-    body.rigid.w[:] = SPIN
-    body.v[body.free] = np.cross(SPIN, body.x[body.free] - com)
-    body.sync_attached()
-    return body
 
 
 def test_bench_hybrid_18_segment_chain_coupled_step(benchmark):
-    body = make_body()
+    body = hybrid_chain()  # the scene of `bench-myriapoda regress`
     assert body.fem.n_tets == N_TETS and body.rigid.n == N_RIGID
-    rb = body.rigid
-    fields = [body.x, body.v, body.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, body.acc]
+    fields = hybrid_state_fields(body)
     start = [a.copy() for a in fields]
 
     t0 = time.perf_counter()

@@ -4,20 +4,17 @@ Time it with:
     python -m pytest tests/benchmarks/test_bench_massspring.py --benchmark-enable --benchmark-only
 In the normal test run (--benchmark-disable) it runs once as a smoke test.
 """
-from bench_myriapoda.bodies.massspring.body import BodyMassSpring
-from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness.throughput_suite import SNAKE_SETTLE_STEPS, snake_body
 
 STEPS_PER_CALL = 5000
 
 
 def test_snake_50_segment_step_loop(benchmark):
-    case = resolve_case("snake", "massspring", "flat")  # lateral undulation, anisotropic Coulomb friction
-    assert case.creature.segments == 50
-    body = BodyMassSpring(case)
-    body.compile()
-    # settle into a moving gait first so the timed steps see contacts, friction and muscles
-    body.advance(0.0, 20000)
-    t = [20000 * case.dt]
+    # lateral undulation, anisotropic Coulomb friction; compiled, and settled into a moving gait first
+    # so the timed steps see contacts, friction and muscles (the scene of `bench-myriapoda regress`)
+    case, body, t_settled = snake_body()
+    assert case.creature.segments == 50 and t_settled == SNAKE_SETTLE_STEPS * case.dt
+    t = [t_settled]
 
     def chunk():
         done, status = body.advance(t[0], STEPS_PER_CALL)

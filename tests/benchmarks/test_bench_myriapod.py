@@ -6,26 +6,18 @@ The segment-count sweep gives the cost scaling from 6 to 100 segments.
 """
 import pytest
 
-from bench_myriapoda.core import registry
-from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness.throughput_suite import (
+    CENTIPEDE_WALK_IN_STEPS as WALK_IN_STEPS,
+)
+from bench_myriapoda.harness.throughput_suite import walking_centipede
 
 STEPS_PER_CALL = 300
-WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has formed
-
-
-def walking_body(segments: int, body: str = "hybrid"):
-    registry.load_all()
-    case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
-    b = registry.BODIES[body].factory(case)
-    b.compile()
-    b.advance(0.0, WALK_IN_STEPS)
-    return case, b
 
 
 @pytest.mark.parametrize("body,segments", [("hybrid", 6), ("hybrid", 18), ("hybrid", 36), ("hybrid", 100),
                                            ("massspring", 18), ("fem", 18)])
 def test_centipede_walk_step(benchmark, body, segments):
-    case, b = walking_body(segments, body)
+    case, b = walking_centipede(segments, body)  # compiled and walked in for WALK_IN_STEPS (1.5 s)
     t = [WALK_IN_STEPS * case.dt]
 
     def chunk():

@@ -14,31 +14,19 @@ import time
 
 import numpy as np
 
-from bench_myriapoda.bodies.rigid import STATUS_OK, ContactSettings, RigidBoxes
+from bench_myriapoda.bodies.rigid import STATUS_OK
+from bench_myriapoda.harness.throughput_suite import RIGID_BOXES as N_BOXES
+from bench_myriapoda.harness.throughput_suite import RIGID_DT as DT
+from bench_myriapoda.harness.throughput_suite import RIGID_HALF as HALF
+from bench_myriapoda.harness.throughput_suite import RIGID_STATE_FIELDS as STATE_FIELDS
+from bench_myriapoda.harness.throughput_suite import rigid_contact_settings, rigid_scene
 
-DT = 1.0 / 3000.0  # [s]
-N_BOXES = 18
 N_STEPS = 3000  # one simulated second per call
-HALF = (0.1, 0.05, 0.08)  # [m]
-MASS = 0.5  # [kg]
-SETTINGS = ContactSettings(friction=0.5, restitution=0.0)
-
-
-def make_scene() -> RigidBoxes:
-    boxes = RigidBoxes([HALF] * N_BOXES, [MASS] * N_BOXES)
-    for i in range(N_BOXES):
-        heading = 2.0 * np.pi * i / N_BOXES
-        speed = 1.0 if i % 2 else 0.0
-        boxes.set_pose(i, c=[0.5 * i, HALF[1] - 1e-6, 0.0],
-                       v=[speed * np.cos(heading), 0.0, speed * np.sin(heading)])
-    return boxes
-
-
-STATE_FIELDS = ("c", "q", "v", "w", "impulse_cache")
+SETTINGS = rigid_contact_settings()
 
 
 def test_bench_rigid_18_boxes_on_ground(benchmark):
-    boxes = make_scene()
+    boxes = rigid_scene()  # the scene of `bench-myriapoda regress`
     initial = {k: getattr(boxes, k).copy() for k in STATE_FIELDS}
 
     t0 = time.perf_counter()

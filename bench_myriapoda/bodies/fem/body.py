@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 import os
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -33,6 +34,7 @@ from .. import step_status as S
 from ..friction_kernels import friction_params
 from ..observation import Observation
 from ..placement import place_points
+from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
 from . import body_kernels as BK
 from . import kernels as FK
 from .mesh import chain_grid, signed_volumes, tetrahedralize_surface
@@ -230,6 +232,17 @@ class BodyFEM:
         return Observation(t=t, segment_centers=self._centers.copy(), com=com,
                            head=self.x[self.head_nodes].mean(axis=0), tail=self.x[self.tail_nodes].mean(axis=0),
                            energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+
+    @cached_property
+    def _surface(self) -> tuple[np.ndarray, np.ndarray]:
+        """(boundary node ids (V,), outward boundary triangles (F, 3) indexing them); static."""
+        faces, _ = tet_boundary_faces(self.system.tets)
+        return compact(faces)
+
+    def scene(self) -> Scene:
+        """The mesh's boundary triangles over its boundary nodes, world coordinates [m] (``bodies.scene``)."""
+        nodes, faces = self._surface
+        return Scene(triangles=[(self.x[nodes], faces, FEM_SURFACE)])  # fancy indexing copies
 
     def energy(self, t: float) -> tuple[float, float, float]:
         """(kinetic, elastic, gravitational) [J]; elastic against the current active rest shape."""

@@ -44,6 +44,7 @@ every node (the suite's point-mass contact), x += dt v, blow-up checks.
 from __future__ import annotations
 
 import math
+from functools import cached_property
 
 import numpy as np
 from numba import njit
@@ -54,6 +55,7 @@ from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..observation import Observation
 from ..placement import place_points
+from ..scene import FEM_BLOCK_SURFACE, FEM_SURFACE, Scene, compact, tet_boundary_faces
 from . import kernels as FK
 from .kernels import elastic_forces, semi_implicit_velocity
 from .mesh import box_grid, segment_cells, signed_volumes
@@ -356,6 +358,19 @@ class BodyFEMChain:
         out[0::2] = c
         out[1::2] = 0.5 * (c[:-1] + c[1:])
         return out
+
+    @cached_property
+    def _surfaces(self) -> list[tuple[np.ndarray, np.ndarray, str]]:
+        """[(boundary node ids, outward triangles indexing them, kind)] of the blocks' and the links'
+        boundary faces (one mesh; split so that a drawing can tell the stiff segments from the links); static."""
+        faces, owner = tet_boundary_faces(self.fem.tets)
+        in_block = self.tet_block[owner] >= 0
+        return [(*compact(faces[sel]), kind) for sel, kind in ((in_block, FEM_BLOCK_SURFACE), (~in_block, FEM_SURFACE))
+                if sel.any()]
+
+    def scene(self) -> Scene:
+        """Boundary triangles of the blocks and of the links, world coordinates [m] (``bodies.scene``)."""
+        return Scene(triangles=[(self.x[nodes], faces, kind) for nodes, faces, kind in self._surfaces])
 
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         m = self.fem.mass

@@ -60,6 +60,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -77,6 +78,7 @@ from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
+from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
 from ..segment_chain import CouplingScratch, SegmentChainLayout
 from . import kernels as K
 
@@ -370,6 +372,25 @@ class BodyHybrid:
         signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
         local = signs[None, :, :] * rb.half_extents[:, None, :]
         return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", self.rotation_matrices(), local)).reshape(-1, 3)
+
+    @cached_property
+    def _link_surface(self) -> tuple[np.ndarray, np.ndarray]:
+        """(boundary node ids (V,), outward triangles (F, 3) indexing them) of the FEM links; static."""
+        faces, _ = tet_boundary_faces(self.fem.tets)
+        return compact(faces)
+
+    def scene(self) -> Scene:
+        """The boxes and the links' boundary triangles, world coordinates [m] (``bodies.scene``).
+
+        A link's end faces lie on its boxes' faces (attached nodes); they are kept
+        so that every link is a closed surface in an exported mesh.
+        """
+        verts, faces = box_triangles(self.box_corners())
+        tris = [(verts, faces, RIGID_BOX)]
+        if self.fem.n_tets:
+            nodes, link_faces = self._link_surface
+            tris.append((self.x[nodes], link_faces, FEM_SURFACE))
+        return Scene(triangles=tris)
 
     # ------------------------------------------------------------------ segment interface (legged creatures)
     def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:

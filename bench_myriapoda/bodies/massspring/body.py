@@ -11,6 +11,7 @@ is one substep, dt = 1 / (fps * substeps).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -21,6 +22,7 @@ from ...world.terrain import terrain_from_scenario
 from ..friction_kernels import friction_params
 from ..observation import Observation
 from ..placement import place_points
+from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
 from . import kernels as K
 from .lattice import build_lattice
@@ -155,6 +157,17 @@ class BodyMassSpring:
         com = (self.mass[:, None] * x).sum(axis=0) / self.mass.sum()
         return Observation(t=t, segment_centers=seg, com=com, head=faces[0], tail=faces[-1],
                            energy=np.array(self.energy(t)), nodes=x.copy() if with_nodes else None)
+
+    @cached_property
+    def _surface_faces(self) -> np.ndarray:
+        """(8 n_seg + 4, 3) outward triangles of the lattice's outer faces; static, built on first use."""
+        return lattice_surface_faces(self.lattice.n_seg)
+
+    def scene(self) -> Scene:
+        """The lattice's outer surface (every node is on it) and all springs, world coordinates [m]."""
+        x = self.x
+        return Scene(triangles=[(x.copy(), self._surface_faces, LATTICE_SURFACE)],
+                     springs=x[self.lattice.springs])  # (S, 2, 3); fancy indexing copies
 
     def energy(self, t: float) -> tuple[float, float, float]:
         """(kinetic, elastic, gravitational) [J] with the rest lengths of time t."""

@@ -38,6 +38,7 @@ nodes weigh ``creature.mass_kg``.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numba import njit
@@ -54,6 +55,7 @@ from ..kinematic_targets import drive_to_targets
 from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
+from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
 from ..segment_chain import CouplingScratch, SegmentChainLayout
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
@@ -370,6 +372,21 @@ class BodyRigidSpringChain:
         signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
         local = signs[None, :, :] * rb.half_extents[:, None, :]
         return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", rb.rotation_matrices(), local)).reshape(-1, 3)
+
+    @cached_property
+    def _link_faces(self) -> np.ndarray:
+        """(F, 3) outward triangles of every link lattice's outer faces, indexing ``x``; static."""
+        per_link = lattice_surface_faces(self.layout.cells)
+        # a link's nodes are consecutive in x (``build_chain``), face j's corner c at 4 j + c
+        faces = np.concatenate([per_link + nodes[0] for nodes in self.mesh.link_nodes])
+        faces.setflags(write=False)
+        return faces
+
+    def scene(self) -> Scene:
+        """Boxes, the links' lattice surfaces and their springs, world coordinates [m] (``bodies.scene``)."""
+        verts, faces = box_triangles(self.box_corners())
+        return Scene(triangles=[(verts, faces, RIGID_BOX), (self.x.copy(), self._link_faces, LATTICE_SURFACE)],
+                     springs=self.x[self.springs])  # (S, 2, 3); fancy indexing copies
 
     def segment_centers(self) -> np.ndarray:
         """(2 n_rigid - 1, 3) [m]: rigid 0, link 0, rigid 1, ... (box centres, link node means)."""

@@ -1,0 +1,334 @@
+"""The fixed throughput suite of ``bench-myriapoda regress`` and the scenes the benchmarks time.
+
+Scene builders (``snake_body``, ``fem_chain``, ``fem_worm_body``, ``hybrid_chain``,
+``walking_centipede``, ``rigid_scene``) are shared with ``tests/benchmarks/``, so the
+regression suite and the pytest-benchmark micro benchmarks time the same bodies.
+
+``SUITE`` is a registry: entry name -> ``SuiteEntry`` whose ``setup()`` builds the scene,
+compiles its kernels (or loads them from the numba cache) and returns ``(step, steps)``:
+``step(n)`` runs n steps of the kernel (restarting from a fixed state where the scene
+allows it, so every repetition does the same work) and ``steps`` is how many steps one
+timed repetition runs.  A test can register or replace an entry (``SUITE[name] = ...``).
+
+``reference_ops(n)`` is the fixed REFERENCE kernel timed in the same run: a small spring
+chain in numba (multiply-adds and one sqrt per spring, 33 x 3 doubles: memory-light), so
+``steps/s / reference ops/s`` is a figure that stays comparable on a slower, faster or
+busier machine.  Its work never changes: editing it breaks every stored figure.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numba
+import numpy as np
+
+# --------------------------------------------------------------------------- scenes (shared with the benchmarks)
+
+SNAKE_SETTLE_STEPS = 20000  # the snake's gait has formed: the timed steps see contacts, friction and muscles
+
+
+def snake_body(settle_steps: int = SNAKE_SETTLE_STEPS):
+    """Miller's 50-segment snake (lateral undulation, anisotropic Coulomb friction), compiled and settled.
+
+    Returns (case, body, t) with t [s] the time reached.
+    """
+    from ..bodies.massspring.body import BodyMassSpring
+    from ..core.config import resolve_case
+
+    case = resolve_case("snake", "massspring", "flat")
+    body = BodyMassSpring(case)
+    body.compile()
+    done, status = body.advance(0.0, settle_steps)
+    if status != 0:
+        raise RuntimeError(f"snake settle stopped after {done} steps: {body.status_text(status)}")
+    return case, body, settle_steps * case.dt
+
+
+FEM_CHAIN_SEGMENTS = 17
+FEM_CHAIN_SPIN = 2.0  # [rad/s] about the vertical
+FEM_CHAIN_LIFT = 0.05  # [m]
+
+
+def fem_terrain():
+    """The plane y = 0 as the FEMSystem's ``terrain`` argument."""
+    from ..world import terrain_kernels as T
+    return (T.PLANE, np.zeros(T.N_TERRAIN_PARAMS))
+
+
+def fem_chain(resolution: int = 3, unit: str = "nodes"):
+    """A 17-segment deformable chain (paper presets, segments 1 x 1 x 1) 5 cm above the plane, spinning at 2 rad/s.
+
+    Returns (system, x0, v0): the FEMSystem (not compiled) and its start state.
+    """
+    from ..bodies.fem.mesh import chain_grid
+    from ..bodies.fem.system import FEMSystem
+
+    nodes, tets, _seg = chain_grid(FEM_CHAIN_SEGMENTS, 1.0, cross_section=(1.0, 1.0),
+                                   resolution=resolution, resolution_unit=unit)
+    system = FEMSystem(nodes, tets)
+    centre = nodes.mean(axis=0)
+    x0 = nodes + [0.0, FEM_CHAIN_LIFT, 0.0]
+    v0 = np.cross([0.0, FEM_CHAIN_SPIN, 0.0], nodes - centre)
+    return system, x0, v0
+
+
+def fem_worm_body():
+    """The FEM worm (``worm`` / ``fem`` / ``flat``, rectilinear muscle wave), compiled, at t = 0."""
+    from ..core import registry
+    from ..core.config import resolve_case
+
+    registry.load_all()
+    case = resolve_case("worm", "fem", "flat")
+    body = registry.BODIES["fem"].factory(case)
+    body.compile()
+    return case, body
+
+
+HYBRID_RIGID = 18
+HYBRID_SPIN = np.array([0.0, 0.2, 0.0])  # [rad/s] about the vertical through the centre of mass
+
+
+def hybrid_chain():
+    """``models/chain.toml`` lengthened to 18 boxes (density 1) and 17 FEM links, 1 cm above the plane,
+    turning at 0.2 rad/s (not compiled)."""
+    from ..bodies.hybrid.body import BodyHybrid
+    from ..core.config import resolve_case
+
+    case = resolve_case("chain", "hybrid", "flat", overrides=[
+        f"creature.segments={HYBRID_RIGID}", "body.rigid_density_kg_m3=1.0", "scenario.start_height_m=0.01"])
+    body = BodyHybrid(case)
+    com = body.observe(0.0).com
+    body.rigid.v[:] = np.cross(HYBRID_SPIN, body.rigid.c - com)
+    body.rigid.w[:] = HYBRID_SPIN
+    body.v[body.free] = np.cross(HYBRID_SPIN, body.x[body.free] - com)
+    body.sync_attached()
+    return body
+
+
+def hybrid_state_fields(body) -> list[np.ndarray]:
+    """The arrays that hold a BodyHybrid's whole dynamic state (restore them to restart)."""
+    rb = body.rigid
+    return [body.x, body.v, body.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, body.acc]
+
+
+CENTIPEDE_WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has formed
+
+
+def walking_centipede(segments: int = 18, body: str = "hybrid", walk_in_steps: int = CENTIPEDE_WALK_IN_STEPS):
+    """A centipede on the ``walk`` scenario, compiled and walked in; returns (case, body)."""
+    from ..core import registry
+    from ..core.config import resolve_case
+
+    registry.load_all()
+    case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
+    b = registry.BODIES[body].factory(case)
+    b.compile()
+    done, status = b.advance(0.0, walk_in_steps)
+    if status != 0:
+        raise RuntimeError(f"centipede walk-in stopped after {done} steps: {b.status_text(status)}")
+    return case, b
+
+
+RIGID_DT = 1.0 / 3000.0  # [s]
+RIGID_BOXES = 18
+RIGID_HALF = (0.1, 0.05, 0.08)  # [m]
+RIGID_MASS = 0.5  # [kg]
+RIGID_STATE_FIELDS = ("c", "q", "v", "w", "impulse_cache")
+
+
+def rigid_contact_settings():
+    from ..bodies.rigid import ContactSettings
+    return ContactSettings(friction=0.5, restitution=0.0)
+
+
+def rigid_scene():
+    """18 segment-sized boxes on the plane: nine at rest, nine sliding at 1 m/s in different directions."""
+    from ..bodies.rigid import RigidBoxes
+
+    boxes = RigidBoxes([RIGID_HALF] * RIGID_BOXES, [RIGID_MASS] * RIGID_BOXES)
+    for i in range(RIGID_BOXES):
+        heading = 2.0 * np.pi * i / RIGID_BOXES
+        speed = 1.0 if i % 2 else 0.0
+        boxes.set_pose(i, c=[0.5 * i, RIGID_HALF[1] - 1e-6, 0.0],
+                       v=[speed * np.cos(heading), 0.0, speed * np.sin(heading)])
+    return boxes
+
+
+# --------------------------------------------------------------------------- the suite
+
+Step = Callable[[int], None]
+
+
+@dataclass(frozen=True)
+class SuiteEntry:
+    """One kernel of the suite.  ``setup()`` returns (step, steps per timed repetition)."""
+
+    name: str
+    description: str
+    setup: Callable[[], tuple[Step, int]]
+
+
+def _check(name: str, n: int, done: int, status: int) -> None:
+    if status != 0 or done != n:
+        raise RuntimeError(f"throughput suite entry {name!r}: {done} of {n} steps, status {status}")
+
+
+def setup_massspring_snake(steps: int = 10000) -> tuple[Step, int]:
+    """Miller's 50-segment snake step loop, restarted from the settled gait at every call."""
+    _case, body, t0 = snake_body()
+    start = [a.copy() for a in (body.x, body.v, body.acc)]
+
+    def step(n: int) -> None:
+        for dst, src in zip((body.x, body.v, body.acc), start):
+            dst[...] = src
+        done, status = body.advance(t0, n)
+        _check("massspring-snake", n, done, status)
+
+    return step, steps
+
+
+def setup_fem_chain(steps: int = 3000) -> tuple[Step, int]:
+    """The FEM advance kernel on the 17-segment chain (816 tets), restarted from the drop at every call."""
+    from ..bodies.fem.system import DT_PAPER
+
+    system, x0, v0 = fem_chain()
+    terrain = fem_terrain()
+    system.advance(1, dt=DT_PAPER, terrain=terrain)  # JIT compile or cache load, and the factorization
+    q0 = system._q_ws.copy()
+
+    def step(n: int) -> None:
+        system.x[:] = x0
+        system.v[:] = v0
+        system._q_ws[:] = q0
+        r = system.advance(n, dt=DT_PAPER, terrain=terrain, friction=0.5)
+        _check("fem-chain", n, r.steps, r.status)
+
+    return step, steps
+
+
+def setup_fem_worm(steps: int = 3000) -> tuple[Step, int]:
+    """The FEM worm body kernel (muscles, friction, ground contact), restarted from t = 0 at every call."""
+    _case, body = fem_worm_body()
+    fields = [body.x, body.v, body.system._q_ws, body.acc]
+    start = [a.copy() for a in fields]
+
+    def step(n: int) -> None:
+        for dst, src in zip(fields, start):
+            dst[...] = src
+        done, status = body.advance(0.0, n)
+        _check("fem-worm", n, done, status)
+
+    return step, steps
+
+
+def setup_hybrid_chain(steps: int = 1500) -> tuple[Step, int]:
+    """The hybrid body's coupled step (18 boxes, 17 FEM links), restarted from the same state at every call."""
+    body = hybrid_chain()
+    fields = hybrid_state_fields(body)
+    start = [a.copy() for a in fields]
+    body.compile()
+
+    def step(n: int) -> None:
+        for dst, src in zip(fields, start):
+            dst[...] = src
+        done, status = body.advance(0.0, n)
+        _check("hybrid-chain", n, done, status)
+
+    return step, steps
+
+
+def setup_hybrid_centipede(steps: int = 1500) -> tuple[Step, int]:
+    """The walking 18-segment hybrid centipede (leg controller + coupled step); walks on from call to call."""
+    case, body = walking_centipede(18, "hybrid")
+    t = [CENTIPEDE_WALK_IN_STEPS * case.dt]
+
+    def step(n: int) -> None:
+        done, status = body.advance(t[0], n)
+        t[0] += done * case.dt
+        _check("hybrid-centipede", n, done, status)
+
+    return step, steps
+
+
+def setup_rigid_boxes(steps: int = 6000) -> tuple[Step, int]:
+    """The rigid-box core: 18 boxes on the plane, restarted from the same state at every call."""
+    boxes = rigid_scene()
+    settings = rigid_contact_settings()
+    start = {k: getattr(boxes, k).copy() for k in RIGID_STATE_FIELDS}
+    boxes.advance(1, RIGID_DT, contact=settings)  # JIT compile or cache load
+
+    def step(n: int) -> None:
+        for k, value in start.items():
+            getattr(boxes, k)[...] = value
+        done, status = boxes.advance(n, RIGID_DT, contact=settings)
+        _check("rigid-boxes", n, done, status)
+
+    return step, steps
+
+
+SUITE: dict[str, SuiteEntry] = {e.name: e for e in (
+    SuiteEntry("massspring-snake", "Miller's 50-segment snake, lattice step loop", setup_massspring_snake),
+    SuiteEntry("fem-chain", "FEM advance kernel, 17-segment chain, 816 tets", setup_fem_chain),
+    SuiteEntry("fem-worm", "FEM worm body kernel (muscles, friction)", setup_fem_worm),
+    SuiteEntry("hybrid-chain", "hybrid coupled step, 18 boxes + 17 FEM links", setup_hybrid_chain),
+    SuiteEntry("hybrid-centipede", "walking 18-segment hybrid centipede (controller + coupled step)",
+               setup_hybrid_centipede),
+    SuiteEntry("rigid-boxes", "rigid-box core, 18 boxes with contact and friction", setup_rigid_boxes),
+)}
+
+# --------------------------------------------------------------------------- the reference kernel
+
+REFERENCE_NODES = 33           # a chain of 33 unit masses, 32 springs: 33 x 3 doubles, in L1
+REFERENCE_ITERATIONS = 250000  # time steps of the chain per call: ops = 32 * 250000 spring updates
+
+
+@numba.njit(cache=True)
+def _reference_kernel(x, v, n_iter):  # pragma: no cover - compiled
+    """Symplectic Euler on a stiff 3-D spring chain: per spring 3 subtractions, one sqrt, a few multiply-adds."""
+    m = x.shape[0]
+    k = 100.0
+    dt = 1.0e-3
+    f = np.zeros((m, 3))
+    for _ in range(n_iter):
+        for i in range(m):
+            f[i, 0] = 0.0
+            f[i, 1] = 0.0
+            f[i, 2] = 0.0
+        for i in range(m - 1):
+            dx = x[i + 1, 0] - x[i, 0]
+            dy = x[i + 1, 1] - x[i, 1]
+            dz = x[i + 1, 2] - x[i, 2]
+            L = math.sqrt(dx * dx + dy * dy + dz * dz)
+            s = k * (L - 1.0) / L
+            f[i, 0] += s * dx
+            f[i, 1] += s * dy
+            f[i, 2] += s * dz
+            f[i + 1, 0] -= s * dx
+            f[i + 1, 1] -= s * dy
+            f[i + 1, 2] -= s * dz
+        for i in range(m):
+            v[i, 0] += dt * f[i, 0]
+            v[i, 1] += dt * f[i, 1]
+            v[i, 2] += dt * f[i, 2]
+            x[i, 0] += dt * v[i, 0]
+            x[i, 1] += dt * v[i, 1]
+            x[i, 2] += dt * v[i, 2]
+    return x[m - 1, 0]
+
+
+def _reference_start() -> tuple[np.ndarray, np.ndarray]:
+    i = np.arange(REFERENCE_NODES, dtype=np.float64)
+    x = np.stack([1.05 * i, 0.02 * np.sin(i), 0.02 * np.cos(i)], axis=1)  # slightly stretched and bent
+    return x, np.zeros_like(x)
+
+
+def reference_ops(n_iter: int | None = None) -> int:
+    """Run the reference kernel once (n_iter chain steps, default REFERENCE_ITERATIONS); return the ops done."""
+    n_iter = REFERENCE_ITERATIONS if n_iter is None else n_iter
+    x, v = _reference_start()
+    r = _reference_kernel(x, v, n_iter)
+    if not math.isfinite(r):
+        raise RuntimeError("reference kernel diverged")
+    return n_iter * (REFERENCE_NODES - 1)

@@ -1,0 +1,398 @@
+"""Animations of a run: the body from above (x-z) and from the side (x-y), one frame per recorded sample.
+
+``bench-myriapoda run ... --animate FILE.gif|FILE.mp4`` records ``body.scene()``
+(``bodies.scene.Scene``) at the observation samples through the runner's
+``on_sample`` hook (``FrameRecorder``) and draws them with ``write_animation``:
+
+* left panel, seen from above: x to the right, z (the creature's right) down
+  the page, as ``report/trajectories.py`` draws top views;
+* right panel, seen from the creature's right side: x to the right, y up
+  (the viewer sits at +z);
+* triangle surfaces (rigid boxes, FEM boundaries, lattice faces) filled and
+  flat-shaded, back faces culled, painter-sorted by depth; springs as thin
+  lines over them; legs as polylines root -> knee -> tip in the colour of their
+  Switcher state (``metrics.gait.STATE_COLORS``, the gait diagram's colours, as
+  the paper's Figs. 5 and 13 colour legs by state), with a legend;
+* the terrain: its surface profile in the side view (from
+  ``terrain_kernels.terrain_phi_numpy``) and a ground patch with a grid in the
+  top view (the slab of Miller's book drawn darker).
+
+Axis limits are fixed from all frames, so the camera never jumps, with equal
+aspect.  At most ``MAX_FRAMES`` frames, played in real time when that needs
+no more than ``MAX_FPS`` frames per second (``frame_stride``).
+"""
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import Sequence
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only; never needs a display
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib import animation  # noqa: E402
+from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
+from matplotlib.colors import to_rgb  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Rectangle  # noqa: E402
+
+from ..bodies import scene as SC  # noqa: E402
+from ..bodies.scene import Scene  # noqa: E402
+from ..metrics.gait import STATE_COLORS, STATE_NAMES  # noqa: E402
+from ..world.terrain_kernels import SLAB, terrain_phi_numpy  # noqa: E402
+
+MAX_FRAMES = 150  # frames of an animation at most: a GIF stays a few MB and writes in seconds
+MAX_FPS = 30.0    # playback rate cap [frames/s]
+SUFFIXES = (".gif", ".mp4")
+
+KIND_COLORS = {SC.RIGID_BOX: "#b08850", SC.FEM_SURFACE: "#7fb3d5", SC.FEM_BLOCK_SURFACE: "#b08850",
+               SC.LATTICE_SURFACE: "#e39c9c"}
+DEFAULT_COLOR = "#aaaaaa"
+EDGE_RGBA = (0.0, 0.0, 0.0, 0.35)
+GROUND_COLOR, GROUND_EDGE, SLAB_COLOR = "#ece2cf", "#8c7a5b", "#d2bf99"
+# directions toward the viewer: the top view looks down -y, the side view looks down -z
+VIEWS = {"top": (np.array([0.0, 1.0, 0.0]), (0, 2)), "side": (np.array([0.0, 0.0, 1.0]), (0, 1))}
+
+
+# --------------------------------------------------------------------------- which samples become frames
+
+def sample_period(case) -> float:
+    """Time between two observation samples of ``harness.runner.run_case`` [s].
+
+    The runner steps in chunks of round(1 / (sample_hz dt)) steps (at least 1)
+    and samples after each; this mirrors that rule.
+    """
+    chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
+    return chunk * case.dt
+
+
+def expected_samples(case) -> int:
+    """Number of samples a run of ``case`` records when it completes (t = 0 and after every chunk)."""
+    chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
+    return 1 + math.ceil(case.steps / chunk)
+
+
+def frame_stride(n_samples: int, period_s: float, max_frames: int = MAX_FRAMES, max_fps: float = MAX_FPS) -> int:
+    """Keep every k-th sample: at most ``max_frames`` frames, and frames at least 1 / max_fps apart in
+    simulated time, so that playing at 1 / (k period) frames/s is real time within the fps cap."""
+    k_frames = math.ceil(n_samples / max_frames)
+    k_fps = math.ceil(1.0 / (max_fps * period_s) - 1e-9)  # tolerance: 60 Hz samples give exactly 2
+    return max(1, k_frames, k_fps)
+
+
+class FrameRecorder:
+    """The runner's ``on_sample`` hook: stores ``body.scene()`` and t of every ``stride``-th sample.
+
+    frames: list of ``Scene``; times: list of t [s], in sample order.
+    """
+
+    def __init__(self, stride: int = 1):
+        if stride < 1:
+            raise ValueError(f"stride must be >= 1, got {stride}")
+        self.stride = int(stride)
+        self.frames: list[Scene] = []
+        self.times: list[float] = []
+        self._n = 0
+
+    def __call__(self, t: float, body) -> None:
+        if self._n % self.stride == 0:
+            self.frames.append(body.scene())
+            self.times.append(float(t))
+        self._n += 1
+
+
+def playback_fps(times: Sequence[float], max_fps: float = MAX_FPS) -> float:
+    """Frames per second that play ``times`` [s] in real time, capped at ``max_fps``."""
+    if len(times) < 2:
+        return max_fps
+    step = float(np.median(np.diff(np.asarray(times, dtype=float))))
+    return min(max_fps, 1.0 / step) if step > 0 else max_fps
+
+
+# --------------------------------------------------------------------------- geometry per view
+
+def _project_triangles(scene: Scene, view: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The scene's visible triangles in one view: polygons (N, 3, 2) [m] painter-sorted, face and edge
+    colours (N, 4) RGBA."""
+    toward, (a, b) = VIEWS[view]
+    depth_axis = 1 if view == "top" else 2
+    polys, depth, colors, edges = [], [], [], []
+    for verts, faces, kind in scene.triangles:
+        if not len(faces):
+            continue
+        p = verts[faces]                                       # (F, 3, 3)
+        n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        norm = np.linalg.norm(n, axis=1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = (n @ toward) / norm
+        keep = np.isfinite(cos) & (cos > 1e-9) & np.all(np.isfinite(p), axis=(1, 2))  # back faces culled
+        if not keep.any():
+            continue
+        p, cos = p[keep], cos[keep]
+        polys.append(p[:, :, [a, b]])
+        depth.append(p[:, :, depth_axis].mean(axis=1))
+        shade = 0.45 + 0.55 * cos                               # flat shading, light from the viewer
+        rgb = np.asarray(to_rgb(KIND_COLORS.get(kind, DEFAULT_COLOR)))
+        face = np.column_stack([shade[:, None] * rgb, np.ones(len(p))])
+        colors.append(face)
+        # a box face is two triangles: outline them in their own colour so the diagonal does not show;
+        # FEM and lattice triangles keep a dark edge, which shows the mesh
+        edges.append(face if kind == SC.RIGID_BOX else np.tile(EDGE_RGBA, (len(p), 1)))
+    if not polys:
+        return np.zeros((0, 3, 2)), np.zeros((0, 4)), np.zeros((0, 4))
+    order = np.argsort(np.concatenate(depth), kind="stable")   # far first, near last
+    return np.concatenate(polys)[order], np.concatenate(colors)[order], np.concatenate(edges)[order]
+
+
+def _leg_segments(scene: Scene, view: str, side: int | None = None) -> tuple[np.ndarray, list]:
+    """Leg polylines O -> M -> P as segments (2 n, 2, 2) [m] and their state colours; ``side`` 0 / 1
+    keeps the left / right legs only (leg k = 2 segment + side)."""
+    if scene.legs is None:
+        return np.zeros((0, 2, 2)), []
+    _, (a, b) = VIEWS[view]
+    legs, states = scene.legs, scene.leg_states
+    if side is not None:
+        legs, states = legs[side::2], states[side::2]
+    seg = np.concatenate([legs[:, 0:2], legs[:, 1:3]])[:, :, [a, b]]
+    cols = [STATE_COLORS[int(s)] if 0 <= s < len(STATE_COLORS) else DEFAULT_COLOR for s in states]
+    return seg, cols + cols
+
+
+def _spring_segments(scene: Scene, view: str) -> np.ndarray:
+    if scene.springs is None:
+        return np.zeros((0, 2, 2))
+    _, (a, b) = VIEWS[view]
+    return scene.springs[:, :, [a, b]]
+
+
+# --------------------------------------------------------------------------- terrain
+
+def surface_height(kind: int, f: np.ndarray, x: np.ndarray, z: float = 0.0) -> np.ndarray:
+    """Height y [m] of the terrain surface (phi = 0) above each x (n,) [m] on the line z [m].
+
+    Vectorised bisection on ``terrain_phi_numpy``: phi grows with y along every
+    vertical line of a height-field terrain (plane, slope, slab), so the surface
+    is where it changes sign.  Bracketed by widening a search interval around
+    f[0]; NaN where no sign change is found (no ground below that x).
+    """
+    x = np.asarray(x, dtype=float)
+
+    def phi(y):
+        return terrain_phi_numpy(kind, f, np.column_stack([x, y, np.full_like(x, z)]))
+
+    lo, hi = np.full_like(x, f[0] - 1.0), np.full_like(x, f[0] + 1.0)
+    for _ in range(40):  # widen until phi(lo) <= 0 <= phi(hi) everywhere (or give up: a 1e12 m interval)
+        below, above = phi(lo) > 0, phi(hi) < 0
+        if not (below.any() or above.any()):
+            break
+        lo = np.where(below, lo - 2.0 * (hi - lo), lo)
+        hi = np.where(above, hi + 2.0 * (hi - lo), hi)
+    found = (phi(lo) <= 0) & (phi(hi) >= 0)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        up = phi(mid) > 0
+        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+    return np.where(found, 0.5 * (lo + hi), np.nan)
+
+
+def _draw_terrain(ax_top, ax_side, terrain, xlim, ylim, zlim) -> None:
+    kind, f = terrain
+    xs = np.linspace(xlim[0], xlim[1], 400)
+    h = surface_height(kind, f, xs, 0.5 * (zlim[0] + zlim[1]))  # the profile under the middle of the view
+    ax_side.fill_between(xs, h, ylim[0] - (ylim[1] - ylim[0]), color=GROUND_COLOR, zorder=0, lw=0)
+    ax_side.plot(xs, h, color=GROUND_EDGE, lw=1.2, zorder=0.5)
+    ax_top.add_patch(Rectangle((xlim[0], zlim[0]), xlim[1] - xlim[0], zlim[1] - zlim[0], color=GROUND_COLOR,
+                               zorder=0, lw=0))
+    if kind == SLAB and f[2] > xlim[0]:  # Miller's book occupies x <= f[2]
+        ax_top.add_patch(Rectangle((xlim[0], zlim[0]), min(f[2], xlim[1]) - xlim[0], zlim[1] - zlim[0],
+                                   color=SLAB_COLOR, zorder=0.1, lw=0))
+    # a fixed ground grid makes motion visible against the fixed camera
+    span = max(xlim[1] - xlim[0], zlim[1] - zlim[0])
+    step = 10.0 ** math.floor(math.log10(span / 4.0))
+    for v in np.arange(math.ceil(xlim[0] / step) * step, xlim[1], step):
+        ax_top.axvline(v, color=GROUND_EDGE, lw=0.3, alpha=0.4, zorder=0.2)
+    for v in np.arange(math.ceil(zlim[0] / step) * step, zlim[1], step):
+        ax_top.axhline(v, color=GROUND_EDGE, lw=0.3, alpha=0.4, zorder=0.2)
+
+
+# --------------------------------------------------------------------------- limits and layout
+
+def view_limits(frames: Sequence[Scene], terrain=None, min_aspect: float = 0.25):
+    """Fixed (xlim, ylim, zlim) [m] covering every frame, padded.
+
+    The vertical extents (z in the top view, y in the side view) are at least
+    ``min_aspect`` of the x extent, so a long thin worm still gets panels of a
+    sensible shape; the side view includes the ground below the body when it is
+    near (not the far-away plane of terrain ``none`` or a body high above it).
+    """
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    for s in frames:
+        a, b = s.bounds()
+        lo, hi = np.fmin(lo, a), np.fmax(hi, b)
+    if not np.all(np.isfinite(lo)):
+        lo, hi = np.full(3, -1.0), np.full(3, 1.0)
+    size = float(max(hi - lo))
+    size = size if size > 0 else 1.0
+    pad = 0.06 * size
+    xlim = (lo[0] - pad, hi[0] + pad)
+    if terrain is not None and terrain[0] == SLAB:  # show the book's edge when the body is near it
+        edge = float(terrain[1][2])
+        if lo[0] - 0.5 * size <= edge <= hi[0] + 0.5 * size:
+            xlim = (min(xlim[0], edge - pad), max(xlim[1], edge + pad))
+    ground_lo = lo[1]
+    if terrain is not None:
+        h = surface_height(terrain[0], terrain[1], np.linspace(*xlim, 50), 0.5 * (lo[2] + hi[2]))
+        h = h[np.isfinite(h)]
+        if len(h) and h.min() > lo[1] - 0.5 * size:
+            ground_lo = min(lo[1], float(h.min()))
+    ylim = [ground_lo - pad, hi[1] + pad]
+    zlim = [lo[2] - pad, hi[2] + pad]
+    need = min_aspect * (xlim[1] - xlim[0])
+    if ylim[1] - ylim[0] < need:
+        ylim[1] = ylim[0] + need  # grow upward: the ground stays at the bottom of the side view
+    if zlim[1] - zlim[0] < need:
+        c = 0.5 * (zlim[0] + zlim[1])
+        zlim = [c - 0.5 * need, c + 0.5 * need]
+    # and a body hanging straight down gets panels no narrower than half their height
+    need_x = 0.5 * max(ylim[1] - ylim[0], zlim[1] - zlim[0])
+    if xlim[1] - xlim[0] < need_x:
+        c = 0.5 * (xlim[0] + xlim[1])
+        xlim = (c - 0.5 * need_x, c + 0.5 * need_x)
+    return xlim, tuple(ylim), tuple(zlim)
+
+
+# --------------------------------------------------------------------------- the animation
+
+# Layout [inches]: explicit, so that equal-aspect panels fill the figure whatever the creature's shape.
+FIG_WIDTH = 13.0                         # [in]; narrower when the panels are tall
+MIN_FIG_WIDTH = 7.5                      # room for the leg-state legend
+LEFT, GAP, RIGHT = 0.75, 0.95, 0.2       # margins left of, between and right of the two panels
+BOTTOM, TOP, LEGEND = 0.5, 0.65, 0.5     # x labels; panel titles and the time line; the leg-state legend
+MAX_PANEL_HEIGHT = 6.0
+
+
+def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: int):
+    """The parts of the picture that never change (axes, labels, terrain, legend), and the two panels'
+    positions (figure fractions).  Drawn once: re-drawing tick labels for every frame cost most of the
+    time of writing an animation."""
+    xs = xlim[1] - xlim[0]
+    ratios = ((zlim[1] - zlim[0]) / xs, (ylim[1] - ylim[0]) / xs)
+    pw = 0.5 * (FIG_WIDTH - LEFT - GAP - RIGHT)
+    pw = min(pw, MAX_PANEL_HEIGHT / max(ratios))  # a tall view (a hanging body) makes the panels narrower
+    ph = [pw * r for r in ratios]
+    width = max(MIN_FIG_WIDTH, LEFT + 2 * pw + GAP + RIGHT)
+    left0 = 0.5 * (width - (2 * pw + GAP + RIGHT - LEFT))  # centred when the legend makes the figure wider
+    bottom = BOTTOM + LEGEND * has_legs
+    height = bottom + max(ph) + TOP
+    fig = plt.figure(figsize=(width, height), dpi=dpi)
+    axes = []
+    for k, (vlim, label, name) in enumerate(((zlim, "z [m]", "from above (x-z)"),
+                                             (ylim, "y [m]", "from the right side (x-y)"))):
+        left = left0 + k * (pw + GAP)
+        ax = fig.add_axes((left / width, bottom / height, pw / width, ph[k] / height))
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*vlim)
+        ax.set_xlabel("x [m]", fontsize=8, labelpad=1)
+        ax.set_ylabel(label, fontsize=8, labelpad=1)
+        ax.set_title(name, fontsize=9, pad=3)
+        ax.tick_params(labelsize=7)
+        axes.append(ax)
+    ax_top, ax_side = axes
+    ax_top.invert_yaxis()  # z points to the right of a creature facing +x: down the page, seen from above
+    if terrain is not None:
+        _draw_terrain(ax_top, ax_side, terrain, xlim, ylim, zlim)
+    if has_legs:
+        handles = [Line2D([0], [0], color=c, lw=2.5, label=n) for c, n in zip(STATE_COLORS, STATE_NAMES)]
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles) + 1, fontsize=8, frameon=False,
+                   title="leg state:", title_fontsize=8, alignment="left", borderaxespad=0.2)
+    return fig, [ax.get_position().bounds for ax in axes]
+
+
+def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, path, title: str = "",
+                    fps: float | None = None, dpi: int = 80) -> dict:
+    """Draw ``frames`` (Scenes) at ``times`` [s] into ``path`` (.gif with Pillow, .mp4 with ffmpeg).
+
+    terrain: ``(kind, f)`` of ``world.terrain.terrain_from_scenario`` or None
+    (no ground drawn).  fps: playback rate; default ``playback_fps(times)``
+    (real time, capped at MAX_FPS).  dpi: pixels per inch of the figure (at
+    most 13 inches wide).  The file is written under a temporary name in the same directory
+    and renamed into place at the end, so a failure leaves no half-written
+    animation.  Returns {"path", "frames", "fps"}.
+    """
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in SUFFIXES:
+        raise ValueError(f"{path}: an animation must end in .gif or .mp4")
+    if not len(frames) or len(frames) != len(times):
+        raise ValueError(f"need one time per frame and at least one frame, got {len(frames)} frames, "
+                         f"{len(times)} times")
+    fps = playback_fps(times) if fps is None else float(fps)
+    xlim, ylim, zlim = view_limits(frames, terrain)
+    has_legs = any(s.legs is not None for s in frames)
+
+    # The static picture, rendered once to pixels; every frame is that image plus the moving artists
+    # on two bare axes placed exactly over the panels (same limits, same pixels).
+    static, boxes = _static_figure(xlim, ylim, zlim, terrain, has_legs, dpi)
+    static.canvas.draw()
+    background = np.asarray(static.canvas.buffer_rgba()).copy()
+    fig = plt.figure(figsize=static.get_size_inches(), dpi=dpi)
+    plt.close(static)
+    bg = fig.add_axes((0, 0, 1, 1))
+    bg.imshow(background, interpolation="nearest", aspect="auto")
+    bg.set_axis_off()
+    ax_top, ax_side = (fig.add_axes(b) for b in boxes)
+    for ax, vlim in ((ax_top, zlim), (ax_side, ylim)):
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*vlim)
+        ax.set_axis_off()  # no patch, ticks or labels: those are in the background
+    ax_top.invert_yaxis()
+
+    def poly():
+        return PolyCollection([], linewidths=0.3, zorder=2)
+
+    bodies = {"top": ax_top.add_collection(poly()), "side": ax_side.add_collection(poly())}
+    springs = {v: ax.add_collection(LineCollection([], colors=[(0.2, 0.2, 0.2, 0.45)], linewidths=0.4, zorder=2.5))
+               for v, ax in (("top", ax_top), ("side", ax_side))}
+    legs_top = ax_top.add_collection(LineCollection([], linewidths=1.6, zorder=3))
+    # side view: the right legs (+z, toward the viewer) in front of the body, the left ones behind it
+    legs_side = {1: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=3)),
+                 0: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=1.5))}
+    head = fig.text(0.5, 1.0 - 0.08 / fig.get_size_inches()[1], "", ha="center", va="top", fontsize=10)
+
+    def draw(scene: Scene, t: float) -> None:
+        for view, coll in bodies.items():
+            p, c, e = _project_triangles(scene, view)
+            coll.set_verts(p)
+            coll.set_facecolor(c)
+            coll.set_edgecolor(e)
+            springs[view].set_segments(_spring_segments(scene, view))
+        seg, cols = _leg_segments(scene, "top")
+        legs_top.set_segments(seg)
+        legs_top.set_color(cols)
+        for side, coll in legs_side.items():
+            seg, cols = _leg_segments(scene, "side", side)
+            coll.set_segments(seg)
+            coll.set_color(cols)
+        head.set_text(f"{title}   t = {t:.3f} s" if title else f"t = {t:.3f} s")
+
+    if suffix == ".gif":
+        writer = animation.PillowWriter(fps=fps)
+    else:
+        writer = animation.FFMpegWriter(fps=fps, codec="h264")  # matplotlib adds yuv420p: plays everywhere
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.stem}.{os.getpid()}.tmp{path.suffix}")  # same suffix: ffmpeg picks the format by it
+    try:
+        with writer.saving(fig, str(tmp), dpi):
+            for scene, t in zip(frames, times):
+                draw(scene, t)
+                writer.grab_frame()
+        os.replace(tmp, path)
+    finally:
+        plt.close(fig)
+        if tmp.exists():
+            tmp.unlink()
+    return {"path": str(path), "frames": len(frames), "fps": fps}

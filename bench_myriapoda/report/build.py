@@ -1,0 +1,397 @@
+"""``bench-myriapoda report DIR``: the comparison report of a matrix run.
+
+Writes ``DIR/index.html`` (self-contained: inline CSS, no scripts, images as
+relative files under ``DIR/figures/``, so it opens from disk with no server
+and no network) and ``DIR/summary.md`` (the same tables, for a pull request
+or a terminal).  Sections, each an ``<section id=...>``:
+
+``overview``      what ran: matrix, case counts by status, unsupported combinations
+``comparison``    per creature, the body models side by side: speed, gait, stability, throughput
+``gait``          leg-state diagrams (paper Fig. 10) and phase lags along the body, per legged case
+``trajectories``  bodies and paths seen from above, over the terrain, per creature
+``stability``     dt x stiffness heatmaps per body model (cases of a sweep over ``dt`` and a stiffness key)
+``scaling``       steps/s against segment count and mesh resolution, log-log, fitted exponent
+``energy``        kinetic, elastic, gravitational and total energy over time
+``paper``         figure-like images next to the papers' captions, for the cases that reproduce a figure
+``history``       the ``regress`` history of normalized throughput (from the results store)
+``baseline``      with ``--baseline DIR2``: each metric's change against DIR2, regressions highlighted
+
+A section with nothing to show says why (e.g. no sweep over dt in this
+matrix) rather than disappearing, so every report has the same outline.
+The report is built in a temporary directory and moved into place, so an
+interrupted build leaves the previous report intact.
+"""
+from __future__ import annotations
+
+import html
+import os
+import shutil
+import sqlite3
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pandas as pd
+
+from ..core.errors import InputError
+from ..harness.recorder import series_from_recording
+from . import sweeps
+from .baseline import compare_runs, format_change
+from .matrix_data import MatrixResults, load_matrix_dir
+from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
+from .tables import comparison_tables, fmt, html_table, md_table
+
+SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
+            ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
+            ("stability", "Stability heatmaps (dt x stiffness)"), ("scaling", "Throughput scaling"),
+            ("energy", "Energy over time"), ("paper", "Reproduced paper figures"),
+            ("history", "Performance history (regress)"), ("baseline", "Changes against the baseline"))
+MAX_GAIT_CASES = 12  # a matrix with many legged cases shows the first ones; the tables list all
+
+CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:1.5em auto;max-width:1200px;
+padding:0 1em;color:#222}
+h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
+h3{font-size:1em;margin-bottom:.3em}
+table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em}
+th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3f3f3}
+td:first-child,th:first-child{text-align:left}
+tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
+tr.improvement td{background:#d8f0dc}tr.unstable td{background:#fff3cd}tr.error td,tr.timeout td{background:#f8d7da}
+figure{display:inline-block;margin:.3em .6em .8em 0;vertical-align:top;max-width:48%}
+figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.8em;color:#555;max-width:640px}
+nav a{margin-right:.8em;font-size:.9em}.note{color:#666;font-size:.85em}
+.caption{font-style:italic;max-width:900px}
+"""
+
+
+@dataclass
+class ReportSummary:
+    """What ``build_report`` wrote and found."""
+
+    index: Path
+    summary: Path
+    figures: list[Path] = field(default_factory=list)
+    regressions: int = 0
+
+
+class _Page:
+    """Collects the HTML and Markdown of the report, and the figures it references."""
+
+    def __init__(self, fig_dir: Path):
+        self.fig_dir = fig_dir
+        self.html: list[str] = []
+        self.md: list[str] = []
+        self.figures: list[Path] = []
+
+    def section(self, sid: str, title: str) -> None:
+        if self.html:
+            self.html.append("</section>")
+        self.html.append(f'<section id="{sid}"><h2>{html.escape(title)}</h2>')
+        self.md.append(f"\n## {title}\n")
+
+    def p(self, text: str, cls: str = "") -> None:
+        c = f' class="{cls}"' if cls else ""
+        self.html.append(f"<p{c}>{html.escape(text)}</p>")
+        self.md.append(text + "\n")
+
+    def h3(self, text: str) -> None:
+        self.html.append(f"<h3>{html.escape(text)}</h3>")
+        self.md.append(f"\n### {text}\n")
+
+    def table(self, df: pd.DataFrame, row_classes=None) -> None:
+        self.html.append(html_table(df, row_classes))
+        self.md.append(md_table(df))
+
+    def figure(self, path: Path, caption: str) -> None:
+        rel = path.relative_to(self.fig_dir.parent).as_posix()
+        self.figures.append(path)
+        self.html.append(f'<figure><img src="{html.escape(rel)}" alt="{html.escape(caption)}">'
+                         f"<figcaption>{html.escape(caption)}</figcaption></figure>")
+        self.md.append(f"![{caption}]({rel})\n")
+
+
+def _slug(*parts) -> str:
+    s = "_".join(str(p) for p in parts)
+    return "".join(ch if ch.isalnum() or ch in "-_." else "-" for ch in s)
+
+
+def build_report(directory: Path | str, baseline: Path | str | None = None, history_store: Path | str | None = None,
+                 threshold: float = 0.10) -> ReportSummary:
+    """Write ``DIR/index.html``, ``DIR/summary.md`` and ``DIR/figures/``; see the module docstring."""
+    res = load_matrix_dir(directory, "DIR")
+    base = load_matrix_dir(baseline, "--baseline") if baseline is not None else None
+    d = res.directory
+    tmp = Path(tempfile.mkdtemp(prefix=".report-", dir=d))
+    try:
+        page = _Page(tmp / "figures")
+        page.fig_dir.mkdir()
+        _overview(page, res)
+        sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
+        main = res.df[~sweep] if not res.df.empty else res.df
+        _comparison(page, res, main)
+        _gait(page, res, main)
+        _trajectories(page, res, main)
+        _stability(page, res)
+        _scaling(page, res)
+        _energy(page, res, main)
+        _paper(page, res, main)
+        _history(page, Path(history_store) if history_store else None)
+        regressions = _baseline(page, res, base, threshold)
+        page.html.append("</section>")
+        nav = "".join(f'<a href="#{sid}">{html.escape(t)}</a>' for sid, t in SECTIONS)
+        title = f"bench-myriapoda report: matrix {res.name}"
+        doc = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
+               f"<style>{CSS}</style></head><body><h1>{html.escape(title)}</h1><nav>{nav}</nav>"
+               + "\n".join(page.html) + "</body></html>\n")
+        (tmp / "index.html").write_text(doc, encoding="utf-8")
+        (tmp / "summary.md").write_text(f"# {title}\n" + "\n".join(page.md), encoding="utf-8")
+        # move into place: figures first (the old page keeps working until index.html is replaced)
+        final_fig = d / "figures"
+        old = d / f".figures-old-{os.getpid()}"
+        if final_fig.exists():
+            final_fig.rename(old)
+        (tmp / "figures").rename(final_fig)
+        os.replace(tmp / "index.html", d / "index.html")
+        os.replace(tmp / "summary.md", d / "summary.md")
+        shutil.rmtree(old, ignore_errors=True)
+        figures = [final_fig / p.name for p in page.figures]
+        return ReportSummary(d / "index.html", d / "summary.md", figures, regressions)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+# --------------------------------------------------------------------------- sections
+
+def _overview(page: _Page, res: MatrixResults) -> None:
+    page.section("overview", "Overview")
+    page.p(f"Matrix {res.name!r}: {res.description}" if res.description else f"Matrix {res.name!r}.")
+    df = res.df
+    counts = df["status"].value_counts().to_dict() if not df.empty else {}
+    page.p(f"{len(df)} cases: " + (", ".join(f"{n} {s}" for s, n in sorted(counts.items())) or "none stored yet")
+           + f". Built {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}.")
+    bad = df[df["status"].isin(["error", "timeout"])] if not df.empty else df
+    if not bad.empty:
+        page.p("Cases that did not finish:")
+        page.table(bad[["label", "status", "message"]].reset_index(drop=True),
+                   [str(s) for s in bad["status"]])
+    if res.unsupported:
+        page.p("Unsupported combinations (listed before the run, not run): " + "; ".join(res.unsupported), "note")
+
+
+def _comparison(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+    page.section("comparison", "Comparison across body models")
+    if main.empty:
+        page.p("No case outside the parameter sweeps; see the stability and scaling sections.", "note")
+        return
+    page.p("One table per creature; a row per case. Speed, gait, stability and throughput metrics "
+           "(README, 'Metrics'); '-' = undefined for this case (e.g. leg metrics of a worm).", "note")
+    for creature, table in comparison_tables(main, [f"grid.{k}" for k in res.grid_keys]).items():
+        page.h3(creature)
+        page.table(table, [s if s != "ok" else "" for s in table["status"]])
+
+
+def _legged(res: MatrixResults, df: pd.DataFrame):
+    for _, r in df.iterrows():
+        if r["status"] == "error":
+            continue
+        rec = res.recording(r.case_hash)
+        if rec is not None and "leg_states" in rec and len(rec["leg_t"]) > 1:
+            yield r, rec
+
+
+def _gait(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+    from .gait_diagram import plot_gait_diagram, plot_phase_lags
+
+    page.section("gait", "Gait diagrams and phase lags")
+    shown = 0
+    for r, rec in _legged(res, main):
+        if shown >= MAX_GAIT_CASES:
+            page.p(f"(further legged cases not drawn; at most {MAX_GAIT_CASES})", "note")
+            break
+        page.h3(r.label)
+        t, states = rec["leg_t"], rec["leg_states"]
+        p1 = plot_gait_diagram(t, states, page.fig_dir / f"gait_{_slug(r.case_hash)}.png", last_seconds=1.0,
+                               title=f"{r.label}: leg states, last second")
+        page.figure(p1, "Leg states over the last second (rows: legs, head at the top), as the paper's Fig. 10.")
+        try:
+            p2 = plot_phase_lags(t, states, page.fig_dir / f"lag_{_slug(r.case_hash)}.png",
+                                 warmup_s=min(1.0, 0.3 * float(t[-1])), title=f"{r.label}: phase lags")
+            page.figure(p2, "Phase lag of each leg behind the same-side leg ahead; positive = retrograde wave.")
+        except ValueError as exc:  # too few stance onsets to measure a lag
+            page.p(f"No phase lags: {exc}", "note")
+        shown += 1
+    if shown == 0:
+        page.p("No legged creature in this matrix (or none left a leg timeline).", "note")
+
+
+def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+    from .trajectories import plot_top_views
+
+    page.section("trajectories", "Trajectories from above")
+    drawn = 0
+    for (creature, scenario), sub in main.groupby(["creature", "scenario"], sort=True):
+        runs, scen = [], []
+        for _, r in sub.iterrows():
+            rec = res.recording(r.case_hash)
+            if rec is None or len(rec["t"]) < 2:
+                continue
+            runs.append((f"{r.body} / {r.gait}" + ("" if pd.isna(r.get("seed")) else f" / seed {int(r.seed)}"),
+                         series_from_recording(rec)))
+            scen.append(res.case(r.case_hash)["scenario"])
+        if not runs:
+            continue
+        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario)}.png", scenarios=scen[:6])
+        page.figure(path, f"{creature} on {scenario}, seen from above: body centre line at six times (light to dark) "
+                          "and the centre of mass path (dashed); x forward, z to the right.")
+        drawn += 1
+    if not drawn:
+        page.p("No recorded trajectories in this matrix.", "note")
+
+
+def _stability(page: _Page, res: MatrixResults) -> None:
+    page.section("stability", "Stability heatmaps (dt x stiffness)")
+    groups = sweeps.stability_groups(res.df, res.grid_keys) if not res.df.empty else []
+    if not groups:
+        page.p("No sweep over dt and a stiffness key (" + ", ".join(sweeps.STIFFNESS_KEYS) + ") in this matrix; "
+               "add one under [matrix.grid] to get a heatmap.", "note")
+        return
+    for creature, body, key, sub in groups:
+        path = sweeps.plot_stability_heatmap(sub, key, page.fig_dir / f"stability_{_slug(creature, body)}.png",
+                                             f"{creature} / {body}: stable (green) or time of blow-up")
+        page.figure(path, f"{creature} on the {body} body: each cell a run of {sub['duration'].max():g} s at that "
+                          f"dt and {key}; green = stable throughout, red = blew up (t_fail shown), grey = error.")
+
+
+def _scaling(page: _Page, res: MatrixResults) -> None:
+    page.section("scaling", "Throughput scaling")
+    series = sweeps.scaling_series(res.df, res.grid_keys) if not res.df.empty else []
+    if not series:
+        page.p("No sweep over a size key (" + ", ".join(sweeps.SIZE_KEYS) + ") in this matrix.", "note")
+        return
+    rows = []
+    for key in sweeps.SIZE_KEYS:
+        if not any(s[0] == key for s in series):
+            continue
+        path, fits = sweeps.plot_throughput_scaling(series, page.fig_dir / f"scaling_{_slug(key)}.png", key)
+        page.figure(path, f"Steps per second against {key} (log-log); p is the fitted exponent of steps/s ~ N^p "
+                          "(p = -1: cost linear in size).")
+        for name, p in fits.items():
+            n = next(s[3] for s in series if s[0] == key and f"{s[1]}/{s[2]}" == name)
+            rows.append({"sweep": key, "creature/body": name, "sizes": ", ".join(f"{x:g}" for x in n),
+                         "exponent p": p})
+    page.table(pd.DataFrame(rows))
+
+
+def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+    from .series_plots import plot_energy
+
+    page.section("energy", "Energy over time")
+    drawn = 0
+    for creature, sub in main.groupby("creature", sort=True):
+        runs = []
+        for _, r in sub.iterrows():
+            rec = res.recording(r.case_hash)
+            if rec is not None and len(rec["t"]) > 1:
+                runs.append((f"{r.body} / {r.gait} / {r.scenario}", series_from_recording(rec)))
+        if runs:
+            path = plot_energy(runs[:9], page.fig_dir / f"energy_{_slug(creature)}.png")
+            page.figure(path, f"{creature}: kinetic, elastic, gravitational and total energy relative to t = 0 [J].")
+            drawn += 1
+    if not drawn:
+        page.p("No recorded energies in this matrix.", "note")
+
+
+def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+    from .gait_diagram import plot_gait_diagram
+    from .series_plots import plot_side_strip
+    from .trajectories import plot_top_views
+
+    page.section("paper", "Reproduced paper figures")
+    found = 0
+    for _, r in main.iterrows():
+        fig = figure_for(str(r.scenario), str(r.gait))
+        if fig is None or r["status"] == "error":
+            continue
+        rec = res.recording(r.case_hash)
+        if rec is None or len(rec["t"]) < 2:
+            continue
+        found += 1
+        page.h3(f"{fig.figure} ({fig.paper}): {r.label}")
+        page.html.append(f'<p class="caption">{html.escape(fig.caption)}</p>')
+        page.md.append(f"> {fig.caption}\n")
+        s = series_from_recording(rec)
+        scen = res.case(r.case_hash)["scenario"]
+        slug = _slug(r.case_hash)
+        if "side" in fig.images:
+            page.figure(plot_side_strip(f"{r.label}: side view", s, scen, page.fig_dir / f"paper_side_{slug}.png"),
+                        "Side view at six times spaced by the body's motion (light to dark), over the terrain.")
+        if "gait" in fig.images and "leg_states" in rec and len(rec["leg_t"]) > 1:
+            gait_png = page.fig_dir / f"gait_{slug}.png"  # drawn by the gait section already, unless capped
+            if not gait_png.is_file():
+                plot_gait_diagram(rec["leg_t"], rec["leg_states"], gait_png, last_seconds=1.0,
+                                  title=f"{r.label}: leg states, last second")
+            page.figure(gait_png, "Leg states during the last second (the right panel of Fig. 10).")
+        if "top" in fig.images:
+            page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png", scenarios=[scen]),
+                        "Seen from above.")
+    walks = main[(main.get("scenario") == "walk") & (main.get("creature") == "centipede")] if not main.empty else main
+    if not walks.empty:
+        page.h3("Throughput headline (Sec. 6)")
+        page.html.append(f'<p class="caption">{html.escape(PAPER_THROUGHPUT_NOTE)}</p>')
+        page.md.append(f"> {PAPER_THROUGHPUT_NOTE}\n")
+        rows = [{"case": r.label, "segments": res.case(r.case_hash)["creature"]["segments"],
+                 "dt [s]": r["dt"], "steps/s (here)": r.steps_per_s, "steps/s (paper)": PAPER_STEPS_PER_S,
+                 "ratio": r.steps_per_s / PAPER_STEPS_PER_S, "x realtime": r.realtime_factor}
+                for _, r in walks.iterrows()]
+        page.table(pd.DataFrame(rows))
+        page.p("Here: one core of the machine that ran the matrix, a single run (see 'regress' for repeated "
+               "medians); the paper: 6 cores with OpenMP.", "note")
+        found += 1
+    if not found:
+        page.p("No case of this matrix reproduces a paper figure (run scenarios/matrix/paper.toml or miller.toml).",
+               "note")
+
+
+def _history(page: _Page, store: Path | None) -> None:
+    page.section("history", "Performance history (regress)")
+    if store is None or not store.is_file():
+        page.p("No results store with a regress history" + (f" at {store}" if store else "") +
+               "; run `bench-myriapoda regress` to start one.", "note")
+        return
+    from ..harness.regress import load_history
+    from .regress_history import plot_regress_history
+
+    try:
+        hist = load_history(store)
+    except sqlite3.Error as exc:
+        page.p(f"Could not read the regress history in {store}: {exc}", "note")
+        return
+    if hist.empty:
+        page.p(f"No regress runs in {store} yet; run `bench-myriapoda regress`.", "note")
+        return
+    path = plot_regress_history(hist, page.fig_dir / "regress_history.png")
+    page.figure(path, "Normalized throughput (steps/s divided by the reference kernel's rate, timed in the same run) "
+                      "per suite entry and regress run.")
+
+
+def _baseline(page: _Page, res: MatrixResults, base: MatrixResults | None, threshold: float) -> int:
+    page.section("baseline", "Changes against the baseline")
+    if base is None:
+        page.p("No baseline given; run `bench-myriapoda report DIR --baseline DIR2` to compare two matrix runs.", "note")
+        return 0
+    diff = compare_runs(res, base, threshold)
+    n_reg = int((diff["verdict"] == "regression").sum())
+    page.p(f"Baseline: {base.directory} (matrix {base.name!r}). {n_reg} regression(s); changes within "
+           f"{100 * threshold:g} % (15 % for throughput) are not listed.")
+    if diff.empty:
+        page.p("No metric changed beyond the threshold.")
+        return 0
+    shown = diff.copy()
+    shown["change"] = [format_change(c) if isinstance(c, float) else "-" for c in shown["change"]]
+    shown["baseline"] = [fmt(v) for v in shown["baseline"]]
+    shown["now"] = [fmt(v) for v in shown["now"]]
+    page.table(shown, list(diff["verdict"]))
+    return n_reg
+
