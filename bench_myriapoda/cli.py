@@ -319,8 +319,11 @@ def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
 
             terrain = None if case.scenario.terrain == "none" else terrain_from_scenario(case.scenario)
             title = f"{case.creature.name} / {case.body.name} / {case.gait.name} / {case.scenario.name}"
+            water = frames.water()
+            if water is not None:
+                water = (water[0][::anim_stride], water[1])
             info = write_animation(frames.frames[::anim_stride], frames.times[::anim_stride], terrain,
-                                   Path(args.animate), title=title)
+                                   Path(args.animate), title=title, water=water)
             print(f"animation: {info['path']} ({info['frames']} frames at {info['fps']:.3g} fps)", file=note)
         if args.export_frames:
             from .report.export_frames import export_frames

@@ -1,6 +1,5 @@
 """Scenario matrices: expansion, bad files, local vs Dask, fault isolation, kill and resume."""
 import math
-import os
 import signal
 import sqlite3
 import subprocess
@@ -102,7 +101,9 @@ def test_the_shipped_matrices_expand_without_unsupported_combinations():
     assert {m.axes["body"] for m in quick.cases if "dt" in m.axes} == {"massspring", "fem", "hybrid"}
     miller = expand_matrix(ROOT / "scenarios" / "matrix" / "miller.toml")
     paper = expand_matrix(ROOT / "scenarios" / "matrix" / "paper.toml")
-    assert {m.axes["scenario"] for m in paper.cases} == {"fig4-drop", "hang", "drop-adjust", "walk", "control"}
+    assert {m.axes["scenario"] for m in paper.cases} == {
+        "fig4-drop", "hang", "drop-adjust", "walk", "control",
+        "fig1-mesh", "terrain", "fig13-cylinders", "foraging", "fig12-water-foraging"}
     assert len(miller.cases) == 10 and not quick.unsupported and not miller.unsupported and not paper.unsupported
 
 

@@ -10,7 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..controllers.myriapod.controller import BRAIN_MODE_NAMES, MyriapodController
+from ..controllers.myriapod.controller import (
+    AVOIDANCE,
+    BRAIN_MODE_NAMES,
+    TROPHOTROPISM,
+    MyriapodController,
+)
+from ..metrics.behaviour import BehaviourSampler
 from ..metrics.gait import gait_metrics
 from .observation import Observation
 from .scene import Scene, legs_scene
@@ -40,6 +46,10 @@ class BodyMyriapod:
         self.name = segments.name
         self.controller = MyriapodController(case, len(segments.segment_poses()[0]), segment_pitch_m)
         self._com: list[np.ndarray] = []  # mean segment centre at each timeline sample [m]
+        ctrl = self.controller
+        self.behaviour = BehaviourSampler(ctrl.terr_kind, ctrl.terr, case.scenario.terrain == "none")
+        cr = case.creature
+        self._half = 0.5 * np.array([cr.segment_length_m, cr.height_m, cr.width_m])  # boxes of bodies without any
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
@@ -52,11 +62,33 @@ class BodyMyriapod:
             ctrl.step(self.segments, t)
             if recording:
                 self._com.append(self.segments.segment_poses()[0].mean(axis=0))
+                self._sample_behaviour()
             done, status = self.segments.advance(t, 1)
             if status != 0:
                 return k + done, status
             self.controller.record_tracking(self.segments.segment_poses()[0])
         return n_steps, 0
+
+    def sample_points(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(segment centres (n, 3), rigid box corners (8 n_rigid, 3), leg tips (n_legs, 3)) [m] now.
+
+        Centres: the body's own (rigid and link centres) when it has them; corners:
+        the body's rigid boxes, or boxes of the creature's segment size on the
+        segment poses for a body without any (the FEM's stiff blocks).
+        """
+        seg = self.segments
+        c, R = seg.segment_poses()
+        centres = seg.segment_centers() if hasattr(seg, "segment_centers") else c
+        if hasattr(seg, "box_corners"):
+            corners = seg.box_corners()
+        else:
+            signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+            corners = (c[:, None, :] + np.einsum("nij,kj->nki", R, signs * self._half)).reshape(-1, 3)
+        return centres, corners, self.controller.tips
+
+    def _sample_behaviour(self) -> None:
+        centres, corners, tips = self.sample_points()
+        self.behaviour.sample(centres, corners, tips, self.segments.segment_poses()[0][0])
 
     def compile(self) -> None:
         """Compile the body's kernels and the controller's (one step of a throw-away copy)."""
@@ -117,6 +149,18 @@ class BodyMyriapod:
         out["touch_fraction_at_walk"] = c.touch_fraction_at_walk
         out["tracking_error_mean_m"] = c.tracking_sq_sum / c.tracking_n if c.tracking_n else float("nan")
         out["brain_mode_final"] = float(c.brain)
+        out.update(self.behaviour_metrics())
+        return out
+
+    def behaviour_metrics(self) -> dict[str, float]:
+        """Food, antenna contacts, obstacle penetration, head path, clearance (``metrics.behaviour``)."""
+        c = self.controller
+        out = dict(self.behaviour.metrics())
+        out.update(c.food.metrics())
+        out["obstacle_contacts"] = float(c.antennae.contact_events) if c.antennae is not None else 0.0
+        steps = max(int(c.brain_steps.sum()), 1)
+        for mode, name in ((AVOIDANCE, "avoidance"), (TROPHOTROPISM, "trophotropism")):
+            out[f"brain_{name}_fraction"] = float(c.brain_steps[mode]) / steps
         return out
 
     def labels_dict(self) -> dict[str, str]:

@@ -16,6 +16,9 @@ from ..world.terrain import placement_terrain
 from ..world.terrain_kernels import signed_distance
 
 
+MAX_LIFT_ITERATIONS = 60
+
+
 def initial_transform(rest_points: np.ndarray, case) -> tuple[np.ndarray, np.ndarray]:
     """Rotation R (3, 3) and translation t (3,) [m] with world = R @ rest + t.
 
@@ -34,10 +37,17 @@ def initial_transform(rest_points: np.ndarray, case) -> tuple[np.ndarray, np.nda
         R = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
         normal = np.array([-s, c, 0.0])
     t = np.array([sc.start_x_m, 0.0, 0.0])
-    x = rest_points @ R.T + t
     kind, f = placement_terrain(sc)
-    phi = min(signed_distance(kind, f, *p) for p in x)
-    return R, t + (sc.start_height_m - phi) * normal
+    # Lift along the normal until the lowest point is start_height_m above the surface.  One step is
+    # exact for the planar terrains; a mesh clamps phi to +-band far from its surface (and a height
+    # field's phi is a first-order distance), so repeat until the clearance is right.
+    for _ in range(MAX_LIFT_ITERATIONS):
+        x = rest_points @ R.T + t
+        phi = min(signed_distance(kind, f, *p) for p in x)
+        t = t + (sc.start_height_m - phi) * normal
+        if abs(sc.start_height_m - phi) < 1e-9 * max(1.0, abs(phi)):
+            break
+    return R, t
 
 
 def place_points(rest_points: np.ndarray, case) -> np.ndarray:

@@ -134,7 +134,9 @@ class RigidBoxes:
         """Run n_steps steps of dt [s] inside numba; returns (n_done, status).
 
         gravity: (3,) [m/s^2].  terrain_kind / terrain_params: see
-        ``world.terrain_kernels`` (default: the plane y = 0).  The force and
+        ``world.terrain_kernels`` (default: the plane y = 0); a vector of at least
+        N_TERRAIN_PARAMS values (header and data blocks) is used as is, a shorter
+        one is zero-padded to a header.  The force and
         torque accumulators act as constant loads during the call and are
         zeroed afterwards when ``clear_forces``.  status is STATUS_OK (0), or
         STATUS_NONFINITE (1) / STATUS_RUNAWAY (2) after n_done steps, the
@@ -146,9 +148,10 @@ class RigidBoxes:
         f = np.zeros(N_TERRAIN_PARAMS)
         if terrain_params is not None:
             p = np.asarray(terrain_params, dtype=np.float64).reshape(-1)
-            if p.shape[0] > N_TERRAIN_PARAMS:
-                raise ValueError(f"at most {N_TERRAIN_PARAMS} terrain parameters, got {p.shape[0]}")
-            f[: p.shape[0]] = p
+            if p.shape[0] >= N_TERRAIN_PARAMS:  # a full vector (header + data blocks): used as is
+                f = np.ascontiguousarray(p)
+            else:  # a short header: zero-padded
+                f[: p.shape[0]] = p
         n_done, status = rk.advance(
             self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents,
             self.force, self.torque, self.kinematic, self.impulse_cache, int(n_steps),

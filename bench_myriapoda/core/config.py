@@ -25,13 +25,14 @@ from typing import Any, Iterable, Mapping
 from . import registry
 from .errors import InputError
 from .paths import models_dir, scenarios_dir
-from .schema import (SECTIONS, TOP_LEVEL_SCALARS, CollisionConfig, ControllerConfig, CreatureConfig, FrictionConfig,
-                     GaitConfig, LegsConfig, MetricsConfig, RecordConfig, ScenarioConfig, StabilityConfig, check_range,
-                     check_section, coerce_value)
+from .schema import (SECTIONS, TOP_LEVEL_SCALARS, AntennaeConfig, CollisionConfig, ControllerConfig, CreatureConfig,
+                     FoodConfig, FrictionConfig, GaitConfig, LegsConfig, MetricsConfig, RecordConfig, ScenarioConfig,
+                     StabilityConfig, check_range, check_section, coerce_value)
 
-CREATURE_FILE_TABLES = {"creature", "legs", "controller", "friction", "collision", "gaits", "bodies", "record",
-                        "stability", "metrics"}
-SCENARIO_FILE_TABLES = {"scenario", "controller", "friction", "collision", "record", "stability", "metrics"}
+CREATURE_FILE_TABLES = {"creature", "legs", "controller", "antennae", "friction", "collision", "gaits", "bodies",
+                        "record", "stability", "metrics"}
+SCENARIO_FILE_TABLES = {"scenario", "controller", "antennae", "food", "friction", "collision", "record", "stability",
+                        "metrics"}
 NAME_KEYS = {"creature.name": "--creature", "body.name": "--body", "gait.name": "--gait", "scenario.name": "--scenario"}
 
 
@@ -53,6 +54,8 @@ class Case:
     dt: float
     duration: float
     seed: int
+    antennae: AntennaeConfig = dataclasses.field(default_factory=AntennaeConfig)
+    food: FoodConfig = dataclasses.field(default_factory=FoodConfig)
 
     def to_dict(self) -> dict[str, Any]:
         d = dataclasses.asdict(self)
@@ -128,7 +131,7 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
     data = read_tables(path, CREATURE_FILE_TABLES, "creature")
     src = str(path)
     check_section(CreatureConfig, data["creature"], src, "creature")
-    for table in ("legs", "controller", "friction", "collision", "record", "stability", "metrics"):
+    for table in ("legs", "controller", "antennae", "friction", "collision", "record", "stability", "metrics"):
         if table in data:
             check_section(SECTIONS[table], data[table], src, table)
     for gait, table in data.get("gaits", {}).items():
@@ -245,7 +248,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
         "gait": {"name": gait, **cdata.get("gaits", {}).get(gait, {})},
         "scenario": {"name": spath.stem, **sdata["scenario"]},
     }
-    for table in ("legs", "controller", "friction", "collision", "record", "stability", "metrics"):
+    for table in ("legs", "controller", "antennae", "food", "friction", "collision", "record", "stability", "metrics"):
         layers[table] = {**cdata.get(table, {}), **sdata.get(table, {})}
     sc = layers["scenario"]
     lens = {k: len(sc[k]) for k in ("control_times_s", "control_speed_m_s", "control_turn_rate_deg_s") if k in sc}
@@ -278,6 +281,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
         dt=layers.get("dt", spec.default_dt(body_cfg)),
         duration=layers.get("duration", scen.duration_s),
         seed=layers.get("seed", 0),
+        antennae=sections["antennae"], food=sections["food"],
     )
     if case.dt > case.duration:
         raise InputError("--dt", "dt", f"{case.dt} is longer than the duration {case.duration} s")

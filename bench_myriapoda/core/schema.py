@@ -19,9 +19,50 @@ from typing import Any, Mapping
 from .errors import InputError
 
 
-def rng(default, *, ge=None, gt=None, le=None, lt=None, choices=None, doc=""):
-    """A dataclass field with range metadata."""
-    return field(default=default, metadata=dict(ge=ge, gt=gt, le=le, lt=lt, choices=choices, doc=doc))
+def rng(default, *, ge=None, gt=None, le=None, lt=None, choices=None, doc="", length=None, multiple=None,
+        ordered=False, check=None):
+    """A dataclass field with range metadata.
+
+    For a list of numbers, ge/gt/le/lt bound every element; ``length`` is its
+    exact length, ``multiple`` a number its length must be a multiple of,
+    ``ordered`` asks for non-decreasing elements (a [lo, hi] pair), and
+    ``check(value)`` returns an error message or None for anything else.
+    """
+    return field(default=default, metadata=dict(ge=ge, gt=gt, le=le, lt=lt, choices=choices, doc=doc, length=length,
+                                                multiple=multiple, ordered=ordered, check=check))
+
+
+def _check_box_list(v) -> str | None:
+    for i in range(0, len(v), 7):
+        if min(v[i + 3: i + 6]) <= 0:
+            return f"box {i // 7}: half extents (elements 4-6 of each group of 7) must be > 0"
+    return None
+
+
+def _check_cylinder_list(v) -> str | None:
+    for i in range(0, len(v), 4):
+        if v[i + 2] <= 0 or v[i + 3] <= 0:
+            return f"cylinder {i // 4}: radius and height (elements 3 and 4 of each group of 4) must be > 0"
+    return None
+
+
+def _check_region(v) -> str | None:
+    if not (v[0] < v[1] and v[2] < v[3]):
+        return "expected [x_min, x_max, z_min, z_max] with x_min < x_max and z_min < z_max"
+    return None
+
+
+def _check_mesh(v) -> str | None:
+    """'skull' or a readable, closed mesh file (loaded once to check it)."""
+    if v == "skull":
+        return None
+    from ..world.meshes import MeshError, load_closed_mesh
+
+    try:
+        load_closed_mesh(v)
+    except MeshError as exc:
+        return f"expected 'skull' or a closed mesh file trimesh loads: {exc}"
+    return None
 
 
 @dataclass(frozen=True)
@@ -119,6 +160,22 @@ class ControllerConfig:
     random_turn_rate_deg_s: float = rng(10.0, ge=0.0, doc="RANDOM-WALK: turn rate toward the target [deg/s]")
     adjustment_majority: float = rng(0.5, gt=0.0, le=1.0,
                                      doc="ADJUSTMENT ends when more than this fraction of legs touch the ground")
+    avoid_turn_rate_deg_s: float = rng(25.0, ge=0.0,
+                                       doc="AVOIDANCE: turn rate away from the touching antenna [deg/s]")
+    avoid_hold_s: float = rng(0.5, ge=0.0,
+                              doc="AVOIDANCE: keeps turning this long after the last antenna contact [s]")
+    avoid_speed_factor: float = rng(1.0, ge=0.0, le=1.0,
+                                    doc="AVOIDANCE: head speed as a fraction of head_speed_m_s")
+    avoid_priority: str = rng("left", choices=("left", "right"),
+                              doc="AVOIDANCE: the antenna that wins when both touch (left: the head turns right)")
+    max_body_turn_deg: float = rng(90.0, gt=0.0,
+                                   doc="AVOIDANCE and TROPHOTROPISM: the head's turning summed over about the last "
+                                       "body length of its path (weighted by exp(-distance / body length)) stays "
+                                       "within +-this; past it the head goes straight on [deg]")
+    forage_turn_rate_deg_s: float = rng(15.0, ge=0.0,
+                                        doc="TROPHOTROPISM: largest turn rate toward the stronger food signal [deg/s]")
+    forage_gain: float = rng(4.0, gt=0.0, doc="TROPHOTROPISM: turn rate = forage_turn_rate * min(1, gain * "
+                                              "|S_left - S_right| / (S_left + S_right))")
 
 
 @dataclass(frozen=True)
@@ -158,12 +215,49 @@ class ScenarioConfig:
 
     name: str = rng("")
     description: str = rng("")
-    terrain: str = rng("plane", choices=("plane", "slope", "slab", "none"), doc="'none': no ground at all")
+    terrain: str = rng("plane", choices=("plane", "slope", "slab", "heightfield", "mesh", "none"),
+                       doc="'none': no ground at all; 'heightfield': Gaussian mixture (Sec. 6.2); 'mesh': a closed "
+                           "triangle mesh (Fig. 1)")
     ground_height_m: float = rng(0.0)
     slope_deg: float = rng(0.0, ge=-80.0, le=80.0, doc="slope: incline rising toward +x [deg]")
     slab_height_m: float = rng(0.3, gt=0.0, doc="slab: height of Miller's book [m]")
     slab_edge_x_m: float = rng(0.0, doc="slab: x of the book's edge (slab at x <= edge) [m]")
     slab_edge_radius_m: float = rng(0.02, gt=0.0, doc="slab: radius of the rounded edge [m]")
+    terrain_seed: int = rng(0, ge=0, doc="seed of the random height field and random obstacles (not the case seed)")
+    heightfield_count: int = rng(20, ge=0, le=100000, doc="heightfield: number of Gaussians")
+    heightfield_amplitude_m: list = rng((0.0, 0.5), length=2, ordered=True,
+                                        doc="heightfield: [lo, hi] of the uniform Gaussian amplitudes "
+                                            "(negative: pits) [m]")
+    heightfield_width_m: list = rng((1.0, 3.0), gt=0.0, length=2, ordered=True,
+                                    doc="heightfield: [lo, hi] of the uniform Gaussian widths s (std) [m]")
+    heightfield_extent_m: float = rng(20.0, gt=0.0, doc="heightfield: Gaussian centres uniform in |x|, |z| <= this [m]")
+    mesh: str = rng("skull", check=_check_mesh,
+                    doc="mesh: 'skull' (procedural closed skull shipped with the project) or a path (relative to "
+                        "the working directory) to a closed (watertight) mesh file trimesh loads")
+    mesh_subdivisions: int = rng(92, ge=1, le=400,
+                                 doc="mesh 'skull': cells per cube edge; 12 n^2 triangles (92: 101,568)")
+    mesh_scale: float = rng(1.0, gt=0.0, doc="mesh: vertices scaled by this (the skull is about 2 m long at 1)")
+    mesh_translate_m: list = rng((0.0, 0.0, 0.0), length=3, doc="mesh: [x, y, z] added after scaling [m]")
+    mesh_ground: bool = rng(False, doc="mesh: also a ground plane at ground_height_m")
+    mesh_band_m: float = rng(0.0, ge=0.0, doc="mesh: signed distances within this band (exact within a quarter "
+                                              "hash cell of the surface, interpolated from exact samples beyond), "
+                                              "+-band farther [m]; 0: a tenth of the mesh's bounding-box diagonal")
+    obstacle_cylinders: int = rng(0, ge=0, le=100000, doc="number of random vertical cylinders (Fig. 13)")
+    obstacle_radius_m: list = rng((0.2, 0.5), gt=0.0, length=2, ordered=True,
+                                  doc="random cylinders: [lo, hi] of the uniform radii [m]")
+    obstacle_height_m: list = rng((0.1, 0.4), gt=0.0, length=2, ordered=True,
+                                  doc="random cylinders: [lo, hi] of the uniform heights above the surface [m]")
+    obstacle_region_m: list = rng((-10.0, 10.0, -10.0, 10.0), length=4, check=_check_region,
+                                  doc="random cylinders: centres uniform in [x_min, x_max, z_min, z_max] [m]")
+    obstacle_clear_radius_m: float = rng(2.0, ge=0.0,
+                                         doc="random cylinders keep clear of the disc of this radius about the "
+                                             "origin (the start area) [m]")
+    obstacle_cylinder_list: list = rng((), multiple=4, check=_check_cylinder_list,
+                                       doc="explicit cylinders: groups of 4 numbers x, z, radius, height above the "
+                                           "surface [m]")
+    obstacle_box_list: list = rng((), multiple=7, check=_check_box_list,
+                                  doc="explicit boxes: groups of 7 numbers x, y, z, half_x, half_y, half_z [m], "
+                                      "yaw [deg]; y: centre height above the surface at (x, z)")
     start_height_m: float = rng(0.0, ge=0.0, doc="clearance of the body's underside above the surface at t=0 [m]")
     start_x_m: float = rng(0.0, doc="x of the head at t=0 (creatures face +x) [m]")
     perturbation_m: float = rng(0.0, ge=0.0, doc="random displacement (std) of every node at t=0, seeded by seed [m]")
@@ -176,6 +270,89 @@ class ScenarioConfig:
     control_times_s: list = rng((0.0,), doc="CONTROL: times [s] at which the commands below take effect")
     control_speed_m_s: list = rng((0.5,), doc="CONTROL: head speed from each time on [m/s]")
     control_turn_rate_deg_s: list = rng((0.0,), doc="CONTROL: turn rate from each time on [deg/s], + = left")
+    # shallow water over the terrain (Sec. 6.2, Kass and Miller 1990): world/water.py, world/water_coupling.py
+    water_depth_m: float = rng(0.0, ge=0.0, le=100.0, doc="shallow water: still depth over ground_height_m [m]; "
+                                                           "0: no water")
+    water_region_m: list = rng((-5.0, 5.0, -5.0, 5.0), length=4, check=_check_region,
+                               doc="shallow water: the grid's [x_min, x_max, z_min, z_max] [m] (walls at its edges)")
+    water_cell_m: float = rng(0.05, gt=0.0, doc="shallow water: grid cell size [m]")
+    water_damping_per_s: float = rng(0.1, ge=0.0, doc="shallow water: damping rate of the surface velocity [1/s]")
+    water_courant: float = rng(0.5, gt=0.0, le=4.0,
+                               doc="shallow water: largest Courant number sqrt(g d) dt / dx of its sub-steps "
+                                   "(accuracy: 0.5 keeps the wave speed within 2 %)")
+    water_point_radius_m: float = rng(0.05, gt=0.0, doc="shallow water: radius of a leg tip or body node as it "
+                                                          "pushes water [m]")
+
+
+def _check_food_list(v) -> str | None:
+    for i in range(0, len(v), 4):
+        if v[i + 3] <= 0:
+            return f"food source {i // 4}: intensity (element 4 of each group of 4) must be > 0"
+    return None
+
+
+@dataclass(frozen=True)
+class AntennaeConfig:
+    """The two antennae of a myriapod's head (paper Sec. 5.2, Fig. 11).
+
+    Each is a chain of ``n_links`` links with (theta, phi) joints relative to
+    the previous link (theta: yaw, positive outward, away from the midline;
+    phi: pitch, positive up); the root joint sits on the head at (root_x, root_y,
+    -+root_z) in the head frame (x forward, y up, z right; the left antenna at -z).
+    The root link turns at ``omega0`` toward random targets drawn in the two
+    ranges; links i >= 1 follow A sin(2 pi f t - lambda i) + B.
+    """
+
+    enabled: bool = rng(True, doc="false: no antennae (no obstacle contact, no food sensing)")
+    n_links: int = rng(12, ge=1, le=100, doc="links per antenna")
+    link_length_m: float = rng(0.3, gt=0.0, doc="length of one link [m]")
+    root_x_m: float = rng(0.5, doc="root joint along the head (head frame x) [m]")
+    root_y_m: float = rng(0.1, doc="root joint height in the head frame [m]")
+    root_z_m: float = rng(0.3, ge=0.0, doc="root joint distance from the midline (left at -z, right at +z) [m]")
+    root_theta_range_deg: list = rng((-10.0, 60.0), ge=-90.0, le=150.0, length=2, ordered=True,
+                                     doc="[lo, hi] of the root link's random yaw targets, outward positive (below 0 "
+                                         "the antenna sweeps in front of the head) [deg]")
+    root_phi_range_deg: list = rng((-20.0, 15.0), ge=-80.0, le=80.0, length=2, ordered=True,
+                                   doc="[lo, hi] of the root link's random pitch targets, up positive [deg]")
+    omega0_deg_s: float = rng(90.0, gt=0.0, doc="omega0: root link's turn speed toward its target [deg/s]")
+    wave_amplitude_theta_deg: float = rng(6.0, ge=0.0, le=90.0, doc="A_theta of the links' wave [deg]")
+    wave_amplitude_phi_deg: float = rng(4.0, ge=0.0, le=90.0, doc="A_phi of the links' wave [deg]")
+    wave_base_theta_deg: float = rng(0.0, ge=-90.0, le=90.0, doc="B_theta of the links' wave [deg]")
+    wave_base_phi_deg: float = rng(0.0, ge=-90.0, le=90.0, doc="B_phi of the links' wave [deg]")
+    wave_frequency_hz: float = rng(1.0, ge=0.0, doc="omega / (2 pi) of the links' wave [Hz]")
+    wave_lambda_deg: float = rng(45.0, doc="lambda: phase lag per link of the wave (outward travelling) [deg]")
+    contact_margin_m: float = rng(0.02, gt=0.0, doc="a retracted antenna is held this far outside the obstacle; "
+                                                    "contact ends when it is more than twice this far [m]")
+    retract_angle_deg: float = rng(30.0, gt=0.0, le=180.0,
+                                   doc="on contact the root's target moves this far along the obstacle normal [deg]")
+    retract_speed_deg_s: float = rng(180.0, gt=0.0, doc="root link's turn speed while retracting [deg/s]")
+    retract_relax_s: float = rng(0.5, gt=0.0, doc="time constant with which the retracted links relax back to "
+                                                  "their wave [s]")
+
+
+@dataclass(frozen=True)
+class FoodConfig:
+    """Food: point sources whose signal at a point is sum intensity / d^2 (paper Sec. 5.2).
+
+    Explicit ``sources`` plus ``count`` random ones (from ``seed``, not the case
+    seed); a source within ``reach_radius_m`` of the head is eaten (removed).
+    """
+
+    sources: list = rng((), multiple=4, check=_check_food_list,
+                        doc="explicit sources: groups of 4 numbers x, y, z [m], intensity; y: height above the "
+                            "surface at (x, z)")
+    count: int = rng(0, ge=0, le=100000, doc="number of random sources")
+    region_m: list = rng((-10.0, 10.0, -10.0, 10.0), length=4, check=_check_region,
+                         doc="random sources: uniform in [x_min, x_max, z_min, z_max] [m]")
+    clear_radius_m: float = rng(3.0, ge=0.0, doc="random sources keep this far from the origin (the start) [m]")
+    obstacle_clearance_m: float = rng(1.0, ge=0.0, doc="random sources keep this far from every obstacle [m]")
+    seed: int = rng(0, ge=0, doc="seed of the random sources (not the case seed)")
+    intensity: float = rng(1.0, gt=0.0, doc="intensity of a random source [signal m^2]")
+    height_m: float = rng(0.0, doc="random sources: height above the surface [m]")
+    threshold: float = rng(0.005, ge=0.0, doc="TROPHOTROPISM when an antenna tip's signal exceeds this")
+    softening_m: float = rng(0.1, gt=0.0, doc="signal = intensity / max(d, softening)^2 [m]")
+    reach_radius_m: float = rng(1.0, gt=0.0, doc="eaten when within this distance of the head centre in the head's "
+                                                 "x-z plane (and within twice it along the head's y) [m]")
 
 
 @dataclass(frozen=True)
@@ -200,6 +377,8 @@ SECTIONS: dict[str, type] = {
     "creature": CreatureConfig,
     "legs": LegsConfig,
     "controller": ControllerConfig,
+    "antennae": AntennaeConfig,
+    "food": FoodConfig,
     "gait": GaitConfig,
     "friction": FrictionConfig,
     "collision": CollisionConfig,
@@ -264,11 +443,30 @@ def check_range(value: Any, meta: Mapping[str, Any], source: str, key: str) -> N
     choices = meta.get("choices")
     if choices is not None and value not in choices:
         raise InputError(source, key, f"{value!r} is not allowed; choose one of {', '.join(map(str, choices))}")
+    is_list = isinstance(value, tuple) and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+    if is_list:
+        n = meta.get("length")
+        if n is not None and len(value) != n:
+            raise InputError(source, key, f"{list(value)!r}: expected a list of exactly {n} numbers")
+        n = meta.get("multiple")
+        if n is not None and len(value) % n:
+            raise InputError(source, key, f"{list(value)!r}: expected a list of numbers in groups of {n}")
+        if meta.get("ordered") and any(b < a for a, b in zip(value, value[1:])):
+            raise InputError(source, key, f"{list(value)!r}: expected [lo, hi] with lo <= hi")
     for op, test, word in (("ge", lambda a, b: a >= b, ">="), ("gt", lambda a, b: a > b, ">"),
                            ("le", lambda a, b: a <= b, "<="), ("lt", lambda a, b: a < b, "<")):
         bound = meta.get(op)
-        if bound is not None and not test(value, bound):
-            raise InputError(source, key, f"{value!r} is out of range; must be {word} {bound}")
+        if bound is None:
+            continue
+        for v in (value if is_list else (value,)):
+            if not test(v, bound):
+                what = f"{v!r} in {list(value)!r}" if is_list else repr(v)
+                raise InputError(source, key, f"{what} is out of range; must be {word} {bound}")
+    check = meta.get("check")
+    if check is not None:
+        msg = check(value)
+        if msg:
+            raise InputError(source, key, msg)
 
 
 def check_section(cls, data: Mapping[str, Any], source: str, prefix: str) -> dict[str, Any]:
@@ -301,6 +499,8 @@ def describe_section(cls) -> list[dict[str, Any]]:
     types = field_types(cls)
     for f in dataclasses.fields(cls):
         m = f.metadata
-        allowed = {k: m[k] for k in ("ge", "gt", "le", "lt", "choices") if m.get(k) is not None}
+        allowed = {k: m[k] for k in ("ge", "gt", "le", "lt", "choices", "length", "multiple") if m.get(k) is not None}
+        if m.get("ordered"):
+            allowed["ordered"] = True
         rows.append(dict(key=f.name, type=_type_name(types[f.name]), default=f.default, allowed=allowed, doc=m.get("doc", "")))
     return rows

@@ -18,7 +18,9 @@ import numpy as np
 
 from ..core import registry
 from ..core.config import Case
+from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
+from ..world.water_coupling import WaterCoupling, has_water
 from .recorder import Recorder, Series
 
 
@@ -64,12 +66,13 @@ def body_length(body, case: Case) -> float:
 
 
 def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False,
-             on_sample: Callable[[float, Any], None] | None = None) -> RunResult:
+             on_sample: Callable[[float, Any, Any], None] | None = None) -> RunResult:
     """Simulate ``case`` and return its status, metrics and timings.
 
     ``progress`` is called with the fraction done after each chunk.
-    ``on_sample(t [s], body)`` is called at every observation sample, t = 0
-    included, after the sample is recorded (e.g. ``report.animate.FrameRecorder``).
+    ``on_sample(t [s], body, water)`` is called at every observation sample, t = 0
+    included, after the sample is recorded (e.g. ``report.animate.FrameRecorder``);
+    ``water`` is the scenario's ``world.water_coupling.WaterCoupling`` or None.
     """
     wall0 = time.perf_counter()
     timings = {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
@@ -82,13 +85,17 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         timings["compile_s"] = time.perf_counter() - c0
         recorder = Recorder(keep_nodes=keep_nodes)
         recorder.add(body.observe(0.0, keep_nodes))
+        water = WaterCoupling(case.scenario) if has_water(case.scenario) else None
+        if water is not None:
+            water.start(body)
         if on_sample is not None:
-            on_sample(0.0, body)
+            on_sample(0.0, body, water)
         total = case.steps
         chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
         done = 0
         status, t_fail, message = "ok", None, ""
         sim_wall = 0.0
+        water_wall = 0.0  # the water layer's own time: not part of the body's steps/s
         while done < total:
             n = min(chunk, total - done)
             s0 = time.perf_counter()
@@ -100,8 +107,12 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
                 status, t_fail, message = "unstable", t, body.status_text(code)
                 break
             recorder.add(body.observe(t, keep_nodes))
+            if water is not None:
+                w0 = time.perf_counter()
+                water.advance(body, t, k * case.dt)
+                water_wall += time.perf_counter() - w0
             if on_sample is not None:
-                on_sample(t, body)
+                on_sample(t, body, water)
             if progress is not None:
                 progress(done / total)
         series = recorder.series()
@@ -116,12 +127,16 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))
+        metrics.update(series_behaviour_metrics(series, case))  # a legged body's own figures replace these
         if case.creature.legs_per_segment:
             # these refer to a muscle wave's period and speed; a legged gait has its own stride metrics
             for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
                       "cycles_measured"):
                 metrics[k] = float("nan")
         metrics.update(body.extra_metrics())
+        if water is not None:
+            metrics.update(water.metrics())
+            timings["water_s"] = water_wall
         extra = {}
         if hasattr(body, "leg_timeline"):
             extra["leg_timeline"] = body.leg_timeline()

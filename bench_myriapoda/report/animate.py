@@ -95,13 +95,24 @@ class FrameRecorder:
         self.stride = int(stride)
         self.frames: list[Scene] = []
         self.times: list[float] = []
+        self.water_frames: list[np.ndarray] = []  # (nx, nz) float32 surface minus rest level [m], with water
+        self.water_region: tuple[float, float, float, float] | None = None  # x_min, x_max, z_min, z_max [m]
         self._n = 0
 
-    def __call__(self, t: float, body) -> None:
+    def __call__(self, t: float, body, water=None) -> None:
         if self._n % self.stride == 0:
             self.frames.append(body.scene())
             self.times.append(float(t))
+            if water is not None:
+                self.water_frames.append(water.surface())
+                w = water.water
+                nx, nz = w.shape
+                self.water_region = (w.x0, w.x0 + nx * w.dx, w.z0, w.z0 + nz * w.dx)
         self._n += 1
+
+    def water(self):
+        """(surface frames, region) for ``write_animation``, or None without water."""
+        return (self.water_frames, self.water_region) if self.water_frames else None
 
 
 def playback_fps(times: Sequence[float], max_fps: float = MAX_FPS) -> float:
@@ -313,13 +324,15 @@ def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: int):
 
 
 def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, path, title: str = "",
-                    fps: float | None = None, dpi: int = 80) -> dict:
+                    fps: float | None = None, dpi: int = 80, water=None) -> dict:
     """Draw ``frames`` (Scenes) at ``times`` [s] into ``path`` (.gif with Pillow, .mp4 with ffmpeg).
 
     terrain: ``(kind, f)`` of ``world.terrain.terrain_from_scenario`` or None
     (no ground drawn).  fps: playback rate; default ``playback_fps(times)``
     (real time, capped at MAX_FPS).  dpi: pixels per inch of the figure (at
-    most 13 inches wide).  The file is written under a temporary name in the same directory
+    most 13 inches wide).  water: None, or (surface frames, region) of
+    ``FrameRecorder.water()``: the water surface's deviation from rest drawn
+    from above (blue troughs, red crests) under the body.  The file is written under a temporary name in the same directory
     and renamed into place at the end, so a failure leaves no half-written
     animation.  Returns {"path", "frames", "fps"}.
     """
@@ -362,8 +375,19 @@ def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, pa
     legs_side = {1: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=3)),
                  0: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=1.5))}
     head = fig.text(0.5, 1.0 - 0.08 / fig.get_size_inches()[1], "", ha="center", va="top", fontsize=10)
+    ripples = None
+    if water is not None:
+        water_frames, (wx0, wx1, wz0, wz1) = water
+        # a robust scale: the feet make sharp dimples; the ripples they spread are what should show
+        amp = float(np.percentile(np.abs(np.stack(water_frames[len(water_frames) // 2:])), 99.0)) or 1e-6
+        ripples = ax_top.imshow(water_frames[0].T, origin="lower", extent=(wx0, wx1, wz0, wz1), cmap="RdBu_r",
+                                vmin=-amp, vmax=amp, alpha=0.65, zorder=1, interpolation="bilinear", aspect="auto")
+        ax_top.set_xlim(*xlim)
+        ax_top.set_ylim(zlim[1], zlim[0])  # keep the inverted z axis after imshow
 
-    def draw(scene: Scene, t: float) -> None:
+    def draw(scene: Scene, t: float, k: int) -> None:
+        if ripples is not None:
+            ripples.set_data(water[0][min(k, len(water[0]) - 1)].T)
         for view, coll in bodies.items():
             p, c, e = _project_triangles(scene, view)
             coll.set_verts(p)
@@ -387,8 +411,8 @@ def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, pa
     tmp = path.with_name(f".{path.stem}.{os.getpid()}.tmp{path.suffix}")  # same suffix: ffmpeg picks the format by it
     try:
         with writer.saving(fig, str(tmp), dpi):
-            for scene, t in zip(frames, times):
-                draw(scene, t)
+            for k, (scene, t) in enumerate(zip(frames, times)):
+                draw(scene, t, k)
                 writer.grab_frame()
         os.replace(tmp, path)
     finally:

@@ -34,7 +34,6 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..core.errors import InputError
 from ..harness.recorder import series_from_recording
 from . import sweeps
 from .baseline import compare_runs, format_change
@@ -232,7 +231,7 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
     page.section("trajectories", "Trajectories from above")
     drawn = 0
     for (creature, scenario), sub in main.groupby(["creature", "scenario"], sort=True):
-        runs, scen = [], []
+        runs, scen, foods = [], [], []
         for _, r in sub.iterrows():
             rec = res.recording(r.case_hash)
             if rec is None or len(rec["t"]) < 2:
@@ -240,9 +239,11 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
             runs.append((f"{r.body} / {r.gait}" + ("" if pd.isna(r.get("seed")) else f" / seed {int(r.seed)}"),
                          series_from_recording(rec)))
             scen.append(res.case(r.case_hash)["scenario"])
+            foods.append(res.case(r.case_hash).get("food"))
         if not runs:
             continue
-        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario)}.png", scenarios=scen[:6])
+        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario)}.png", scenarios=scen[:6],
+                              foods=foods[:6])
         page.figure(path, f"{creature} on {scenario}, seen from above: body centre line at six times (light to dark) "
                           "and the centre of mass path (dashed); x forward, z to the right.")
         drawn += 1
@@ -323,6 +324,7 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         page.md.append(f"> {fig.caption}\n")
         s = series_from_recording(rec)
         scen = res.case(r.case_hash)["scenario"]
+        food = res.case(r.case_hash).get("food")
         slug = _slug(r.case_hash)
         if "side" in fig.images:
             page.figure(plot_side_strip(f"{r.label}: side view", s, scen, page.fig_dir / f"paper_side_{slug}.png"),
@@ -334,7 +336,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
                                   title=f"{r.label}: leg states, last second")
             page.figure(gait_png, "Leg states during the last second (the right panel of Fig. 10).")
         if "top" in fig.images:
-            page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png", scenarios=[scen]),
+            page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png", scenarios=[scen],
+                                       foods=[food]),
                         "Seen from above.")
     walks = main[(main.get("scenario") == "walk") & (main.get("creature") == "centipede")] if not main.empty else main
     if not walks.empty:

@@ -44,6 +44,19 @@ PAPER_FIGURES: tuple[PaperFigure, ...] = (
     PaperFigure("control", None, "Sec. 4.3 (CONTROL)", FANG,
                 "The user can take control of the creature's movement (CONTROL mode): the head follows commanded "
                 "speed and turn rate.", ("top", "gait")),
+    PaperFigure("fig1-mesh", None, "Figure 1", FANG,
+                "A simulated centipede walking autonomously over a crystal skull.", ("side", "top")),
+    PaperFigure("fig12-water-foraging", None, "Figure 12", FANG,
+                "A centipede walking in shallow water, attracted by food (green spheres) and avoiding obstacles.",
+                ("top", "gait")),
+    PaperFigure("fig13-cylinders", None, "Figure 13", FANG,
+                "Walking over an irregular surface paved with random cylinders.", ("top", "gait")),
+    PaperFigure("foraging", None, "Sec. 6.2 (foraging)", FANG,
+                "In our real-time simulator, food and obstacles can be generated randomly in the scene to elicit "
+                "the emergent behavior of an autonomous myriapod creature exploring its environment.", ("top",)),
+    PaperFigure("terrain", None, "Sec. 6.2 (terrain)", FANG,
+                "Irregular terrain: a height field from a mixture of Gaussians; the legs find footholds on the "
+                "uneven ground.", ("side", "top")),
     PaperFigure("cliff", "rectilinear", "Images 1a-1d", MILLER,
                 "A worm in free-fall colliding with the constraint, in this case a book ... wriggling towards a "
                 "vertical edge. The front begins to bend downwards under the weight ... the worm sliding off the "

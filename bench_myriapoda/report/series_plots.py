@@ -106,15 +106,20 @@ def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: i
     return _save(fig, path)
 
 
-def scenario_config(scenario: dict) -> ScenarioConfig:
-    """A stored case's scenario section as a ``ScenarioConfig``.
+def stored_section(cls, data: dict | None):
+    """A stored case's section (``Case.to_dict()[...]``) as its config dataclass ``cls``.
 
     A recording made by an older version lacks the keys added since: they take their defaults,
-    and keys no longer known are dropped, so old matrix directories still draw.
+    and keys no longer known are dropped, so old matrix directories still draw.  The values were
+    validated when the case ran; a stored case is rebuilt as it was, not re-checked.
     """
-    known = {f.name for f in dataclasses.fields(ScenarioConfig)}
-    # the values were validated when the case ran; a stored case is rebuilt as it was, not re-checked
-    return ScenarioConfig(**{k: tuple(v) if isinstance(v, list) else v for k, v in scenario.items() if k in known})
+    known = {f.name for f in dataclasses.fields(cls)}
+    return cls(**{k: tuple(v) if isinstance(v, list) else v for k, v in (data or {}).items() if k in known})
+
+
+def scenario_config(scenario: dict) -> ScenarioConfig:
+    """A stored case's scenario section as a ``ScenarioConfig`` (see ``stored_section``)."""
+    return stored_section(ScenarioConfig, scenario)
 
 
 def _save(fig, path: Path) -> Path:

@@ -13,24 +13,60 @@ import numpy as np  # noqa: E402
 from ..harness.recorder import Series  # noqa: E402
 
 
-def draw_terrain_top(ax, scenario: dict) -> None:
-    """The scenario's terrain features seen from above (x right, z down): the slab's edge, the slope's direction."""
+def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
+    """The scenario's world seen from above (x right, z down): slab edge, slope direction, height-field
+    contours, mesh outline, obstacles (cylinders as discs, boxes as rectangles) and food (green dots).
+
+    scenario, food: the stored case's sections (``Case.to_dict()["scenario"]``, ``["food"]``).
+    """
+    from matplotlib.patches import Circle, Polygon
+
+    from ..core.schema import FoodConfig
+    from ..world.food import food_sources
+    from ..world.terrain import terrain_description
+    from .series_plots import scenario_config, stored_section
+
     kind = scenario.get("terrain", "plane")
+    xlim, ylim = ax.get_xlim(), ax.get_ylim()
     if kind == "slab":
         edge = scenario["slab_edge_x_m"]
         ax.axvline(edge, color="saddlebrown", lw=1.2, ls="-")
-        ax.axvspan(ax.get_xlim()[0], edge, color="burlywood", alpha=0.25, lw=0)
+        ax.axvspan(xlim[0], edge, color="burlywood", alpha=0.25, lw=0)
         ax.text(edge, 0.02, " slab edge", transform=ax.get_xaxis_transform(), fontsize=6, color="saddlebrown")
     elif kind == "slope":
         ax.text(0.02, 0.02, f"slope {scenario['slope_deg']:g} deg, rising toward +x", transform=ax.transAxes,
                 fontsize=6, color="saddlebrown")
+    sc = scenario_config(scenario)
+    desc = terrain_description(sc)
+    if desc.height is not None and kind == "heightfield":
+        xs, zs = np.linspace(*xlim, 120), np.linspace(min(ylim), max(ylim), 120)
+        X, Z = np.meshgrid(xs, zs)
+        ax.contour(X, Z, desc.height(X, Z), levels=8, colors="saddlebrown", linewidths=0.4, alpha=0.6)
+    if desc.mesh is not None:
+        v = np.asarray(desc.mesh[0])
+        ax.fill_between([v[:, 0].min(), v[:, 0].max()], v[:, 2].min(), v[:, 2].max(), color="0.85", zorder=0,
+                        label="mesh (bounding box)")
+    for c in desc.cylinders:
+        ax.add_patch(Circle((c["x"], c["z"]), c["radius"], color="dimgray", alpha=0.8, zorder=1))
+    for b in desc.boxes:
+        (cx, _, cz), (hx, _, hz), yaw = b["centre"], b["half_extents"], np.radians(b["yaw_deg"])
+        corners = np.array([[-hx, -hz], [hx, -hz], [hx, hz], [-hx, hz]])
+        rot = np.array([[np.cos(yaw), np.sin(yaw)], [-np.sin(yaw), np.cos(yaw)]])
+        ax.add_patch(Polygon(corners @ rot.T + [cx, cz], color="dimgray", alpha=0.8, zorder=1))
+    if food:
+        src = food_sources(sc, stored_section(FoodConfig, food))
+        if len(src):
+            ax.plot(src[:, 0], src[:, 2], "o", color="limegreen", mec="darkgreen", ms=5, zorder=4, label="food")
+    ax.set_xlim(xlim)
+    ax.set_ylim(ylim)
 
 
 def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: int = 6,
-                   scenarios: Sequence[dict] | None = None) -> Path:
+                   scenarios: Sequence[dict] | None = None, foods: Sequence[dict | None] | None = None) -> Path:
     """One panel per run: body centre lines at evenly spaced times (light to dark) and the COM path.
 
-    ``scenarios``: each run's scenario section (``Case.to_dict()["scenario"]``), to draw its terrain.
+    ``scenarios``, ``foods``: each run's scenario and food sections (``Case.to_dict()``), to draw its
+    terrain, obstacles and food.
     """
     n = len(runs)
     fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3.4), squeeze=False)
@@ -45,7 +81,7 @@ def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: in
         ax.set_title(title, fontsize=9)
         ax.set_aspect("equal", adjustable="datalim")
         if scenarios is not None:
-            draw_terrain_top(ax, scenarios[r])
+            draw_terrain_top(ax, scenarios[r], foods[r] if foods is not None else None)
         ax.set_xlabel("x [m]")
         ax.invert_yaxis()  # z points to the right of a creature facing +x: draw it downward, as seen from above
     axes[0][0].set_ylabel("z [m]")

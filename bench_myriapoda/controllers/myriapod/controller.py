@@ -2,11 +2,20 @@
 
 One ``step`` per time step, in the paper's order:
 
-1. antennae -- none yet (a later issue adds them; the brain's AVOIDANCE and
-   TROPHOTROPISM slots stay empty until then);
+1. antennae (Sec. 5.2, ``antennae.py``) -- the root links turn toward random
+   targets, the other links follow their wave, an antenna touching an obstacle
+   retracts and signals a left/right contact; the antenna tips sense the food
+   (``world/food.py``), and food within reach of the head is eaten;
 2. head -- the brain switches modes (Sec. 4.3): ADJUSTMENT while at most
    ``adjustment_majority`` of the legs touch the ground (the head follows the
-   dynamics), then RANDOM-WALK or CONTROL (the head is moved kinematically);
+   dynamics); then, by priority, AVOIDANCE (an antenna touches an obstacle, or
+   touched one less than ``avoid_hold_s`` ago: the head turns away from the
+   antenna that touched first, or from the ``avoid_priority`` one while both
+   touch, and keeps that direction to the episode's end), TROPHOTROPISM (an
+   antenna tip's food signal exceeds ``food.threshold``: the head turns toward
+   the stronger tip), RANDOM-WALK otherwise -- or CONTROL throughout when the
+   scenario commands it (the head is moved kinematically); the antenna-driven
+   turns are limited so that the body cannot fold (``max_body_turn_deg``);
 3. rigid segments -- the Targeter (Balancer, then Follower) gives every
    segment a target pose; supported segments (enough legs in STANCE) are
    handed to the body to be moved there kinematically, the rest follow the
@@ -26,15 +35,61 @@ import math
 import numpy as np
 
 from ...bodies import legs as L
-from ...world.terrain import terrain_from_scenario
+from ...world import terrain_kernels as TK
+from ...world.food import FoodField
+from ...world.terrain import base_height, terrain_from_scenario
 from . import switcher as SW
 from . import targeter as TG
+from .antennae import LEFT, RIGHT, Antennae
 
-# brain modes (Sec. 4.3) in priority order; AVOIDANCE and TROPHOTROPISM arrive with antennae
+# brain modes (Sec. 4.3) in priority order
 ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
 BRAIN_MODE_NAMES = ("ADJUSTMENT", "AVOIDANCE", "TROPHOTROPISM", "RANDOM-WALK", "CONTROL")
 # the state of the swing loop SF1 -> SF2 -> SB1 -> SB2 whose target pose each state starts from
 SWING_LOOP_PREVIOUS = {SW.SF1: SW.SB2, SW.SF2: SW.SF1, SW.SB1: SW.SF2, SW.SB2: SW.SB1}
+TURN_LEFT, TURN_RIGHT = 1.0, -1.0  # turn_dir of the head: + = left (a positive rotation about +y)
+
+
+def avoidance_turn(left: bool, right: bool, priority: str) -> float:
+    """Turn direction (+1 left, -1 right) for antenna contacts (Sec. 5.2, Braitenberg):
+    a left contact turns right, a right contact left; when both touch, the ``priority``
+    antenna wins (priority "left": turn right).  0 without contact."""
+    if left and right:
+        return TURN_RIGHT if priority == "left" else TURN_LEFT
+    if left:
+        return TURN_RIGHT
+    if right:
+        return TURN_LEFT
+    return 0.0
+
+
+def walkable_terrain(sc, kind: int, f: np.ndarray, max_height_m: float) -> np.ndarray:
+    """f without the obstacles that rise more than ``max_height_m`` above the base surface.
+
+    The Balancer (Sec. 4.1) keeps a segment at its height above the surface below
+    it and turns it upright to that surface's normal, through the nearest-surface
+    queries of ``terrain_kernels``.  An obstacle lower than the standing height is
+    ground the creature walks over (Fig. 13); a taller one is a wall (Sec. 6.2's
+    "vertical obstacles"): a segment walking past it within its standing height
+    would take the wall for the ground and roll toward it.  So the Targeter sees
+    the ground and the low obstacles only; legs and bodies still touch them all.
+    """
+    if f[TK.H_NOBST] <= 0:
+        return f
+    keep = []
+    for r in TK.obstacle_records(f):
+        if r[0] == TK.OBST_CYLINDER:
+            top = r[5] - float(base_height(sc, kind, f, r[1], r[2]))
+        else:  # box: the highest corner above the base at its centre
+            top = r[2] + r[5] - float(base_height(sc, kind, f, r[1], r[3]))
+        if top <= max_height_m:
+            keep.append(r)
+    if len(keep) == f[TK.H_NOBST]:
+        return f
+    base = np.array(f[:int(f[TK.H_OBST])])
+    base[TK.H_OBST] = 0.0
+    base[TK.H_NOBST] = 0.0
+    return TK.with_obstacles(base, keep) if keep else base
 
 
 def standing_height(geom_row: np.ndarray, params: np.ndarray) -> float:
@@ -76,6 +131,7 @@ class MyriapodController:
         self.theta_min = self.sw_params[SW.THETA_PEP]
         h = ct.target_height_m if ct.target_height_m >= 0 else standing_height(self.geom[1], self.sw_params)
         self.height_target = np.full(n_segments, h)
+        self.terr_walk = walkable_terrain(sc, self.terr_kind, self.terr, h)  # what the Balancer stands on
         self.link_rest = np.full(n_segments, segment_pitch_m)
         self.min_stance = ct.min_stance_legs
         self.majority = ct.adjustment_majority
@@ -86,6 +142,27 @@ class MyriapodController:
         self.turn_max = d(ct.random_turn_max_deg)
         self.turn_rate = d(ct.random_turn_rate_deg_s)
         self.rng = np.random.default_rng(case.seed)
+        # antennae and food (Sec. 5.2); the antennae draw from their own generator, so the legs' and the
+        # random walk's draws are the same with or without them
+        self.antennae = (Antennae(case.antennae, case.dt, np.random.default_rng([case.seed, 7]), self.terr)
+                         if case.antennae.enabled else None)
+        self.food = FoodField.from_case(case)
+        self.has_food = len(self.food) > 0
+        self.food_threshold = case.food.threshold
+        self.food_signal = np.zeros(2)   # left, right antenna tip
+        self.avoid_rate = d(ct.avoid_turn_rate_deg_s)
+        self.avoid_hold = ct.avoid_hold_s
+        self.avoid_speed = ct.avoid_speed_factor * ct.head_speed_m_s
+        self.avoid_priority = ct.avoid_priority
+        self.forage_rate = d(ct.forage_turn_rate_deg_s)
+        self.forage_gain = ct.forage_gain
+        self._avoid_dir = 0.0            # AVOIDANCE: +1 left / -1 right
+        # the head's recent turning [rad]: turns weighted by exp(-path / body length) (see step)
+        self._turn_memory = 0.0
+        self.turn_memory_length = n_segments * segment_pitch_m
+        self.max_body_turn = d(ct.max_body_turn_deg)
+        self._avoid_until = -math.inf    # AVOIDANCE lasts until this time [s] after the last contact
+        self.brain_steps = np.zeros(len(BRAIN_MODE_NAMES), dtype=np.int64)  # steps spent in each mode
         self.brain = ADJUSTMENT
         self.t_walk = math.nan  # when ADJUSTMENT ended
         self.touch_fraction_at_walk = math.nan
@@ -112,6 +189,7 @@ class MyriapodController:
         self.timeline_states: list[np.ndarray] = []
         self.timeline_tips: list[np.ndarray] = []
         self.timeline_brain: list[int] = []
+        self.timeline_contact: list[np.ndarray] = []   # (left, right) antenna contact
         self.tracking_sq_sum = 0.0
         self.tracking_n = 0
         self.heading_cmd = math.nan       # CONTROL: commanded heading [rad] about +y, integrated from the schedule
@@ -120,8 +198,50 @@ class MyriapodController:
         self.timeline_centers: list[np.ndarray] = []
 
     # ------------------------------------------------------------------ the head (Sec. 4.3)
+    def _sense(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
+        """Sec. 6 step 1: antennae on the head's current pose, their food signals; eat what is in reach."""
+        ant = self.antennae
+        if ant is not None:
+            ant.step(c[0], R[0], t)
+            if self.has_food:
+                self.food.signals_at_tips(ant.points, self.food_signal)
+        if self.has_food:
+            self.food.eat(c[0], R[0], t)
+
+    def _switch_brain(self, t: float) -> None:
+        """Sec. 4.3 priorities once walking: AVOIDANCE > TROPHOTROPISM > RANDOM-WALK (CONTROL stays)."""
+        if self.brain in (ADJUSTMENT, CONTROL):
+            return
+        ant = self.antennae
+        left = ant is not None and bool(ant.contact[LEFT])
+        right = ant is not None and bool(ant.contact[RIGHT])
+        if left or right:
+            # a new episode turns away from the touching antenna (both: from the priority one); the direction
+            # then holds to the episode's end, except that both antennae touching at once hand it to the
+            # priority antenna -- so a head facing a wall or a post between its antennae does not swing
+            # back and forth into it
+            if self.brain != AVOIDANCE or (left and right):
+                self._avoid_dir = avoidance_turn(left, right, self.avoid_priority)
+            self._avoid_until = t + self.avoid_hold
+            self.brain = AVOIDANCE
+        elif self.brain == AVOIDANCE and t < self._avoid_until:
+            pass  # keep turning the same way for avoid_hold_s after the last contact
+        elif ant is not None and self.has_food and max(self.food_signal[0],
+                                                        self.food_signal[1]) > self.food_threshold:
+            self.brain = TROPHOTROPISM
+        else:
+            self.brain = RANDOM_WALK
+
     def _head_command(self, t: float) -> tuple[float, float, float]:
         """(speed [m/s], turn rate [rad/s], turn direction +1 left / -1 right / 0) of the head."""
+        if self.brain == AVOIDANCE:
+            return self.avoid_speed, self.avoid_rate, self._avoid_dir
+        if self.brain == TROPHOTROPISM:
+            # toward the stronger side, proportionally to the normalized left-right difference
+            sl, sr = self.food_signal
+            rel = (sl - sr) / (sl + sr)
+            return (self.head_speed, self.forage_rate * min(1.0, self.forage_gain * abs(rel)),
+                    TURN_LEFT if rel > 0 else TURN_RIGHT if rel < 0 else 0.0)
         if self.brain == CONTROL:
             times, speed, rate = self.schedule
             k = max(int(np.searchsorted(times, t, side="right")) - 1, 0)
@@ -146,13 +266,26 @@ class MyriapodController:
         c, R = body.segment_poses()
         if self._step == 0:  # the tips of the starting pose
             L.legs_forward_kinematics(c, R, self.geom, self.angles, self._O, self._M, self.tips)
+        # 1. antennae (and food)
+        self._sense(c, R, t)
         # 2. head: brain mode
         L.tips_touching(self.terr_kind, self.terr, self.tips, self.contact_distance, self.touching)
         if self.brain == ADJUSTMENT and self.touching.mean() > self.majority:
             self.brain = self.walk_mode
             self.t_walk = t
             self.touch_fraction_at_walk = float(self.touching.mean())
+        self._switch_brain(t)
+        self.brain_steps[self.brain] += 1
         speed, rate, turn_dir = self._head_command(t)
+        # The Followers cut a sustained tight turn ever shorter (each segment follows the one ahead on a
+        # smaller circle, a tractrix) until the chain folds.  So the antenna-driven turns keep the head's
+        # recent turning -- summed over about the last body length of its path, weighted by
+        # exp(-distance / body length) -- within max_body_turn_deg; past it the head goes straight on.
+        turn = turn_dir * rate * dt
+        if (self.brain in (AVOIDANCE, TROPHOTROPISM) and abs(self._turn_memory + turn) > self.max_body_turn
+                and abs(self._turn_memory + turn) > abs(self._turn_memory)):
+            rate, turn_dir, turn = 0.0, 0.0, 0.0
+        self._turn_memory = self._turn_memory * math.exp(-speed * dt / self.turn_memory_length) + turn
         if self.brain == CONTROL:
             heading = math.atan2(-R[0, 2, 0], R[0, 0, 0])  # the head's x axis seen from above (about +y)
             if math.isnan(self.heading_cmd):
@@ -165,7 +298,7 @@ class MyriapodController:
         TG.segments_supported(self.states, self.min_stance, self.supported)
         self.kinematic[:] = self.supported
         self.kinematic[0] = self.brain != ADJUSTMENT
-        TG.targeter_step(c, R, self.kinematic, self.terr_kind, self.terr, self.tg_params, self.link_rest,
+        TG.targeter_step(c, R, self.kinematic, self.terr_kind, self.terr_walk, self.tg_params, self.link_rest,
                          self.height_target, speed, rate, turn_dir, dt, self.c_T, self.R_T)
         body.set_support(self.kinematic, self.c_T, self.R_T, dt)
         # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
@@ -186,6 +319,8 @@ class MyriapodController:
             self.timeline_states.append(self.states.astype(np.int8))
             self.timeline_tips.append(self.tips.copy())
             self.timeline_brain.append(self.brain)
+            self.timeline_contact.append(self.antennae.contact.copy() if self.antennae is not None
+                                         else np.zeros(2, dtype=bool))
             self.timeline_centers.append(c.copy())
         self._step += 1
 
@@ -194,6 +329,10 @@ class MyriapodController:
         err = np.linalg.norm(c[self.supported] - self.c_T[self.supported], axis=1)
         self.tracking_sq_sum += float(err.sum())
         self.tracking_n += int(err.size)
+
+    def contact_timeline(self) -> np.ndarray:
+        """Antenna contact (T, 2) bool (left, right) at the timeline's sample times."""
+        return np.array(self.timeline_contact, dtype=bool).reshape(-1, 2)
 
     def brain_timeline(self) -> np.ndarray:
         """Brain mode (T,) at the timeline's sample times."""

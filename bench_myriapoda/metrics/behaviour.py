@@ -1,0 +1,110 @@
+"""Behaviour metrics (paper Sec. 4.3, 5.2, 6.2): food, obstacles, path, clearance.
+
+JSON names (issue 6):
+
+* ``food_reached`` -- food sources eaten; ``time_to_first_food_s`` -- when the
+  first was eaten (nan: none);
+* ``obstacle_contacts`` -- antenna contact events (rising edges, both antennae);
+* ``obstacle_penetration_max_m`` -- max over samples of -min obstacles_phi over
+  the body's sample points (segment centres, rigid box corners and leg tips);
+  0 when no point was ever inside an obstacle;
+* ``path_length_m`` -- length of the head's path;
+* ``terrain_clearance_min_m`` -- the smallest signed distance of a segment centre
+  (rigid and link centres) to the terrain (the ground and the obstacles).
+
+Legged creatures measure these while they walk (``BehaviourSampler``, every
+controller timeline sample); the runner gives ``path_length_m`` and
+``terrain_clearance_min_m`` of any body from its observation series
+(``series_behaviour_metrics``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..world.terrain_kernels import H_NOBST, obstacles_phi, signed_distance
+
+
+@njit(cache=True)
+def min_obstacle_phi(f, points):
+    """min over points (m, 3) of the distance to the obstacles (inf without obstacles)."""
+    best = np.inf
+    if f[H_NOBST] <= 0.0:
+        return best
+    for i in range(points.shape[0]):
+        d, _ = obstacles_phi(f, points[i, 0], points[i, 1], points[i, 2])
+        best = min(best, d)
+    return best
+
+
+@njit(cache=True)
+def min_signed_distance(kind, f, points):
+    """min over points (m, 3) of the terrain's signed distance (ground and obstacles)."""
+    best = np.inf
+    for i in range(points.shape[0]):
+        d = signed_distance(kind, f, points[i, 0], points[i, 1], points[i, 2])
+        best = min(best, d)
+    return best
+
+
+def path_length(points: np.ndarray) -> float:
+    """Length [m] of the polyline through points (T, 3)."""
+    p = np.asarray(points, dtype=float)
+    if len(p) < 2:
+        return 0.0
+    return float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum())
+
+
+def series_behaviour_metrics(series, case) -> dict[str, float]:
+    """``path_length_m`` (the head end's path) and ``terrain_clearance_min_m`` of a recorded run."""
+    from ..world.terrain import terrain_from_scenario
+
+    out = {"path_length_m": path_length(series.head)}
+    if case.scenario.terrain == "none":
+        out["terrain_clearance_min_m"] = float("nan")
+    else:
+        kind, f = terrain_from_scenario(case.scenario)
+        pts = np.ascontiguousarray(np.asarray(series.segment_centers, dtype=float).reshape(-1, 3))
+        out["terrain_clearance_min_m"] = float(min_signed_distance(kind, f, pts))
+    return out
+
+
+class BehaviourSampler:
+    """Accumulates the obstacle penetration, the terrain clearance and the head's path at samples.
+
+    ``sample(centres, corners, tips, head)``: segment centres (n, 3), rigid box
+    corners (m, 3) (or an empty array), leg tips (k, 3), head centre (3,) [m].
+    """
+
+    def __init__(self, kind: int, f: np.ndarray, terrain_none: bool = False):
+        self.kind = int(kind)
+        self.f = np.ascontiguousarray(f, dtype=np.float64)
+        self.has_obstacles = bool(self.f[H_NOBST] > 0)
+        self.terrain_none = terrain_none
+        self.pen_body = 0.0      # segment centres and box corners
+        self.pen_legs = 0.0      # leg tips
+        self.clearance_min = math.inf
+        self.path = 0.0
+        self._last_head: np.ndarray | None = None
+
+    def sample(self, centres: np.ndarray, corners: np.ndarray, tips: np.ndarray, head: np.ndarray) -> None:
+        centres = np.ascontiguousarray(centres, dtype=np.float64)
+        if self.has_obstacles:
+            body = np.ascontiguousarray(np.vstack([centres, np.asarray(corners, dtype=np.float64).reshape(-1, 3)]))
+            self.pen_body = max(self.pen_body, -min_obstacle_phi(self.f, body))
+            self.pen_legs = max(self.pen_legs, -min_obstacle_phi(self.f, np.ascontiguousarray(tips, dtype=np.float64)))
+        if not self.terrain_none:
+            self.clearance_min = min(self.clearance_min, min_signed_distance(self.kind, self.f, centres))
+        head = np.array(head, dtype=float)
+        if self._last_head is not None:
+            self.path += float(np.linalg.norm(head - self._last_head))
+        self._last_head = head
+
+    def metrics(self) -> dict[str, float]:
+        return {"obstacle_penetration_max_m": max(self.pen_body, self.pen_legs),
+                "obstacle_penetration_body_max_m": self.pen_body,
+                "obstacle_penetration_legs_max_m": self.pen_legs,
+                "path_length_m": self.path,
+                "terrain_clearance_min_m": self.clearance_min if math.isfinite(self.clearance_min) else float("nan")}
