@@ -24,6 +24,7 @@ interrupted build leaves the previous report intact.
 from __future__ import annotations
 
 import html
+import logging
 import os
 import shutil
 import sqlite3
@@ -119,6 +120,9 @@ def _slug(*parts) -> str:
 def build_report(directory: Path | str, baseline: Path | str | None = None, history_store: Path | str | None = None,
                  threshold: float = 0.10) -> ReportSummary:
     """Write ``DIR/index.html``, ``DIR/summary.md`` and ``DIR/figures/``; see the module docstring."""
+    # equal-aspect top views over an inverted axis make matplotlib log "Ignoring fixed limits" for every
+    # panel: expected here (the data limits adjust), so not shown
+    logging.getLogger("matplotlib.axes._base").setLevel(logging.ERROR)
     res = load_matrix_dir(directory, "DIR")
     base = load_matrix_dir(baseline, "--baseline") if baseline is not None else None
     d = res.directory

@@ -28,6 +28,7 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
 
     kind = scenario.get("terrain", "plane")
     xlim, ylim = ax.get_xlim(), ax.get_ylim()
+    ax.autoscale(False)  # the world is drawn within the body's view, not the view widened to the whole world
     if kind == "slab":
         edge = scenario["slab_edge_x_m"]
         ax.axvline(edge, color="saddlebrown", lw=1.2, ls="-")
@@ -57,8 +58,6 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
         src = food_sources(sc, stored_section(FoodConfig, food))
         if len(src):
             ax.plot(src[:, 0], src[:, 2], "o", color="limegreen", mec="darkgreen", ms=5, zorder=4, label="food")
-    ax.set_xlim(xlim)
-    ax.set_ylim(ylim)
 
 
 def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: int = 6,
