@@ -338,9 +338,17 @@ def test_exported_legged_frame_has_the_body_then_two_closed_tubes_per_leg(tmp_pa
     surf = np.concatenate([v for v, _, _ in scenes[1].triangles])
     mesh = trimesh.load(tmp_path / "legged" / "frame_00001.obj", process=False)
     per_tube = 2 * TUBE_SECTIONS + 2
-    assert len(mesh.vertices) == len(surf) + 2 * n_legs * per_tube
+    ant = scenes[1].antennae  # (2, n_links + 1, 3): one thinner tube per antenna link, after the legs
+    n_ant = 2 * (ant.shape[1] - 1)
+    assert ant.shape == (2, case.antennae.n_links + 1, 3)
+    assert len(mesh.vertices) == len(surf) + (2 * n_legs + n_ant) * per_tube
     np.testing.assert_allclose(mesh.vertices[:len(surf)], surf, atol=1e-8)
-    tube_v = mesh.vertices[len(surf):].reshape(2 * n_legs, per_tube, 3)
+    ant_v = mesh.vertices[len(surf) + 2 * n_legs * per_tube:].reshape(n_ant, per_tube, 3)
+    np.testing.assert_allclose(ant_v[:, -2], ant[:, :-1].reshape(-1, 3), atol=1e-8)
+    np.testing.assert_allclose(ant_v[:, -1], ant[:, 1:].reshape(-1, 3), atol=1e-8)
+    # antenna links keep their length
+    np.testing.assert_allclose(np.linalg.norm(np.diff(ant, axis=1), axis=2), case.antennae.link_length_m, rtol=1e-9)
+    tube_v = mesh.vertices[len(surf):len(surf) + 2 * n_legs * per_tube].reshape(2 * n_legs, per_tube, 3)
     legs = scenes[1].legs
     # tube centre-line ends (the cap centres) are the leg points: root-knee tubes then knee-tip tubes
     np.testing.assert_allclose(tube_v[:n_legs, -2], legs[:, 0], atol=1e-8)

@@ -120,6 +120,9 @@ class BodyMyriapod:
         c, R = self.segments.segment_poses()
         ctrl = self.controller
         scene.legs, scene.leg_states = legs_scene(c, R, ctrl.geom, ctrl.angles, ctrl.states)
+        if ctrl.antennae is not None:
+            scene.antennae = ctrl.antennae.points.copy()
+            scene.antenna_contact = ctrl.antennae.contact.copy()
         return scene
 
     @property

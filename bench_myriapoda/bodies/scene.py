@@ -42,20 +42,27 @@ class Scene:
       (``controllers.myriapod.switcher``: SF1 ... ADJUST); None without legs.
     springs: (S, 2, 3) float64 [m] end points of every spring of a mass-spring
       body; None for bodies without springs.
+    antennae: (2, N + 1, 3) float64 [m] the joint points of the left and right
+      antenna, root to tip (``controllers.myriapod.antennae``); None without.
+    antenna_contact: (2,) bool, an antenna touching an obstacle; None without.
     """
 
     triangles: list[tuple[np.ndarray, np.ndarray, str]] = field(default_factory=list)
     legs: np.ndarray | None = None
     leg_states: np.ndarray | None = None
     springs: np.ndarray | None = None
+    antennae: np.ndarray | None = None
+    antenna_contact: np.ndarray | None = None
 
     def points(self) -> np.ndarray:
-        """(N, 3) [m] every vertex, leg point and spring end of the scene (for bounds)."""
+        """(N, 3) [m] every vertex, leg point, spring end and antenna joint of the scene (for bounds)."""
         parts = [v for v, _, _ in self.triangles]
         if self.legs is not None:
             parts.append(self.legs.reshape(-1, 3))
         if self.springs is not None:
             parts.append(self.springs.reshape(-1, 3))
+        if self.antennae is not None:
+            parts.append(self.antennae.reshape(-1, 3))
         return np.concatenate(parts) if parts else np.zeros((0, 3))
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:

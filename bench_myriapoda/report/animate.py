@@ -37,12 +37,14 @@ from matplotlib import animation  # noqa: E402
 from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 from matplotlib.colors import to_rgb  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
-from matplotlib.patches import Rectangle  # noqa: E402
+from matplotlib.patches import Circle, Polygon, Rectangle  # noqa: E402
 
 from ..bodies import scene as SC  # noqa: E402
 from ..bodies.scene import Scene  # noqa: E402
 from ..metrics.gait import STATE_COLORS, STATE_NAMES  # noqa: E402
-from ..world.terrain_kernels import SLAB, terrain_phi_numpy  # noqa: E402
+from ..world.terrain_kernels import (  # noqa: E402
+    H_NOBST, OBST_CYLINDER, SLAB, obstacle_records, terrain_phi_numpy,
+)
 
 MAX_FRAMES = 150  # frames of an animation at most: a GIF stays a few MB and writes in seconds
 MAX_FPS = 30.0    # playback rate cap [frames/s]
@@ -53,6 +55,7 @@ KIND_COLORS = {SC.RIGID_BOX: "#b08850", SC.FEM_SURFACE: "#7fb3d5", SC.FEM_BLOCK_
 DEFAULT_COLOR = "#aaaaaa"
 EDGE_RGBA = (0.0, 0.0, 0.0, 0.35)
 GROUND_COLOR, GROUND_EDGE, SLAB_COLOR = "#ece2cf", "#8c7a5b", "#d2bf99"
+OBSTACLE_COLOR = "#6e6e6e"
 # directions toward the viewer: the top view looks down -y, the side view looks down -z
 VIEWS = {"top": (np.array([0.0, 1.0, 0.0]), (0, 2)), "side": (np.array([0.0, 0.0, 1.0]), (0, 1))}
 
@@ -172,6 +175,20 @@ def _leg_segments(scene: Scene, view: str, side: int | None = None) -> tuple[np.
     return seg, cols + cols
 
 
+ANTENNA_COLOR = (0.35, 0.2, 0.05, 1.0)
+ANTENNA_CONTACT_COLOR = (0.85, 0.1, 0.1, 1.0)
+
+
+def _antenna_segments(scene: Scene, view: str) -> tuple[list, list]:
+    """The antennae as polylines in one view (x-z from above, x-y from the side) and their colours."""
+    if scene.antennae is None:
+        return [], []
+    a, b = (0, 2) if view == "top" else (0, 1)
+    touching = scene.antenna_contact if scene.antenna_contact is not None else np.zeros(2, bool)
+    return ([scene.antennae[k][:, [a, b]] for k in range(len(scene.antennae))],
+            [ANTENNA_CONTACT_COLOR if touching[k] else ANTENNA_COLOR for k in range(len(scene.antennae))])
+
+
 def _spring_segments(scene: Scene, view: str) -> np.ndarray:
     if scene.springs is None:
         return np.zeros((0, 2, 2))
@@ -220,6 +237,22 @@ def _draw_terrain(ax_top, ax_side, terrain, xlim, ylim, zlim) -> None:
     if kind == SLAB and f[2] > xlim[0]:  # Miller's book occupies x <= f[2]
         ax_top.add_patch(Rectangle((xlim[0], zlim[0]), min(f[2], xlim[1]) - xlim[0], zlim[1] - zlim[0],
                                    color=SLAB_COLOR, zorder=0.1, lw=0))
+    # obstacles (cylinders and boxes, Fig. 13): discs / rectangles from above, their silhouettes from the side
+    if f.shape[0] > H_NOBST and f[H_NOBST] > 0:
+        for r in obstacle_records(f):
+            if r[0] == OBST_CYLINDER:
+                cx, cz, rad, y0, y1 = r[1:6]
+                ax_top.add_patch(Circle((cx, cz), rad, color=OBSTACLE_COLOR, zorder=0.3, lw=0))
+                ax_side.add_patch(Rectangle((cx - rad, y0), 2 * rad, y1 - y0, color=OBSTACLE_COLOR, zorder=0.3,
+                                            lw=0, alpha=0.6))
+            else:  # a box: centre, half extents, cos/sin of its yaw
+                cx, cy, cz, hx, hy, hz, cy_, sy_ = r[1:9]
+                corners = np.array([[-hx, -hz], [hx, -hz], [hx, hz], [-hx, hz]])
+                rot = np.array([[cy_, sy_], [-sy_, cy_]])
+                ax_top.add_patch(Polygon(corners @ rot.T + [cx, cz], color=OBSTACLE_COLOR, zorder=0.3, lw=0))
+                ext = abs(hx * cy_) + abs(hz * sy_)
+                ax_side.add_patch(Rectangle((cx - ext, cy - hy), 2 * ext, 2 * hy, color=OBSTACLE_COLOR, zorder=0.3,
+                                            lw=0, alpha=0.6))
     # a fixed ground grid makes motion visible against the fixed camera
     span = max(xlim[1] - xlim[0], zlim[1] - zlim[0])
     step = 10.0 ** math.floor(math.log10(span / 4.0))
@@ -371,6 +404,9 @@ def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, pa
     springs = {v: ax.add_collection(LineCollection([], colors=[(0.2, 0.2, 0.2, 0.45)], linewidths=0.4, zorder=2.5))
                for v, ax in (("top", ax_top), ("side", ax_side))}
     legs_top = ax_top.add_collection(LineCollection([], linewidths=1.6, zorder=3))
+    # antennae: dark brown, red while touching an obstacle (Sec. 5.2)
+    antennae = {v: ax.add_collection(LineCollection([], linewidths=1.2, zorder=3.5))
+                for v, ax in (("top", ax_top), ("side", ax_side))}
     # side view: the right legs (+z, toward the viewer) in front of the body, the left ones behind it
     legs_side = {1: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=3)),
                  0: ax_side.add_collection(LineCollection([], linewidths=1.6, zorder=1.5))}
@@ -399,6 +435,10 @@ def write_animation(frames: Sequence[Scene], times: Sequence[float], terrain, pa
         legs_top.set_color(cols)
         for side, coll in legs_side.items():
             seg, cols = _leg_segments(scene, "side", side)
+            coll.set_segments(seg)
+            coll.set_color(cols)
+        for view, coll in antennae.items():
+            seg, cols = _antenna_segments(scene, view)
             coll.set_segments(seg)
             coll.set_color(cols)
         head.set_text(f"{title}   t = {t:.3f} s" if title else f"t = {t:.3f} s")

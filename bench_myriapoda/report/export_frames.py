@@ -106,6 +106,14 @@ def scene_mesh(scene: Scene, radius: float | None = None):
         v, f = tubes(np.concatenate([legs[:, 0], legs[:, 1]]), np.concatenate([legs[:, 1], legs[:, 2]]), r)
         verts.append(v)
         faces.append(f + offset)
+        offset += len(v)
+    if scene.antennae is not None and len(scene.antennae):
+        # antennae as thinner tubes, one per link
+        r = 0.5 * (leg_radius(scene) if radius is None else radius)
+        a = scene.antennae
+        v, f = tubes(a[:, :-1].reshape(-1, 3), a[:, 1:].reshape(-1, 3), r)
+        verts.append(v)
+        faces.append(f + offset)
     if not verts:
         return trimesh.Trimesh(np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64), process=False)
     return trimesh.Trimesh(np.concatenate(verts), np.concatenate(faces), process=False)
