@@ -239,6 +239,10 @@ class ScenarioConfig:
     mesh_scale: float = rng(1.0, gt=0.0, doc="mesh: vertices scaled by this (the skull is about 2 m long at 1)")
     mesh_translate_m: list = rng((0.0, 0.0, 0.0), length=3, doc="mesh: [x, y, z] added after scaling [m]")
     mesh_ground: bool = rng(False, doc="mesh: also a ground plane at ground_height_m")
+    mesh_cell_edges: float = rng(1.4, ge=0.5, le=8.0,
+                                 doc="mesh: spatial-hash cell size in mean edge lengths; smaller cells make "
+                                     "queries a few cells off the surface cheaper but take longer to build "
+                                     "(see world/meshes.py)")
     mesh_band_m: float = rng(0.0, ge=0.0, doc="mesh: signed distances within this band (exact within a quarter "
                                               "hash cell of the surface, interpolated from exact samples beyond), "
                                               "+-band farther [m]; 0: a tenth of the mesh's bounding-box diagonal")

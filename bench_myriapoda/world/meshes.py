@@ -42,7 +42,12 @@ from numba import njit
 from . import terrain_kernels as TK
 
 SKULL_DEFAULT_SUBDIVISIONS = 92  # 12 * 92^2 = 101,568 triangles
-DEFAULT_CELL_EDGES = 2.0  # hash cell size in mean edge lengths
+# Hash cell size in mean edge lengths.  Smaller cells tighten the far-field bound, so points a few
+# decimetres off the surface (a walking body's box corners and nodes) take the cheap interpolated
+# distance instead of the exact search: measured on the 18-segment centipede walking over the 101,568-
+# triangle skull, 2.0 gave 2.4x the flat-ground time per step, 1.4 gave 1.5x (13 s to build the hash
+# instead of 7 s), 1.0 gave 1.6x (40 s).
+DEFAULT_CELL_EDGES = 1.4
 DEFAULT_BAND_FRACTION = 0.1  # default band: this fraction of the bounding-box diagonal
 DEFAULT_EXACT_CELLS = 0.25  # exact band in cells: nearer the surface than this, phi is the exact distance
 

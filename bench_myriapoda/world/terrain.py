@@ -62,14 +62,15 @@ def heightfield_gaussians_from(sc) -> np.ndarray:
 
 
 @functools.lru_cache(maxsize=4)
-def _mesh_params_cached(mesh: str, subdivisions: int, scale: float, translate: tuple, band_m: float) -> np.ndarray:
+def _mesh_params_cached(mesh: str, subdivisions: int, scale: float, translate: tuple, band_m: float,
+                        cell_edges: float = meshes.DEFAULT_CELL_EDGES) -> np.ndarray:
     if mesh == "skull":
         m = meshes.transformed(meshes.skull_mesh(subdivisions), scale, translate)
         name = f"skull({subdivisions})"
     else:
         m = meshes.load_closed_mesh(mesh, scale, translate)
         name = mesh
-    f = meshes.mesh_terrain_params(m, None, band_m=band_m if band_m > 0 else None, name=name)
+    f = meshes.mesh_terrain_params(m, None, cell_edges=cell_edges, band_m=band_m if band_m > 0 else None, name=name)
     f.setflags(write=False)
     return f
 
@@ -82,7 +83,8 @@ def _base_terrain(sc) -> tuple[int, np.ndarray]:
     if kind == MESH:
         try:
             fm = _mesh_params_cached(sc.mesh, int(sc.mesh_subdivisions), float(sc.mesh_scale),
-                                     tuple(float(t) for t in sc.mesh_translate_m), float(sc.mesh_band_m))
+                                     tuple(float(t) for t in sc.mesh_translate_m), float(sc.mesh_band_m),
+                                     float(sc.mesh_cell_edges))
         except meshes.MeshError as exc:
             raise InputError(_source(sc), "scenario.mesh", str(exc)) from None
         f = np.array(fm)  # a private, writable copy
