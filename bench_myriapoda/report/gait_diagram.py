@@ -19,9 +19,20 @@ import numpy as np  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 from ..metrics.gait import (  # noqa: E402
-    LEFT, N_STATES, RIGHT, STATE_COLORS, STATE_NAMES, check_timeline, leg_index, leg_label,
-    phase_lags_per_leg, run_lengths, wave_metrics, stride_stats,
+    LEFT,
+    N_STATES,
+    RIGHT,
+    STATE_COLORS,
+    STATE_NAMES,
+    check_timeline,
+    leg_index,
+    leg_label,
+    phase_lags_per_leg,
+    run_lengths,
+    stride_stats,
+    wave_metrics,
 )
+from .figure_files import save_figure  # noqa: E402
 
 ROW_HEIGHT = 0.9        # bar height as a fraction of the row pitch: thin white gaps separate legs
 GROUP_GAP_ROWS = 0.8    # extra space between the left and the right block in the grouped layout
@@ -44,13 +55,6 @@ def leg_rows(n_legs: int, layout: str = "grouped") -> list[tuple[int, float]]:
              if leg_index(s, RIGHT) < n_legs]
     return left + right
 
-
-def _save(fig, path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
 
 
 def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | None = None,
@@ -91,7 +95,7 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
               title="leg state", title_fontsize=8)
     ax.set_title(title or f"Leg states, last {t[-1] - t[0]:.2f} s", fontsize=10)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path, dpi=110)
 
 
 def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = None) -> Path:
@@ -127,4 +131,4 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
     ax.legend(fontsize=7, loc="best")
     ax.set_title(title or "Inter-leg phase lag along the body", fontsize=10)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path, dpi=110)

@@ -25,6 +25,7 @@ from ..core.schema import ScenarioConfig  # noqa: E402
 from ..harness.recorder import Series  # noqa: E402
 from ..world.terrain import terrain_from_scenario  # noqa: E402
 from ..world.terrain_kernels import terrain_phi_numpy  # noqa: E402
+from .figure_files import save_figure  # noqa: E402
 
 ENERGY_NAMES = ("kinetic", "elastic", "gravitational")
 
@@ -49,7 +50,7 @@ def plot_energy(runs: Sequence[tuple[str, Series]], path: Path) -> Path:
     axes[0][0].set_ylabel("energy - energy at t=0 [J]", fontsize=8)
     axes[0][0].legend(fontsize=6, loc="best")
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path, dpi=100)
 
 
 def motion_spaced_frames(centers: np.ndarray, frames: int) -> np.ndarray:
@@ -103,7 +104,7 @@ def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: i
     ax.set_title(title, fontsize=9)
     ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path, dpi=100)
 
 
 def stored_section(cls, data: dict | None):
@@ -121,10 +122,3 @@ def scenario_config(scenario: dict) -> ScenarioConfig:
     """A stored case's scenario section as a ``ScenarioConfig`` (see ``stored_section``)."""
     return stored_section(ScenarioConfig, scenario)
 
-
-def _save(fig, path: Path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return path

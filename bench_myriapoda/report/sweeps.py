@@ -13,7 +13,6 @@ A matrix sweeps a parameter through a grid key (``[matrix.grid]`` or a block's
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
 
 import matplotlib
@@ -23,6 +22,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
+
+from .figure_files import save_figure  # noqa: E402
 
 # stiffness of each body model: Miller's k per unit mass, Young's modulus, the legged chain's springs
 STIFFNESS_KEYS = ("body.stiffness", "body.youngs_modulus_pa", "body.link_stiffness_n_m")
@@ -44,13 +45,6 @@ def sweep_mask(df: pd.DataFrame, grid_keys) -> pd.Series:
     for k in keys:
         mask |= _has(df, k)
     return mask
-
-
-@dataclass
-class Figure:
-    title: str
-    path: Path
-    note: str = ""
 
 
 # --------------------------------------------------------------------------- stability
@@ -103,7 +97,7 @@ def plot_stability_heatmap(sub: pd.DataFrame, key: str, path: Path, title: str) 
     ax.set_ylabel(key)
     ax.set_title(title, fontsize=9)
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path, dpi=100)
 
 
 # --------------------------------------------------------------------------- throughput scaling
@@ -155,12 +149,5 @@ def plot_throughput_scaling(series, path: Path, key: str) -> tuple[Path, dict[st
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    return _save(fig, path), fits
+    return save_figure(fig, path, dpi=100), fits
 
-
-def _save(fig, path: Path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return path

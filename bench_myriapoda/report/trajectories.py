@@ -11,6 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from ..harness.recorder import Series  # noqa: E402
+from .figure_files import save_figure  # noqa: E402
 
 
 def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
@@ -86,8 +87,4 @@ def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: in
     axes[0][0].set_ylabel("z [m]")
     axes[0][0].legend(fontsize=7, loc="best")
     fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path, dpi=110)

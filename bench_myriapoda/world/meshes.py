@@ -225,17 +225,24 @@ def transformed(mesh, scale: float = 1.0, translate=(0.0, 0.0, 0.0)):
 # --------------------------------------------------------------------------- the spatial hash
 
 @njit(cache=True)
+def _tri_cell_range(tri, t, ox, oy, oz, invh, nx, ny, nz, eps):
+    """Inclusive cell index ranges (i0, i1, j0, j1, k0, k1) that triangle t's bounding box, widened by
+    eps [m], overlaps; tri: (T, 9) corner coordinates a, b, c."""
+    lo0 = min(tri[t, 0], min(tri[t, 3], tri[t, 6])) - eps
+    hi0 = max(tri[t, 0], max(tri[t, 3], tri[t, 6])) + eps
+    lo1 = min(tri[t, 1], min(tri[t, 4], tri[t, 7])) - eps
+    hi1 = max(tri[t, 1], max(tri[t, 4], tri[t, 7])) + eps
+    lo2 = min(tri[t, 2], min(tri[t, 5], tri[t, 8])) - eps
+    hi2 = max(tri[t, 2], max(tri[t, 5], tri[t, 8])) + eps
+    return (max(int(math.floor((lo0 - ox) * invh)), 0), min(int(math.floor((hi0 - ox) * invh)), nx - 1),
+            max(int(math.floor((lo1 - oy) * invh)), 0), min(int(math.floor((hi1 - oy) * invh)), ny - 1),
+            max(int(math.floor((lo2 - oz) * invh)), 0), min(int(math.floor((hi2 - oz) * invh)), nz - 1))
+
+
+@njit(cache=True)
 def _count_cells(tri, ox, oy, oz, invh, nx, ny, nz, eps, counts):
     for t in range(tri.shape[0]):
-        lo0 = min(tri[t, 0], min(tri[t, 3], tri[t, 6])) - eps
-        hi0 = max(tri[t, 0], max(tri[t, 3], tri[t, 6])) + eps
-        lo1 = min(tri[t, 1], min(tri[t, 4], tri[t, 7])) - eps
-        hi1 = max(tri[t, 1], max(tri[t, 4], tri[t, 7])) + eps
-        lo2 = min(tri[t, 2], min(tri[t, 5], tri[t, 8])) - eps
-        hi2 = max(tri[t, 2], max(tri[t, 5], tri[t, 8])) + eps
-        i0, i1 = max(int(math.floor((lo0 - ox) * invh)), 0), min(int(math.floor((hi0 - ox) * invh)), nx - 1)
-        j0, j1 = max(int(math.floor((lo1 - oy) * invh)), 0), min(int(math.floor((hi1 - oy) * invh)), ny - 1)
-        k0, k1 = max(int(math.floor((lo2 - oz) * invh)), 0), min(int(math.floor((hi2 - oz) * invh)), nz - 1)
+        i0, i1, j0, j1, k0, k1 = _tri_cell_range(tri, t, ox, oy, oz, invh, nx, ny, nz, eps)
         for i in range(i0, i1 + 1):
             for j in range(j0, j1 + 1):
                 for k in range(k0, k1 + 1):
@@ -245,15 +252,7 @@ def _count_cells(tri, ox, oy, oz, invh, nx, ny, nz, eps, counts):
 @njit(cache=True)
 def _fill_cells(tri, ox, oy, oz, invh, nx, ny, nz, eps, starts, fill, lst):
     for t in range(tri.shape[0]):
-        lo0 = min(tri[t, 0], min(tri[t, 3], tri[t, 6])) - eps
-        hi0 = max(tri[t, 0], max(tri[t, 3], tri[t, 6])) + eps
-        lo1 = min(tri[t, 1], min(tri[t, 4], tri[t, 7])) - eps
-        hi1 = max(tri[t, 1], max(tri[t, 4], tri[t, 7])) + eps
-        lo2 = min(tri[t, 2], min(tri[t, 5], tri[t, 8])) - eps
-        hi2 = max(tri[t, 2], max(tri[t, 5], tri[t, 8])) + eps
-        i0, i1 = max(int(math.floor((lo0 - ox) * invh)), 0), min(int(math.floor((hi0 - ox) * invh)), nx - 1)
-        j0, j1 = max(int(math.floor((lo1 - oy) * invh)), 0), min(int(math.floor((hi1 - oy) * invh)), ny - 1)
-        k0, k1 = max(int(math.floor((lo2 - oz) * invh)), 0), min(int(math.floor((hi2 - oz) * invh)), nz - 1)
+        i0, i1, j0, j1, k0, k1 = _tri_cell_range(tri, t, ox, oy, oz, invh, nx, ny, nz, eps)
         for i in range(i0, i1 + 1):
             for j in range(j0, j1 + 1):
                 for k in range(k0, k1 + 1):

@@ -245,6 +245,24 @@ def adi_steps(h, hp, b, dt, n_steps, g, dx, keep, parity, cp, kbuf):
 # ----------------------------------------------------------------------------------------------
 
 @njit(cache=True, error_model="numpy")
+def _bilinear_cell(fx, fz, nx, nz):
+    """Cell corners (i, j, i1, j1) and weights (tx, tz) of the bilinear stencil at fractional cell-centre
+    coordinates (fx, fz), clamped to the grid: outside the centres' hull the nearest edge value."""
+    fx = min(max(fx, 0.0), nx - 1.0)
+    fz = min(max(fz, 0.0), nz - 1.0)
+    i = min(int(fx), max(nx - 2, 0))
+    j = min(int(fz), max(nz - 2, 0))
+    return i, j, min(i + 1, nx - 1), min(j + 1, nz - 1), fx - i, fz - j
+
+
+@njit(cache=True, error_model="numpy")
+def _bilinear(field, i, j, i1, j1, tx, tz):
+    """The bilinear interpolation of field (nx, nz) on the stencil of ``_bilinear_cell``."""
+    return ((1.0 - tx) * ((1.0 - tz) * field[i, j] + tz * field[i, j1])
+            + tx * ((1.0 - tz) * field[i1, j] + tz * field[i1, j1]))
+
+
+@njit(cache=True, error_model="numpy")
 def bilinear(field, x0, z0, dx, xq, zq, out):
     """Bilinear interpolation of a cell-centred field at points (xq, zq) [m].
 
@@ -253,18 +271,8 @@ def bilinear(field, x0, z0, dx, xq, zq, out):
     """
     nx, nz = field.shape
     for p in range(xq.shape[0]):
-        fx = (xq[p] - x0) / dx - 0.5
-        fz = (zq[p] - z0) / dx - 0.5
-        fx = min(max(fx, 0.0), nx - 1.0)
-        fz = min(max(fz, 0.0), nz - 1.0)
-        i = min(int(fx), max(nx - 2, 0))
-        j = min(int(fz), max(nz - 2, 0))
-        tx = fx - i
-        tz = fz - j
-        i1 = min(i + 1, nx - 1)
-        j1 = min(j + 1, nz - 1)
-        out[p] = ((1.0 - tx) * ((1.0 - tz) * field[i, j] + tz * field[i, j1])
-                  + tx * ((1.0 - tz) * field[i1, j] + tz * field[i1, j1]))
+        i, j, i1, j1, tx, tz = _bilinear_cell((xq[p] - x0) / dx - 0.5, (zq[p] - z0) / dx - 0.5, nx, nz)
+        out[p] = _bilinear(field, i, j, i1, j1, tx, tz)
 
 
 @njit(cache=True, error_model="numpy")
@@ -469,16 +477,9 @@ def disturb_points(h, hp, b, x0, z0, dx, pts, vel, radii, dt, c_vert, c_horiz, w
         if fx < -0.5 or fz < -0.5 or fx > nx - 0.5 or fz > nz - 0.5:
             continue
         # local surface and bed (bilinear, clamped)
-        cx = min(max(fx, 0.0), nx - 1.0)
-        cz = min(max(fz, 0.0), nz - 1.0)
-        i = min(int(cx), max(nx - 2, 0))
-        j = min(int(cz), max(nz - 2, 0))
-        tx = cx - i
-        tz = cz - j
-        i1 = min(i + 1, nx - 1)
-        j1 = min(j + 1, nz - 1)
-        hs = ((1 - tx) * ((1 - tz) * h[i, j] + tz * h[i, j1]) + tx * ((1 - tz) * h[i1, j] + tz * h[i1, j1]))
-        bs = ((1 - tx) * ((1 - tz) * b[i, j] + tz * b[i, j1]) + tx * ((1 - tz) * b[i1, j] + tz * b[i1, j1]))
+        i, j, i1, j1, tx, tz = _bilinear_cell(fx, fz, nx, nz)
+        hs = _bilinear(h, i, j, i1, j1, tx, tz)
+        bs = _bilinear(b, i, j, i1, j1, tx, tz)
         if hs - bs <= wet_eps or y - r >= hs:
             continue
         immersed = min(y + r, hs) - max(y - r, bs)
