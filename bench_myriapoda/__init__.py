@@ -35,3 +35,10 @@ if "NUMBA_CACHE_DIR" not in os.environ:  # a user's own choice wins
             sys.modules["numba"].config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
     except AttributeError:
         pass
+
+
+def run(*args, **kwargs):
+    """Run one case from Python (``bench_myriapoda.api.run``); imported lazily so that importing the
+    package stays light."""
+    from .api import run as _run
+    return _run(*args, **kwargs)

@@ -20,8 +20,8 @@ import trimesh
 from PIL import Image
 
 from bench_myriapoda.bodies import scene as SC
-from bench_myriapoda.bodies.legs import FEMUR, ROOT_X, ROOT_Z, TIBIA
-from bench_myriapoda.bodies.myriapod import BodyMyriapod
+from bench_myriapoda.kinematics.legs import FEMUR, ROOT_X, ROOT_Z, TIBIA
+from bench_myriapoda.harness.runner import Creature
 from bench_myriapoda.cli import main
 from bench_myriapoda.controllers.myriapod.switcher import N_STATES
 from bench_myriapoda.core import registry
@@ -51,11 +51,11 @@ def cli(capsys, *argv):
 
 @pytest.fixture(scope="module", params=BODIES, ids=["/".join(b[:2]) for b in BODIES])
 def moved_body(request):
-    """A body of each model (the factory's: legged creatures come wrapped in BodyMyriapod) after STEPS steps."""
+    """A body of each model composed with its controller (``runner.Creature``) after STEPS steps."""
     creature, body_name, scenario = request.param
     registry.load_all()
     case = resolve_case(creature, body_name, scenario, duration=1.0)
-    body = registry.BODIES[body_name].factory(case)
+    body = Creature(case)
     body.compile()
     k, status = body.advance(0.0, STEPS)
     assert (k, status) == (STEPS, 0)
@@ -63,7 +63,7 @@ def moved_body(request):
 
 
 def _segments(body):
-    return body.segments if isinstance(body, BodyMyriapod) else body
+    return body.body
 
 
 def _surface_points(scene):
@@ -137,11 +137,11 @@ def test_scene_surfaces_sit_on_the_bodys_nodes_boxes_and_segment_centres(moved_b
 def test_legs_are_root_knee_tip_with_the_leg_geometry_and_valid_states(moved_body):
     body = moved_body
     scene = body.scene()
-    if not isinstance(body, BodyMyriapod):
+    if body.monitor is None:  # no legs
         assert scene.legs is None and scene.leg_states is None
         return
     ctrl = body.controller
-    c, R = body.segments.segment_poses()
+    c, R = body.body.segment_poses()
     n_legs = 2 * len(c)
     assert scene.legs.shape == (n_legs, 3, 3) and scene.leg_states.shape == (n_legs,)
     assert set(np.unique(scene.leg_states)) <= set(range(N_STATES))
@@ -327,7 +327,7 @@ def test_export_frames_ply_into_an_existing_empty_directory(capsys, tmp_path):
 def test_exported_legged_frame_has_the_body_then_two_closed_tubes_per_leg(tmp_path):
     registry.load_all()
     case = resolve_case("centipede", "massspring", "walk", duration=1.0)
-    body = registry.BODIES["massspring"].factory(case)
+    body = Creature(case)
     body.compile()
     scenes, times = [body.scene()], [0.0]
     body.advance(0.0, 20)

@@ -8,6 +8,8 @@ import math
 from dataclasses import replace
 
 import numpy as np
+
+from bench_myriapoda.harness.runner import Creature
 import pytest
 
 from bench_myriapoda.controllers.myriapod import antennae as A
@@ -284,7 +286,7 @@ def walk_into(sets, seconds):
     case = resolve_case("centipede", "hybrid", "walk", duration=seconds,
                         overrides=["creature.segments=6", "controller.random_turn_max_deg=0"] + sets)
     registry.load_all()
-    body = registry.BODIES["hybrid"].factory(case)
+    body = Creature(case)
     body.compile()
     ctrl = body.controller
     log = []
@@ -293,7 +295,7 @@ def walk_into(sets, seconds):
         k, status = body.advance(done * case.dt, 1)
         assert status == 0, body.status_text(status)
         done += k
-        R = body.segments.segment_poses()[1][0]
+        R = body.body.segment_poses()[1][0]
         log.append((done * case.dt, heading(R), ctrl.brain, *ctrl.antennae.contact))
     return body, np.array(log)
 

@@ -75,7 +75,7 @@ def test_active_coefficients_match_numpy():
     body = BodyFEM(case)
     s = body.system
     act = rng.uniform(-0.3, 0.3, size=(4, 3))
-    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, True,
+    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, 1.0, True,
                            s.Dm_inv_eff, s.coef)
     la = 1 + act[body.tet_seg, 0] + act[body.tet_seg, 1] * body.tet_z + act[body.tet_seg, 2] * body.tet_y
     lc = 1 / np.sqrt(1 + act[body.tet_seg, 0])
@@ -93,7 +93,7 @@ def test_mesh_in_its_active_shape_feels_no_elastic_force():
     s = body.system
     act = np.zeros((3, 3))
     act[:, 0] = 0.2
-    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, True,
+    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, 1.0, True,
                            s.Dm_inv_eff, s.coef)
     x = body.rest * np.array([1.2, 1 / np.sqrt(1.2), 1 / np.sqrt(1.2)])
     f = np.zeros_like(x)
@@ -124,10 +124,13 @@ def test_advance_one_step_matches_a_scipy_step_without_contact():
     x0, v0 = body.x.copy(), body.v.copy()
     t0 = 1.3
     act = np.zeros((3, 3))
-    from bench_myriapoda.controllers.muscle_waves import segment_activation_numpy
-    act = segment_activation_numpy(body.waves, case.gait.ramp_s, body.s_seg, t0)
+    from bench_myriapoda.controllers.muscle_waves import MuscleWaveController, segment_activation_numpy
+    from bench_myriapoda.core.protocols import Actuation, body_info
+    ctrl = MuscleWaveController(case)
+    ctrl.reset(case, body_info(body, case.dt))
+    act = segment_activation_numpy(ctrl.waves, case.gait.ramp_s, body.muscle_s, t0)
     dm_eff, coef = s.Dm_inv_eff.copy(), s.coef.copy()
-    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, False,
+    BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, 1.0, False,
                            dm_eff, coef)
     f = np.zeros_like(x0)
     q, F, H = FK.new_tet_workspace(len(s.tets))
@@ -136,7 +139,9 @@ def test_advance_one_step_matches_a_scipy_step_without_contact():
     A = (sp.diags(s.mass) + case.dt * s.D).tocsc()
     v1 = spla.spsolve(A, s.mass[:, None] * v0 + case.dt * f)
     x1 = x0 + case.dt * v1
-    done, status = body.advance(t0, 1)
+    actuation = Actuation.for_body(body)
+    ctrl.fill(t0, case.dt, 1, actuation)
+    done, status = body.advance(t0, 1, actuation)
     assert (done, status) == (1, 0)
     np.testing.assert_allclose(body.v, v1, atol=TOL_STEP * np.abs(v1).max())
     np.testing.assert_allclose(body.x, x1, atol=TOL_STEP)

@@ -1,4 +1,4 @@
-"""Leg kinematics (bench_myriapoda.bodies.legs): FK geometry and conventions, the
+"""Leg kinematics (bench_myriapoda.kinematics.legs): FK geometry and conventions, the
 IK of App. B (round trip, failures, a scipy reference), the all-legs kernels."""
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 from scipy.optimize import least_squares
 from scipy.spatial.transform import Rotation
 
-from bench_myriapoda.bodies import legs as L
+from bench_myriapoda.kinematics import legs as L
 from bench_myriapoda.world.terrain_kernels import PLANE, SLOPE, terrain_phi_numpy
 
 ROUND_TRIP_TOL = 1e-9  # [rad] FK -> IK recovers the angles

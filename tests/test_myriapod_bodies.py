@@ -19,7 +19,8 @@ from scipy.spatial.transform import Rotation
 
 from bench_myriapoda.bodies.fem.myriapod import BodyFEMChain
 from bench_myriapoda.bodies.massspring.myriapod import BodyRigidSpringChain
-from bench_myriapoda.bodies.myriapod import BodyMyriapod
+from bench_myriapoda.controllers.myriapod.controller import MyriapodController
+from bench_myriapoda.harness.runner import Creature
 from bench_myriapoda.bodies.rigid import RigidBoxes
 from bench_myriapoda.core import registry
 from bench_myriapoda.core.config import resolve_case
@@ -70,8 +71,8 @@ def test_the_factories_give_legged_bodies_for_the_centipede():
     for name, cls in (("massspring", BodyRigidSpringChain), ("fem", BodyFEMChain)):
         spec = registry.BODIES[name]
         assert "legs" in spec.capabilities
-        body = spec.factory(_case(name))
-        assert isinstance(body, BodyMyriapod) and isinstance(body.segments, cls)
+        body = Creature(_case(name))  # the factory's body, composed with the gait's controller
+        assert isinstance(body.controller, MyriapodController) and isinstance(body.body, cls)
         assert body.body_length_m == pytest.approx(18 * 1.0 + 17 * 0.5)
 
 

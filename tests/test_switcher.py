@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from numba import njit
 
-from bench_myriapoda.bodies import legs as L
+from bench_myriapoda.kinematics import legs as L
 from bench_myriapoda.controllers.myriapod import switcher as S
 from bench_myriapoda.controllers.myriapod.switcher import (ADJUST, SB1, SB2, SF1, SF2, STANCE,
                                                            DIRECT, RETROGRADE)

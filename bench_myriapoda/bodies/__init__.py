@@ -1,4 +1,3 @@
-"""Body model backends; importing this package registers them by name."""
-from .fem import body as _fem  # noqa: F401
-from .massspring import body as _massspring  # noqa: F401
-from .hybrid import body as _hybrid  # noqa: F401
+"""Body model backends (``massspring``, ``fem``, ``hybrid``), one subpackage each.  Each reads
+``core.protocols.Actuation`` and fills ``Observation``; none imports a controller.
+``bench_myriapoda.catalog`` lists them by name."""

@@ -56,6 +56,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ..kinematics.rotations import mat_t_vec as _matTvec, matvec as _matvec  # noqa: F401 (fem kernels use them from here)
+
 from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
 
 STATUS_OK = 0
@@ -122,20 +124,6 @@ def _world_inverse_inertia(R, i0, i1, i2, Iw):
     for a in range(3):
         for b in range(3):
             Iw[a, b] = R[a, 0] * R[b, 0] / i0 + R[a, 1] * R[b, 1] / i1 + R[a, 2] * R[b, 2] / i2
-
-
-@njit(cache=True)
-def _matvec(M, x, y, z):
-    return (M[0, 0] * x + M[0, 1] * y + M[0, 2] * z,
-            M[1, 0] * x + M[1, 1] * y + M[1, 2] * z,
-            M[2, 0] * x + M[2, 1] * y + M[2, 2] * z)
-
-
-@njit(cache=True)
-def _matTvec(M, x, y, z):
-    return (M[0, 0] * x + M[1, 0] * y + M[2, 0] * z,
-            M[0, 1] * x + M[1, 1] * y + M[2, 1] * z,
-            M[0, 2] * x + M[1, 2] * y + M[2, 2] * z)
 
 
 @njit(cache=True)

@@ -37,7 +37,7 @@ class Scene:
       faces index that entry's own vertices and are wound counter-clockwise seen
       from outside (outward normals) for undeformed, uninverted geometry.
     legs: (n_legs, 3, 3) float64 [m] the points root O, knee M and tip P of
-      every leg (``bodies.legs``), leg k = 2 * segment + side; None without legs.
+      every leg (``kinematics.legs``), leg k = 2 * segment + side; None without legs.
     leg_states: (n_legs,) int64 Switcher state of every leg
       (``controllers.myriapod.switcher``: SF1 ... ADJUST); None without legs.
     springs: (S, 2, 3) float64 [m] end points of every spring of a mass-spring
@@ -172,9 +172,9 @@ def legs_scene(segment_c: np.ndarray, segment_R: np.ndarray, geom: np.ndarray, a
     """(legs (n_legs, 3, 3) [m] O, M, P; states (n_legs,) int64) by forward kinematics.
 
     segment_c (n_seg, 3) [m], segment_R (n_seg, 3, 3) segment -> world; geom
-    (n_legs, N_LEG_GEOM) and angles (n_legs, 3) [rad] as in ``bodies.legs``.
+    (n_legs, N_LEG_GEOM) and angles (n_legs, 3) [rad] as in ``kinematics.legs``.
     """
-    from .legs import legs_forward_kinematics
+    from ..kinematics.legs import legs_forward_kinematics
 
     n = len(geom)
     O, M, P = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))

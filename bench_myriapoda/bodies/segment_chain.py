@@ -74,3 +74,38 @@ class CouplingScratch:
                    corner_of=z(n_corners, dtype=np.int64), lin=z((n_corners, 3, 3)), ang=z((n_corners, 3, 3)),
                    resp=z((n_corners, 3, 3)), kn=z(n_corners), kt=z((n_corners, 6)), target=z(n_corners),
                    lam=z((n_corners, 3)), qtmp=z(4))
+
+
+class SupportedSegments:
+    """The ``SEGMENTS`` capability of a body whose segments the legs carry (paper Sec. 4.1).
+
+    A subclass provides ``segment_poses() -> (c (n, 3) [m], R (n, 3, 3))``,
+    ``segment_velocities() -> (n, 3) [m/s]``, ``set_support(kinematic, c_T, R_T, dt)``,
+    ``segment_half_extents`` (n, 3) [m], ``dt`` [s], ``terr_kind``/``terr`` and ``fric``.
+    """
+
+    def apply_support(self, act) -> None:
+        """Carry the supported segments of ``act`` (support_kinematic, support_c, support_R) this step."""
+        if act.support_new:
+            self.set_support(act.support_kinematic, act.support_c, act.support_R, self.dt)
+            act.support_new = False
+
+    def sense(self, obs, t: float) -> None:
+        """Control fields of ``obs`` (``core.protocols.Observation``) from the segments' poses."""
+        c, R = self.segment_poses()
+        obs.t = t
+        obs.seg_pos, obs.seg_rot = c, R
+        obs.seg_vel = self.segment_velocities()
+        obs.seg_half = self.segment_half_extents
+
+    def _observe_segments(self, obs, t: float):
+        """Fill the control fields and ``seg_contact`` (a box corner within the contact distance)."""
+        from .friction_kernels import CONTACT_DISTANCE
+        from .segment_frames import groups_touching
+        self.sense(obs, t)
+        c, R = obs.seg_pos, obs.seg_rot
+        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+        corners = (c[:, None, :] + np.einsum("nij,nkj->nki", R, signs[None] * obs.seg_half[:, None, :])).reshape(-1, 3)
+        obs.seg_contact = np.zeros(len(c), dtype=bool)
+        groups_touching(corners, 8, self.terr_kind, self.terr, self.fric[CONTACT_DISTANCE], obs.seg_contact)
+        return obs

@@ -1,3 +1,3 @@
-"""Controllers: Miller's muscle waves (worm, snake, sidewinder, caterpillar)."""
-from . import muscle_waves  # noqa: F401  (registers the gaits)
-from . import myriapod  # noqa: F401,E402  (registers the leg-wave gait)
+"""Controllers (gaits): Miller's muscle waves (``muscle_waves``) and the myriapod leg controller
+(``myriapod``).  Each reads ``core.protocols.Observation`` and writes ``Actuation``; none imports a
+body.  ``bench_myriapoda.catalog`` lists them by gait name."""

@@ -18,6 +18,10 @@ is the rest arc length of the segment centre from the head [m], k = +-2 pi /
 wavelength [rad/m] (positive: the wave travels from head to tail), omega = 2 pi
 f [rad/s].  The wave table is a (3, 5) float64 array so that numba kernels
 evaluate the activation at every substep without calling Python.
+
+:class:`MuscleWaveController` is the open-loop controller of these gaits: for every chunk of
+steps it fills the actuation buffer (one row per step, ``fill_activation``), and the body's
+kernel reads row k at step k, knowing nothing of gait names or wave tables.
 """
 from __future__ import annotations
 
@@ -26,11 +30,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..core.registry import GaitSpec, register_gait
+from ..core.protocols import AXIAL, DORSAL, LATERAL, MUSCLES, N_CHANNELS, Actuation, Observation  # noqa: F401
 from ..core.schema import GaitConfig
-
-AXIAL, LATERAL, DORSAL = 0, 1, 2
-N_CHANNELS = 3
 # wave table columns
 AMP, WAVENUMBER, OMEGA, PHASE, PROFILE = 0, 1, 2, 3, 4
 PROFILE_SINE, PROFILE_RAISED = 0.0, 1.0
@@ -46,11 +47,6 @@ GAIT_DESCRIPTIONS = {
     "sidewinding": "lateral undulation plus a vertical wave 90 degrees out of phase, wavelength = length / 1.4",
     "arching": "caterpillar: a one-sided arching wave travelling tail to head (DORSAL) with coupled contraction (AXIAL)",
 }
-for _name, _desc in GAIT_DESCRIPTIONS.items():
-    register_gait(GaitSpec(name=_name, description=_desc, requires=frozenset({"muscles"})))
-# A creature without muscles or legs (e.g. the paper's Fig. 4 chain) runs the passive gait.
-register_gait(GaitSpec(name="passive", description="no actuation: the body only falls, hangs and collides",
-                       requires=frozenset()))
 
 
 def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) -> np.ndarray:
@@ -107,3 +103,64 @@ def segment_activation_numpy(waves: np.ndarray, ramp_s: float, s_seg: np.ndarray
     raised = waves[:, PROFILE][None, :] == PROFILE_RAISED
     val = np.where(raised & (val < 0), 0.0, val)
     return r * waves[:, AMP][None, :] * val
+
+
+@njit(cache=True, error_model="numpy")
+def fill_activation(waves, ramp_s, s_seg, t0, dt, n_rows, out):
+    """Overwrite rows 0..n_rows-1 of ``out`` (>= n_rows, n_seg, 3) with the activation at t0 + k dt [s].
+
+    The time of row k is computed as ``t0 + k * dt``, as the body kernels count their steps, so a
+    buffered activation is bitwise the one a kernel would have evaluated itself.
+    """
+    for k in range(n_rows):
+        segment_activation(waves, ramp_s, s_seg, t0 + k * dt, out[k])
+
+
+class MuscleWaveController:
+    """Miller's travelling muscle waves as an open-loop controller (rectilinear, lateral undulation,
+    sidewinding, arching; ``wave_table``).  Works on any body with muscles: the waves are evaluated
+    at the body's own muscle segments (``body_info["muscle_s"]``, rest arc length from the head [m]),
+    with the wavelength measured in the creature's body length."""
+
+    requires = frozenset({MUSCLES})
+    open_loop = True
+    rate_hz = 0.0
+
+    def __init__(self, case):
+        self.case = case
+        self.waves = wave_table(case.gait, case.creature.body_length_m, passive=case.scenario.passive)
+        self.ramp_s = float(case.gait.ramp_s)
+        self.s_seg = np.zeros(0)
+
+    def reset(self, case, body_info, rng=None) -> None:
+        self.s_seg = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
+
+    def fill(self, t0: float, dt: float, n_steps: int, act: Actuation) -> None:
+        act.ensure_rows(n_steps)
+        fill_activation(self.waves, self.ramp_s, self.s_seg, t0, dt, n_steps, act.muscle)
+        act.muscles_on = bool(np.any(self.waves[:, AMP] != 0.0))
+
+    def step(self, obs: Observation, t: float, act: Actuation) -> None:
+        self.fill(t, 0.0, 1, act)
+
+
+class PassiveController:
+    """No actuation at all: the body only falls, hangs and collides (the paper's Fig. 4 chain)."""
+
+    requires = frozenset()
+    open_loop = True
+    rate_hz = 0.0
+
+    def __init__(self, case=None):
+        pass
+
+    def reset(self, case, body_info, rng=None) -> None:
+        pass
+
+    def fill(self, t0: float, dt: float, n_steps: int, act: Actuation) -> None:
+        act.ensure_rows(n_steps)
+        act.muscle[:n_steps] = 0.0
+        act.muscles_on = False
+
+    def step(self, obs: Observation, t: float, act: Actuation) -> None:
+        self.fill(t, 0.0, 1, act)

@@ -9,21 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bodies.observation import Observation
-
-
-@dataclass
-class Series:
-    """Stacked observations: t (T,) [s]; com, head, tail (T, 3) [m];
-    segment_centers (T, n_seg, 3) [m]; energy (T, 3) [J]; nodes (T, n_nodes, 3) or None."""
-
-    t: np.ndarray
-    com: np.ndarray
-    head: np.ndarray
-    tail: np.ndarray
-    segment_centers: np.ndarray
-    energy: np.ndarray
-    nodes: np.ndarray | None
+from ..core.protocols import Observation
+from ..core.series import Series  # noqa: F401  (re-exported: the recorder's product)
 
 
 @dataclass
@@ -31,16 +18,27 @@ class Recorder:
     keep_nodes: bool = False
     samples: list[Observation] = field(default_factory=list)
 
-    def add(self, obs: Observation) -> None:
-        self.samples.append(obs)
-
     def series(self) -> Series:
         s = self.samples
         nodes = np.stack([o.nodes for o in s]) if self.keep_nodes and s and s[0].nodes is not None else None
+
+        def stacked(name):
+            vals = [getattr(o, name) for o in s]
+            return np.stack(vals) if vals and all(v is not None for v in vals) else None
         return Series(t=np.array([o.t for o in s]), com=np.stack([o.com for o in s]),
                       head=np.stack([o.head for o in s]), tail=np.stack([o.tail for o in s]),
                       segment_centers=np.stack([o.segment_centers for o in s]),
-                      energy=np.stack([o.energy for o in s]), nodes=nodes)
+                      energy=np.stack([o.energy for o in s]), nodes=nodes,
+                      segment_positions=stacked("seg_pos"), segment_rotations=stacked("seg_rot"),
+                      segment_contact=stacked("seg_contact"))
+
+    def add(self, obs: Observation) -> None:
+        # sense() may hand out views of the body's state (rigid bodies): keep copies
+        for name in ("seg_pos", "seg_rot"):
+            val = getattr(obs, name)
+            if val is not None:
+                setattr(obs, name, np.array(val, copy=True))
+        self.samples.append(obs)
 
 
 def compact_recording(series: Series, extra: dict | None = None) -> dict[str, np.ndarray]:
@@ -51,7 +49,7 @@ def compact_recording(series: Series, extra: dict | None = None) -> dict[str, np
     (T_leg, n_legs) int8 state codes, and ``brain`` (T_leg,) int8 brain-mode codes.  Leg tip
     positions and node positions are left out: they are what makes a recording large.
     """
-    rec = {k: np.asarray(v, dtype=np.float32) for k, v in vars(series).items() if v is not None and k != "nodes"}
+    rec = {k: np.asarray(v, dtype=np.float32) for k, v in vars(series).items() if v is not None and k not in ("nodes", "segment_positions", "segment_rotations")}
     rec["t"] = np.asarray(series.t, dtype=np.float64)
     extra = extra or {}
     if "leg_timeline" in extra:

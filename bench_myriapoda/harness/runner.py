@@ -1,13 +1,20 @@
-"""Run one resolved case: build the body, step it in chunks, sample, measure.
+"""Run one resolved case: compose a body, a controller and the world; step in chunks; sample; measure.
 
-The body's kernel runs many steps per call (one chunk per observation
-sample), so Python is touched only at the sample rate.  A blow-up inside the
+The runner builds the body (``catalog``: ``BODIES[case.body.name].factory``) and the gait's
+controller (``GAITS[case.gait.name].controller``, or one given by the caller), and passes data
+between them (``core.protocols``): the body fills an ``Observation``, the controller writes an
+``Actuation``.  An open-loop controller (Miller's muscle waves) fills the actuation for a whole
+chunk of steps and the body's kernel runs the chunk in one call, so Python is touched only at
+the sample rate.  A closed-loop controller (the paper's leg controller, a user's policy) ticks
+at ``rate_hz`` (every step when 0) and the body runs the steps between ticks in one call.  A
+blow-up inside the
 kernel comes back as a status code: the run ends with status ``unstable``
 and ``t_fail_s``, and everything measured until then is kept.  An exception
 anywhere in the run becomes status ``error`` with its message.
 """
 from __future__ import annotations
 
+import copy
 import math
 import time
 import traceback
@@ -18,9 +25,11 @@ import numpy as np
 
 from ..core import registry
 from ..core.config import Case
+from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, body_info, controller_settings
 from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
 from ..world.water_coupling import WaterCoupling, has_water
+from .legged import LeggedMonitor, LeggedView
 from .recorder import Recorder, Series
 
 
@@ -61,14 +70,136 @@ def wave_speed(case: Case, body_length_m: float | None = None) -> float:
 
 
 def body_length(body, case: Case) -> float:
-    """Rest length of the body from head to tail [m]: the body model's own figure when it has one."""
-    return float(getattr(body, "body_length_m", case.creature.body_length_m))
+    """Rest length of the body from head to tail [m], the body model's own (links included)."""
+    return float(body.body_length_m)
+
+
+class UnsupportedCombination(ValueError):
+    """A controller requires a capability the body does not have."""
+
+
+def compose(case: Case, controller=None):
+    """(body, controller) for ``case``: the catalog's body and the gait's controller (or ``controller``),
+    the controller reset for that body.  Raises UnsupportedCombination when the body cannot honour it."""
+    registry.load_all()
+    body = registry.BODIES[case.body.name].factory(case)
+    if controller is None:
+        controller = registry.GAITS[case.gait.name].controller(case)
+    requires, _, _ = controller_settings(controller)
+    missing = requires - body.capabilities
+    if missing:
+        raise UnsupportedCombination(f"body {case.body.name!r} cannot honour this controller: it lacks "
+                                     f"{', '.join(sorted(missing))}")
+    controller.reset(case, body_info(body, case.dt), np.random.default_rng(case.seed))
+    return body, controller
+
+
+class Stepper:
+    """Advances a composed body and controller: ``advance(t0, n) -> (steps done, status)``.
+
+    Open loop: the controller fills n + 1 actuation rows (row n is the actuation at the chunk's
+    end, which the body keeps as its current one) and the body runs the chunk in one call.
+    Closed loop: the controller ticks every ``steps_per_tick`` steps on a fresh observation
+    (``body.sense``); a body with SEGMENTS takes the new support at once (``apply_support``,
+    paper Sec. 4.1: supported segments are moved kinematically), then runs to the next tick.
+    """
+
+    def __init__(self, case: Case, body, controller, monitor: LeggedMonitor | None = None):
+        self.body, self.controller, self.monitor = body, controller, monitor
+        self.dt = case.dt
+        _, self.open_loop, rate = controller_settings(controller)
+        self.steps_per_tick = 1 if rate <= 0 else max(1, int(round(1.0 / (rate * case.dt))))
+        self.act = Actuation.for_body(body)
+        self.obs = Observation()
+        self.supports = SEGMENTS in body.capabilities
+        self.step_index = 0
+
+    def start(self) -> None:
+        """The actuation at t = 0 (a body's energy at the first sample uses it)."""
+        if self.open_loop:
+            self.controller.fill(0.0, self.dt, 1, self.act)
+            self.body.advance(0.0, 0, self.act)
+
+    def advance(self, t0: float, n: int) -> tuple[int, int]:
+        body, ctrl, act, dt = self.body, self.controller, self.act, self.dt
+        if self.open_loop:
+            ctrl.fill(t0, dt, n + 1, act)
+            k, code = body.advance(t0, n, act)
+            self.step_index += k
+            return k, code
+        k = 0
+        while k < n:
+            t = t0 + k * dt
+            if self.step_index % self.steps_per_tick == 0:
+                body.sense(self.obs, t)
+                ctrl.step(self.obs, t, act)
+                if self.supports:
+                    body.apply_support(act)
+                if self.monitor is not None:
+                    self.monitor.after_control(self.obs)
+            m = min(n - k, self.steps_per_tick - self.step_index % self.steps_per_tick)
+            d, code = body.advance(t, m, act)
+            k += d
+            self.step_index += d
+            if code != 0:
+                return k, code
+        return n, 0
+
+
+def compile_controller(body, controller, open_loop: bool) -> None:
+    """JIT-compile (or load) a controller's kernels: one step of a throw-away copy on a scratch
+    actuation, so neither the controller's state nor the body's changes."""
+    probe = copy.deepcopy(controller)
+    act = Actuation.for_body(body)
+    if open_loop:
+        probe.fill(0.0, 0.0, 1, act)
+    else:
+        obs = Observation()
+        body.sense(obs, 0.0)
+        probe.step(obs, 0.0, act)
+
+
+class Creature:
+    """A body composed with its controller (``compose``), stepped like one body.
+
+    ``advance(t0, n) -> (steps done, status)`` runs the controller and the body together
+    (``Stepper``); ``scene()`` draws the legs too; every other attribute is the body's.
+    ``compile()`` compiles both and sets the actuation of t = 0.
+    """
+
+    def __init__(self, case: Case, controller=None):
+        self.case = case
+        self.own_controller = controller is None
+        self.body, self.controller = compose(case, controller)
+        requires, self.open_loop, _ = controller_settings(self.controller)
+        legged = LEGS in requires and SEGMENTS in requires
+        self.monitor = LeggedMonitor(case, self.body, self.controller) if legged else None
+        self.view = LeggedView(self.body, self.controller) if legged else self.body
+        self.stepper = Stepper(case, self.body, self.controller, self.monitor)
+
+    def __getattr__(self, name):
+        return getattr(self.body, name)
+
+    def compile(self) -> None:
+        self.body.compile()
+        if self.own_controller:
+            compile_controller(self.body, self.controller, self.open_loop)
+        self.stepper.start()
+
+    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+        return self.stepper.advance(t0, n_steps)
+
+    def scene(self):
+        return self.view.scene()
 
 
 def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False,
-             on_sample: Callable[[float, Any, Any], None] | None = None) -> RunResult:
+             on_sample: Callable[[float, Any, Any], None] | None = None, controller=None) -> RunResult:
     """Simulate ``case`` and return its status, metrics and timings.
 
+    ``controller``: a controller object (``core.protocols.Controller``: ``reset`` and
+    ``step(observation, t, actuation)``, optional ``requires``, ``open_loop``, ``rate_hz``) to
+    drive the body instead of the gait's own.
     ``progress`` is called with the fraction done after each chunk.
     ``on_sample(t [s], body, water)`` is called at every observation sample, t = 0
     included, after the sample is recorded (e.g. ``report.animate.FrameRecorder``);
@@ -78,18 +209,19 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
     timings = {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
                "compile_s": float("nan"), "wall_s": float("nan")}
     try:
-        registry.load_all()
-        body = registry.BODIES[case.body.name].factory(case)
+        creature = Creature(case, controller)
+        body, monitor, stepper = creature.body, creature.monitor, creature.stepper
+        view = creature.view  # what drawings and the water see: the body with its legs
         c0 = time.perf_counter()
-        body.compile()
+        creature.compile()
         timings["compile_s"] = time.perf_counter() - c0
         recorder = Recorder(keep_nodes=keep_nodes)
         recorder.add(body.observe(0.0, keep_nodes))
         water = WaterCoupling(case.scenario) if has_water(case.scenario) else None
         if water is not None:
-            water.start(body)
+            water.start(view)
         if on_sample is not None:
-            on_sample(0.0, body, water)
+            on_sample(0.0, view, water)
         total = case.steps
         chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
         done = 0
@@ -99,7 +231,7 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         while done < total:
             n = min(chunk, total - done)
             s0 = time.perf_counter()
-            k, code = body.advance(done * case.dt, n)
+            k, code = stepper.advance(done * case.dt, n)
             sim_wall += time.perf_counter() - s0
             done += k
             t = done * case.dt
@@ -109,10 +241,10 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
             recorder.add(body.observe(t, keep_nodes))
             if water is not None:
                 w0 = time.perf_counter()
-                water.advance(body, t, k * case.dt)
+                water.advance(view, t, k * case.dt)
                 water_wall += time.perf_counter() - w0
             if on_sample is not None:
-                on_sample(t, body, water)
+                on_sample(t, view, water)
             if progress is not None:
                 progress(done / total)
         series = recorder.series()
@@ -128,20 +260,19 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))
         metrics.update(series_behaviour_metrics(series, case))  # a legged body's own figures replace these
-        if case.creature.legs_per_segment:
+        if monitor is not None:
             # these refer to a muscle wave's period and speed; a legged gait has its own stride metrics
             for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
                       "cycles_measured"):
                 metrics[k] = float("nan")
         metrics.update(body.extra_metrics())
+        extra = {}
+        if monitor is not None:
+            metrics.update(monitor.metrics())
+            extra.update(monitor.extra())
         if water is not None:
             metrics.update(water.metrics())
             timings["water_s"] = water_wall
-        extra = {}
-        if hasattr(body, "leg_timeline"):
-            extra["leg_timeline"] = body.leg_timeline()
-            extra["labels"] = body.labels_dict()
-            extra["brain_timeline"] = body.controller.brain_timeline()
         timings["steps"] = done
         timings["steps_per_s"] = done / sim_wall if sim_wall > 0 else float("nan")
         timings["realtime_factor"] = done * case.dt / sim_wall if sim_wall > 0 else float("nan")

@@ -34,13 +34,13 @@ def snake_body(settle_steps: int = SNAKE_SETTLE_STEPS):
 
     Returns (case, body, t) with t [s] the time reached.
     """
-    from ..bodies.massspring.body import BodyMassSpring
     from ..core.config import resolve_case
+    from .runner import Creature
 
     case = resolve_case("snake", "massspring", "flat")
-    body = BodyMassSpring(case)
+    body = Creature(case)
     body.compile()
-    done, status = body.advance(0.0, settle_steps)
+    done, status = advance_in_chunks(body, 0.0, settle_steps)
     if status != 0:
         raise RuntimeError(f"snake settle stopped after {done} steps: {body.status_text(status)}")
     return case, body, settle_steps * case.dt
@@ -76,12 +76,11 @@ def fem_chain(resolution: int = 3, unit: str = "nodes"):
 
 def fem_worm_body():
     """The FEM worm (``worm`` / ``fem`` / ``flat``, rectilinear muscle wave), compiled, at t = 0."""
-    from ..core import registry
     from ..core.config import resolve_case
+    from .runner import Creature
 
-    registry.load_all()
     case = resolve_case("worm", "fem", "flat")
-    body = registry.BODIES["fem"].factory(case)
+    body = Creature(case)
     body.compile()
     return case, body
 
@@ -118,12 +117,11 @@ CENTIPEDE_WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has
 
 def walking_centipede(segments: int = 18, body: str = "hybrid", walk_in_steps: int = CENTIPEDE_WALK_IN_STEPS):
     """A centipede on the ``walk`` scenario, compiled and walked in; returns (case, body)."""
-    from ..core import registry
     from ..core.config import resolve_case
+    from .runner import Creature
 
-    registry.load_all()
     case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
-    b = registry.BODIES[body].factory(case)
+    b = Creature(case)
     b.compile()
     done, status = b.advance(0.0, walk_in_steps)
     if status != 0:
@@ -175,6 +173,20 @@ def _check(name: str, n: int, done: int, status: int) -> None:
         raise RuntimeError(f"throughput suite entry {name!r}: {done} of {n} steps, status {status}")
 
 
+def advance_in_chunks(creature, t0: float, n: int) -> tuple[int, int]:
+    """Advance a ``runner.Creature`` n steps in the runner's chunks (one per observation sample), as a
+    run does: an open-loop controller fills one chunk's actuation, the body's kernel runs it."""
+    case = creature.case
+    chunk = max(1, int(round(1.0 / (case.record.sample_hz * case.dt))))
+    done = 0
+    while done < n:
+        k, status = creature.advance(t0 + done * case.dt, min(chunk, n - done))
+        done += k
+        if status != 0:
+            return done, status
+    return done, 0
+
+
 def setup_massspring_snake(steps: int = 10000) -> tuple[Step, int]:
     """Miller's 50-segment snake step loop, restarted from the settled gait at every call."""
     _case, body, t0 = snake_body()
@@ -183,7 +195,7 @@ def setup_massspring_snake(steps: int = 10000) -> tuple[Step, int]:
     def step(n: int) -> None:
         for dst, src in zip((body.x, body.v, body.acc), start):
             dst[...] = src
-        done, status = body.advance(t0, n)
+        done, status = advance_in_chunks(body, t0, n)
         _check("massspring-snake", n, done, status)
 
     return step, steps
@@ -217,7 +229,7 @@ def setup_fem_worm(steps: int = 3000) -> tuple[Step, int]:
     def step(n: int) -> None:
         for dst, src in zip(fields, start):
             dst[...] = src
-        done, status = body.advance(0.0, n)
+        done, status = advance_in_chunks(body, 0.0, n)
         _check("fem-worm", n, done, status)
 
     return step, steps

@@ -607,3 +607,18 @@ def gait_metrics(t, states, tips=None, com=None, body_length: float = math.nan,
         metrics["foot_slip_mean_m"] = foot_slip_mean(t, states, tips, warmup_s)
     metrics["walking_cycle_leg_fraction"] = walking_cycle_leg_fraction(t[i0:], states[i0:], last_fraction=1.0)
     return metrics, labels
+
+
+def body_undulation(centers: np.ndarray) -> float:
+    """Mean half-width [m] of the segment centres' sideways spread about the head-tail line.
+
+    centers: (T, n_seg, 3) [m].  At each sample, the horizontal distance of every
+    centre from the line through the head and tail centres (signed, to the
+    right); half of max - min, averaged over the samples.
+    """
+    a = centers[:, 0, [0, 2]]
+    b = centers[:, -1, [0, 2]]
+    d = a - b
+    n = np.stack([-d[:, 1], d[:, 0]], axis=1) / np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-12)
+    off = np.einsum("tij,tj->ti", centers[:, :, [0, 2]] - b[:, None, :], n)
+    return float(np.mean(0.5 * (off.max(axis=1) - off.min(axis=1))))

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from ..harness.recorder import Series
+from ..core.series import Series
 
 UP = np.array([0.0, 1.0, 0.0])
 

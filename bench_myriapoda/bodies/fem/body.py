@@ -26,15 +26,14 @@ from functools import cached_property
 
 import numpy as np
 
-from ...controllers.muscle_waves import wave_table
-from ...core.registry import BodySpec, register_body
+from ...core.protocols import MUSCLES, Actuation, Observation
 from ...core.schema import rng
 from ...world.terrain import terrain_from_scenario
 from .. import step_status as S
-from ..friction_kernels import friction_params
-from ..observation import Observation
+from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..placement import place_points
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
+from ..segment_frames import best_fit_frames, csr_rest_offsets, segments_touching
 from . import body_kernels as BK
 from . import kernels as FK
 from .mesh import chain_grid, signed_volumes, tetrahedralize_surface
@@ -123,6 +122,7 @@ class BodyFEM:
     """A segmented creature as one connected tetrahedral mesh, lying along +x (head first)."""
 
     name = "fem"
+    capabilities = frozenset({MUSCLES})
 
     def __init__(self, case):
         cre = case.creature
@@ -145,31 +145,31 @@ class BodyFEM:
         cen = nodes[tets].mean(axis=1)
         self.tet_y = np.ascontiguousarray((cen[:, 1] - 0.5 * h) / (0.5 * h))
         self.tet_z = np.ascontiguousarray(cen[:, 2] / (0.5 * w))
-        self.s_seg = (np.arange(n_seg) + 0.5) * L
+        self.n_segments = self.n_muscle_segments = n_seg
+        self.muscle_s = (np.arange(n_seg) + 0.5) * L   # segment centres' rest arc length from the head [m]
+        self.body_length_m = cre.body_length_m
         # each node takes the spine of the segment it belongs to (end-face nodes: the anterior one);
         # segment centres average the nodes of each segment's tets
         self.node_seg = np.clip(np.floor(-nodes[:, 0] / L + 1e-9).astype(np.int64), 0, n_seg - 1)
         members = [np.unique(tets[tet_seg == i]) for i in range(n_seg)]
         self.seg_ptr = np.concatenate([[0], np.cumsum([len(m) for m in members])]).astype(np.int64)
         self.seg_nodes = np.concatenate(members).astype(np.int64)
+        self._seg_rest = csr_rest_offsets(nodes, self.seg_ptr, self.seg_nodes)
         # the end faces (a smooth surface has no flat end: the nodes within 2 % of a body length)
         end_band = 1e-9 if cfg.mesh == "grid" else 0.02 * n_seg * L
         self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
         self.tail_nodes = np.flatnonzero(nodes[:, 0] <= nodes[:, 0].min() + end_band)
 
-        self.waves = wave_table(case.gait, cre.body_length_m, passive=case.scenario.passive)
         self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(BK.N_PHYS)
         phys[BK.GRAVITY] = case.scenario.gravity_m_s2
         phys[BK.DT] = case.dt
-        phys[BK.RAMP_S] = case.gait.ramp_s
         phys[BK.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
         phys[BK.R_N] = case.collision.r_n
         phys[BK.R_T] = case.collision.r_t
         phys[BK.MAX_SPEED] = case.stability.max_speed_m_s
         phys[BK.MAX_PEN] = case.stability.max_penetration_m
-        phys[BK.MUSCLES] = 1.0 if np.any(self.waves[:, 0] != 0.0) else 0.0
         self.phys = phys
 
         held = np.zeros(len(nodes), dtype=bool)
@@ -192,24 +192,39 @@ class BodyFEM:
         self._inverted_max = 0
         self._max_strain = 0.0
 
+    @cached_property
+    def _rest_actuation(self) -> Actuation:
+        return Actuation.for_body(self)
+
     # ------------------------------------------------------------------ stepping
-    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+    def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
+        """``n_steps`` steps in one kernel call reading ``act.muscle`` (row k at step k); return
+        (steps done, status code).  t0 [s] is not needed: the actuation carries the time.
+        Without ``act`` the muscles are at rest (a passive body)."""
+        if act is None:
+            act = self._rest_actuation
         s, so = self.system, self.solver
+        self.phys[BK.MUSCLES] = 1.0 if act.muscles_on else 0.0
         return BK.advance(self.x, self.v, s.mass, s.tets, s.Dm_inv, s.vol, s.mu, s.lam, self.tet_seg, self.tet_y,
-                          self.tet_z, self.s_seg, self.waves, so.perm, so.sky_first, so.sky_ptr, so.sky_L,
+                          self.tet_z, act.muscle, so.perm, so.sky_first, so.sky_ptr, so.sky_L,
                           so.fp_ptr, so.fp_col, so.fp_val, self.node_seg, self.seg_ptr, self.seg_nodes,
-                          self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, t0, n_steps,
+                          self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
                           s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, self._force, self._b_work,
                           self._act, self._centers, self._spine, self.acc)
 
     def compile(self) -> None:
         x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
         q = self.system._q_ws.copy()
-        self.advance(0.0, 1)
+        Dm, coef = self.system.Dm_inv_eff.copy(), self.system.coef.copy()
+        act = Actuation.for_body(self)
+        act.muscles_on = True  # compile the active-strain path too
+        self.advance(0.0, 1, act)
         self.energy(0.0)
         self._sample_invariants()
+        self.sense(Observation(), 0.0)
         self.x[:], self.v[:], self.acc[:] = x, v, acc
         self.system._q_ws[:] = q
+        self.system.Dm_inv_eff[:], self.system.coef[:] = Dm, coef
         self._min_J, self._inverted_max, self._max_strain = math.inf, 0, 0.0
 
     @staticmethod
@@ -224,14 +239,31 @@ class BodyFEM:
         self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
         self._max_strain = max(self._max_strain, float(np.abs(self._sigma - 1.0).max()))
 
+    def sense(self, obs: Observation, t: float) -> None:
+        """Control fields of ``obs``: each segment's best-fit frame of its nodes (``segment_frames``)."""
+        n = self.n_segments
+        if obs.seg_pos is None or obs.seg_pos.shape[0] != n:
+            obs.seg_pos, obs.seg_rot, obs.seg_vel = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3))
+            cre = self.case.creature
+            obs.seg_half = np.tile(0.5 * np.array([cre.segment_length_m, cre.height_m, cre.width_m]), (n, 1))
+            self._A = np.zeros((3, 3))
+        obs.t = t
+        best_fit_frames(self.x, self.v, self.seg_ptr, self.seg_nodes, self._seg_rest, obs.seg_pos, obs.seg_rot,
+                        obs.seg_vel, self._A)
+
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         self._sample_invariants()
         BK.segment_spines(self.x, self.seg_ptr, self.seg_nodes, self._centers, self._spine)
         m = self.system.mass
         com = (m[:, None] * self.x).sum(axis=0) / m.sum()
-        return Observation(t=t, segment_centers=self._centers.copy(), com=com,
-                           head=self.x[self.head_nodes].mean(axis=0), tail=self.x[self.tail_nodes].mean(axis=0),
-                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+        obs = Observation(t=t, segment_centers=self._centers.copy(), com=com,
+                          head=self.x[self.head_nodes].mean(axis=0), tail=self.x[self.tail_nodes].mean(axis=0),
+                          energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+        self.sense(obs, t)
+        obs.seg_contact = np.zeros(self.n_segments, dtype=bool)
+        segments_touching(self.x, self.seg_ptr, self.seg_nodes, self.terr_kind, self.terr,
+                          self.fric[CONTACT_DISTANCE], obs.seg_contact)
+        return obs
 
     @cached_property
     def _surface(self) -> tuple[np.ndarray, np.ndarray]:
@@ -264,21 +296,10 @@ class BodyFEM:
 
 
 def make_fem(case):
-    """The FEM body; a creature with legs gets one mesh of stiff segment blocks and soft links under the
-    leg controller (``fem.myriapod``, ``bodies.myriapod``)."""
+    """The FEM body; a creature with legs is built as one mesh of stiff segment blocks and soft links
+    (``fem.myriapod``): legs attach to rigid segments (the creature's morphology; the leg controller
+    itself is composed by the runner)."""
     if case.creature.legs_per_segment:
-        from ..myriapod import BodyMyriapod
         from .myriapod import BodyFEMChain
-        body = BodyFEMChain(case)
-        return BodyMyriapod(case, body, body.pitch)
+        return BodyFEMChain(case)
     return BodyFEM(case)
-
-
-register_body(BodySpec(
-    name="fem",
-    description="Fang et al. 2013 App. A: every segment a fixed-corotational tetrahedral FEM block; muscles as active strain",
-    config_cls=FEMConfig,
-    factory=make_fem,
-    capabilities=frozenset({"muscles", "legs", "friction:miller", "friction:coulomb", "friction:stick"}),
-    default_dt=default_dt,
-))

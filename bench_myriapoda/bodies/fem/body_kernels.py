@@ -2,7 +2,8 @@
 
 One step (paper App. A with the suite's muscles and ground contact):
 
-1. muscle activation of every segment from the wave table (``segment_activation``);
+1. the step's muscle activation: row k of the actuation buffer written by the
+   controller (``core.protocols.Actuation``; the kernel knows no gait);
 2. active strain (``active_coefficients``): each tet's rest shape is scaled by
    A = diag(l_axial, l_c, l_c) in the body's rest frame, with l_axial the
    fibre stretch 1 + axial + lateral z_s + dorsal y_s at the tet's centroid
@@ -21,7 +22,6 @@ import math
 
 from numba import njit
 
-from ...controllers.muscle_waves import segment_activation
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
@@ -34,9 +34,12 @@ MIN_STRETCH = 0.1  # as in the lattice: a fibre never shortens below 10 % of its
 
 
 @njit(cache=True, error_model="numpy")
-def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, volume_conserving, Dm_inv_eff, coef):
+def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, gain, volume_conserving, Dm_inv_eff, coef):
     """Overwrite Dm_inv_eff (n_tets, 3, 3) [1/m] and the blocked ``coef`` for activation ``act`` (n_seg, 3).
 
+    gain [-] scales every strain (1 for a body whose segments are all muscle; the hybrid body's
+    links, a fraction of the body's length, take the strain of the whole pitch).  A tet with
+    tet_seg < 0 is passive (rest shape kept).
     F_e = F A^-1 with A diagonal in the rest frame, so Dm_inv_eff = Dm^-1 A^-1
     scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu and lambda
     (layout of ``fem.kernels.pack_tet_coefficients``).  tet_y, tet_z: (n_tets,)
@@ -44,8 +47,10 @@ def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, volume
     """
     for e in range(Dm_inv.shape[0]):
         i = tet_seg[e]
-        axial = max(1.0 + act[i, 0], MIN_STRETCH)
-        la = max(1.0 + act[i, 0] + act[i, 1] * tet_z[e] + act[i, 2] * tet_y[e], MIN_STRETCH)
+        if i < 0:
+            continue
+        axial = max(1.0 + gain * act[i, 0], MIN_STRETCH)
+        la = max(1.0 + gain * (act[i, 0] + act[i, 1] * tet_z[e] + act[i, 2] * tet_y[e]), MIN_STRETCH)
         lc = 1.0 / math.sqrt(axial) if volume_conserving else 1.0
         inv = (1.0 / la, 1.0 / lc, 1.0 / lc)
         b = e // LANES
@@ -87,12 +92,14 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, s_seg, waves,
+def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_buf,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-            node_seg, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, t0, n_steps,
+            node_seg, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
             Dm_inv_eff, coef, q_ws, F_work, H_work, force, b_work, act, centers, spine, acc):
-    """Advance the FEM creature ``n_steps`` steps from time t0 [s]; return (steps done, status).
+    """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
 
+    act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k (rows past the last repeat
+    it); read only when phys[MUSCLES] is set (the actuation drives muscles at all).
     x, v: (n_nodes, 3) [m], [m/s], updated in place; mass (n_nodes,) [kg];
     tets, Dm_inv (rest), vol, mu, lam: the mesh; tet_seg, tet_y, tet_z: each
     tet's segment and section position; perm, sky_*, fp_*: the factorization of
@@ -110,11 +117,12 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, s_seg
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     contact_dist = fric[CONTACT_DISTANCE]
     n_free = perm.shape[0]
+    n_rows = act_buf.shape[0]
     for step in range(n_steps):
-        t = t0 + step * dt
         if muscles:
-            segment_activation(waves, phys[RAMP_S], s_seg, t, act)
-            active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, volume, Dm_inv_eff, coef)
+            row = act_buf[min(step, n_rows - 1)]
+            act[:, :] = row
+            active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, row, 1.0, volume, Dm_inv_eff, coef)
         force[:, :] = 0.0
         elastic_forces(x, tets, Dm_inv_eff, coef, q_ws, F_work, H_work, force)
         for k in range(n_free):

@@ -53,8 +53,9 @@ from ...world.terrain import terrain_from_scenario
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
-from ..observation import Observation
+from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import place_points
+from ..segment_chain import SupportedSegments
 from ..scene import FEM_BLOCK_SURFACE, FEM_SURFACE, Scene, compact, tet_boundary_faces
 from . import kernels as FK
 from .kernels import elastic_forces, semi_implicit_velocity
@@ -209,13 +210,16 @@ def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
     return n_steps, S.OK
 
 
-class BodyFEMChain:
+class BodyFEMChain(SupportedSegments):
     """The centipede as one FEM mesh (module docstring), with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] (the ``FEMSystem``'s arrays).
     """
 
     name = "fem"
+    capabilities = frozenset({SEGMENTS, LEGS})
+    n_muscle_segments = 0
+    muscle_s = np.zeros(0)
 
     def __init__(self, case):
         cre = case.creature
@@ -227,6 +231,10 @@ class BodyFEMChain:
         n, lr, w, h = cre.segments, cre.segment_length_m, cre.width_m, cre.height_m
         ll = cfg.link_length_m if cfg.link_length_m > 0 else 0.5 * lr
         self.n_blocks, self.block_length, self.link_length = n, lr, ll
+        self.n_segments = n
+        self.segment_pitch_m = lr + ll
+        self.segment_half_extents = np.tile(0.5 * np.array([lr, h, w]), (n, 1))
+        self.dt = float(case.dt)
         self.pitch = lr + ll
         cells = segment_cells(cfg.resolution, cfg.resolution_unit)
         nodes, tets, tet_block, node_block = chain_mesh(n, lr, ll, h, w, cells, cfg.tets_per_cell)
@@ -288,8 +296,9 @@ class BodyFEMChain:
         self._inverted_max = 0
 
     # ------------------------------------------------------------------ stepping
-    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
-        """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused."""
+    def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
+        """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
+        have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
         f, s = self.fem, self.solver
         return advance_chain(self.x, self.v, f.mass, f.tets, f.Dm_inv_eff, f.coef, f._q_ws, f._F_work, f._H_work,
                              s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
@@ -308,7 +317,9 @@ class BodyFEMChain:
     def compile(self) -> None:
         saved = self._state()
         self.advance(0.0, 1)
+        self.observe(0.0)
         self._restore(saved)
+        self._min_J, self._inverted_max = math.inf, 0
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -323,6 +334,12 @@ class BodyFEMChain:
         c, R = np.empty((self.n_blocks, 3)), np.empty((self.n_blocks, 3, 3))
         block_poses(self.x, self.block_nodes, self.rest_offsets, c, self._A, R)
         return c, R
+
+    def segment_velocities(self) -> np.ndarray:
+        """(n_blocks, 3) [m/s]: the mean velocity of each block's nodes."""
+        out = np.empty((self.n_blocks, 3))
+        block_centroids(self.v, self.block_nodes, out)
+        return out
 
     def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
         """Supported blocks (``kinematic`` (n,) bool) are carried to (c_T (n, 3) [m], R_T (n, 3, 3)) during
@@ -380,8 +397,9 @@ class BodyFEMChain:
         FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
         self._min_J = min(self._min_J, float(self._J.min()))
         self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
-        return Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
-                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+        obs = Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
+                          energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
+        return self._observe_segments(obs, t)
 
     def energy(self, t: float = 0.0) -> tuple[float, float, float]:
         """(kinetic, elastic (eq. 6), gravitational from y = 0) [J]."""

@@ -51,6 +51,14 @@ Suspended scenarios (Fig. 10): the body hangs straight down from the head
 (body axis along -y) and the head box is kinematic, held fixed in place; the
 forces the first link exerts on it are taken up by the support.
 
+Muscles (beyond the paper; its Sec. 7 names "actively contractile deformable segments" as the
+next step): a legless creature's muscle waves drive the links as active strain, exactly as the
+``fem`` body drives its segments (``fem.body_kernels.active_coefficients``: each link tet's rest
+shape is scaled along the body axis by the fibre stretch at its centroid).  The links are the
+muscle segments (``muscle_s``: their centres' rest arc lengths); since a link of length l is
+only part of the pitch P = rigid + link, it takes the strain of the whole pitch (gain P / l), so
+a command bends or shortens the body by about as much per unit length as on the other bodies.
+
 Observation: segment centres in body order (rigid 0, link 0, rigid 1, ...),
 box centres and link node means; head and tail are the front face centre of
 rigid 0 and the back face centre of the last rigid; energies and momenta count
@@ -66,7 +74,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ...core.errors import InputError
-from ...core.registry import BodySpec, register_body
+from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...world.terrain import terrain_from_scenario
 from .. import rigid_kernels as rk
@@ -75,11 +83,10 @@ from ..fem.mesh import RESOLUTION_UNITS, box_grid, segment_cells
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import friction_params
 from ..kinematic_targets import drive_to_targets
-from ..observation import Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
-from ..segment_chain import CouplingScratch, SegmentChainLayout
+from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments
 from . import kernels as K
 
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
@@ -114,6 +121,7 @@ class HybridConfig:
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tets per hexahedral cell: 6 (Kuhn) or 5")
     rigid_restitution: float = rng(0.0, ge=0.0, le=1.0, doc="restitution of box-terrain impacts")
     rigid_friction_mu: float = rng(DERIVED, ge=0.0, doc="Coulomb coefficient of the boxes; default friction.mu_transverse")
+    dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
 
     def __post_init__(self):
         if self.resolution_unit == "nodes" and self.resolution < 3:
@@ -122,8 +130,8 @@ class HybridConfig:
 
 
 def default_dt(cfg: HybridConfig) -> float:
-    """The paper's time step, 1/3000 s (App. A)."""
-    return DT_PAPER
+    """``dt_s``: the paper's time step, 1/3000 s (App. A), unless a creature file sets its own."""
+    return cfg.dt_s
 
 
 def hybrid_layout(cfg: HybridConfig, creature) -> SegmentChainLayout:
@@ -193,7 +201,7 @@ def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
                       np.stack(link_nodes), np.concatenate(attached), np.concatenate(att_body), centres)
 
 
-class BodyHybrid:
+class BodyHybrid(SupportedSegments):
     """Rigid boxes (``self.rigid``) joined by FEM links (``self.fem``) on a terrain.
 
     State: ``self.x``, ``self.v`` (n_nodes, 3) [m], [m/s] are the FEM's arrays
@@ -209,6 +217,8 @@ class BodyHybrid:
         cfg: HybridConfig = case.body
         sc = case.scenario
         self.case = case
+        # links take muscle strains; the boxes can be carried by legs (when the creature has them)
+        self.capabilities = frozenset({MUSCLES, SEGMENTS} | ({LEGS} if cre.legs_per_segment else set()))
         self.layout = lay = hybrid_layout(cfg, cre)
         mesh = build_mesh(lay, cfg.tets_per_cell)
         self.mesh = mesh
@@ -221,6 +231,17 @@ class BodyHybrid:
         fem.set_fixed(mesh.attached)
         self.solver = fem.solver(self.dt)
         self.fixed = self.solver.fixed            # sorted attached node ids
+        # ---- active links: the muscle segments are the links (module docstring, "Muscles")
+        n_links = lay.n_rigid - 1
+        self.n_segments = lay.n_rigid
+        self.segment_pitch_m = lay.pitch
+        self.n_muscle_segments = n_links
+        self.muscle_s = np.arange(n_links) * lay.pitch + lay.rigid_length + 0.5 * lay.link_length
+        cen = mesh.nodes[mesh.tets].mean(axis=1)
+        self._muscle_static = (fem.Dm_inv.copy(), fem.vol, fem.mu, fem.lam,
+                               np.ascontiguousarray(mesh.node_link[mesh.tets[:, 0]]),
+                               np.ascontiguousarray(cen[:, 1] / (0.5 * lay.link_height)),
+                               np.ascontiguousarray(cen[:, 2] / (0.5 * lay.link_width)))
         self.free = np.sort(fem.free_nodes)
         self.att_body = np.ascontiguousarray(mesh.att_body[self.fixed])
         self.node_link = mesh.node_link
@@ -237,6 +258,7 @@ class BodyHybrid:
         else:
             m_rigid = cfg.rigid_density_kg_m3 * box_volume
         self.rigid = RigidBoxes(np.tile(half, (lay.n_rigid, 1)), np.full(lay.n_rigid, m_rigid))
+        self.segment_half_extents = np.tile(half, (lay.n_rigid, 1))
         self.total_mass = m_rigid * lay.n_rigid + free_mass
 
         # ---- world placement, terrain, attached nodes on the boxes
@@ -269,6 +291,9 @@ class BodyHybrid:
         phys[K.POS_ITERATIONS] = contact.position_iterations
         phys[K.POS_BETA] = contact.position_beta
         phys[K.SLOP] = contact.slop
+        # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
+        phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
+        phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
         self.phys = phys
         n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
@@ -320,13 +345,21 @@ class BodyHybrid:
                                self.rigid.v, self.rigid.w, self.scratch.Rb, self.x, self.v, x_pred, self.scratch.residual)
 
     # ------------------------------------------------------------------ stepping
-    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
+    def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code).
 
-        t0 [s] is unused: the body has no time-dependent actuation (passive gait).
+        ``act.muscle`` (rows, n_links, 3) drives the links as active strain (row k at step k) when
+        ``act.muscles_on``; supported segments are moved by ``apply_support``.  t0 [s] is unused.
         """
         fem, s, rb = self.fem, self.solver, self.rigid
-        return K.advance(fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, fem.mass, fem._q_ws,
+        if act is None or not act.muscles_on:
+            self.phys[K.MUSCLES_ON] = 0.0
+            buf = self._no_muscle
+        else:
+            self.phys[K.MUSCLES_ON] = 1.0
+            buf = act.muscle
+        return K.advance(fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, self._muscle_static + (buf,),
+                         fem.mass, fem._q_ws,
                          fem._F_work, fem._H_work,
                          s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                          s.fixed, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self.att_body, self.att_local,
@@ -337,25 +370,35 @@ class BodyHybrid:
                          self.scratch.spine, rb.force, rb.torque, self.scratch.Rb, self.scratch.R, self.scratch.Iw, self.scratch.corner_of,
                          self.scratch.lin, self.scratch.ang, self.scratch.resp, self.scratch.kn, self.scratch.kt, self.scratch.target, self.scratch.lam, self.acc)
 
-    def _state(self):
+    @cached_property
+    def _no_muscle(self) -> np.ndarray:
+        return np.zeros((1, self.n_muscle_segments, 3))
+
+    def _state_arrays(self):
         rb = self.rigid
-        return [a.copy() for a in (self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache,
-                                   self.acc)]
+        return (self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc,
+                self.fem.Dm_inv_eff, self.fem.coef)
+
+    def _state(self):
+        return [a.copy() for a in self._state_arrays()]
 
     def _restore(self, saved) -> None:
-        rb = self.rigid
-        for dst, src in zip((self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, self.acc),
-                            saved):
+        for dst, src in zip(self._state_arrays(), saved):
             dst[...] = src
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""
         saved = self._state()
-        self.advance(0.0, 1)
+        act = Actuation.for_body(self)
+        act.muscles_on = True  # compile the active-link path too
+        self.advance(0.0, 1, act)
+        self.observe(0.0)
+        self.set_support(np.zeros(self.n_segments, bool), *self.segment_poses(), self.dt)
         self.energy(0.0)
         self.momenta()
         FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
         self._restore(saved)
+        self._reset_samples()
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -397,6 +440,10 @@ class BodyHybrid:
         """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the rigid segments."""
         return self.rigid.c, self.rigid.rotation_matrices()
 
+    def segment_velocities(self) -> np.ndarray:
+        """(n_rigid, 3) [m/s] velocities of the boxes' centres."""
+        return self.rigid.v
+
     def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
         """Supported segments (``kinematic``) are carried to (c_T, R_T) this step (paper Sec. 4.1);
         the others follow the coupled dynamics."""
@@ -435,8 +482,9 @@ class BodyHybrid:
         com = self.centre_of_mass()
         self._sample_tets()
         nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
-        return Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
-                           energy=np.array(self.energy(t)), nodes=nodes)
+        obs = Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
+                          energy=np.array(self.energy(t)), nodes=nodes)
+        return self._observe_segments(obs, t)
 
     def energy(self, t: float = 0.0) -> tuple[float, float, float]:
         """(kinetic, elastic, gravitational) [J] of the boxes and free nodes; gravity from y = 0.
@@ -511,19 +559,5 @@ class BodyHybrid:
 
 
 def make_hybrid(case):
-    """The hybrid body; a creature with legs gets the leg controller on top (``bodies.myriapod``)."""
-    body = BodyHybrid(case)
-    if case.creature.legs_per_segment:
-        from ..myriapod import BodyMyriapod
-        return BodyMyriapod(case, body, body.layout.pitch)
-    return body
-
-
-register_body(BodySpec(
-    name="hybrid",
-    description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered coupling",
-    config_cls=HybridConfig,
-    factory=make_hybrid,
-    capabilities=frozenset({"legs", "friction:miller", "friction:coulomb", "friction:stick"}),
-    default_dt=default_dt,
-))
+    """The hybrid body, for every creature (legged or not: the runner composes the controller)."""
+    return BodyHybrid(case)

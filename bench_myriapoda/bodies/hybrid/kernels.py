@@ -60,11 +60,13 @@ from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
 from .. import step_status as S
+from ..fem.body_kernels import active_coefficients
 
 # Scalar parameter vector layout (``phys``, float64).
 (DT, R_N, R_T, MAX_SPEED, MAX_PEN, RIGID_MU, RIGID_RESTITUTION, BOUNCE_THRESHOLD,
- VEL_ITERATIONS, VEL_TOLERANCE, POS_ITERATIONS, POS_BETA, SLOP) = range(13)
-N_PHYS = 13
+ VEL_ITERATIONS, VEL_TOLERANCE, POS_ITERATIONS, POS_BETA, SLOP,
+ MUSCLES_ON, MUSCLE_GAIN, VOLUME) = range(16)
+N_PHYS = 16
 
 # Status codes and the shared statistics (contact fraction sum, steps, deepest
 # penetration) as every body's kernel; the hybrid's own statistics follow them.
@@ -210,7 +212,7 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
+def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
             c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
@@ -223,6 +225,11 @@ def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
     attached nodes: x, v (n_nodes, 3) [m], [m/s], UPDATED in place (attached
     rows are rewritten from the rigid bodies every step); tets, Dm_inv, coef,
     q_ws, F_work, H_work as in ``fem.kernels.elastic_forces`` (q_ws UPDATED);
+    muscle: the active links (paper Sec. 7's "actively contractile deformable segments"), a
+    tuple (Dm_inv_rest (n_tets, 3, 3), vol, mu, lam (n_tets,), tet_link, tet_y, tet_z (n_tets,),
+    act_buf (n_rows, n_links, 3)): when phys[MUSCLES_ON] is set, step k rescales the links' rest
+    shapes by row k of act_buf times phys[MUSCLE_GAIN] (``fem.body_kernels.active_coefficients``,
+    which OVERWRITES Dm_inv and coef);
     mass (n_nodes,) [kg] lumped; perm, sky_*, fp_* as in
     ``semi_implicit_velocity``; fixed (n_fixed,) attached node ids and pf_*
     the CSR of D's rows of those nodes [N s/m]; node_link (n_nodes,) link of
@@ -266,8 +273,14 @@ def advance(x, v, tets, Dm_inv, coef, mass, q_ws, F_work, H_work,
     contact_dist = fric[CONTACT_DISTANCE]
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     n_points = n_free + N_CORNERS * n_rigid
+    muscles_on = phys[MUSCLES_ON] != 0.0
+    act_buf = muscle[7]
+    n_rows = act_buf.shape[0]
     for step in range(n_steps):
         status = OK
+        if muscles_on:
+            active_coefficients(muscle[0], muscle[1], muscle[2], muscle[3], muscle[4], muscle[5], muscle[6],
+                                act_buf[min(step, n_rows - 1)], phys[MUSCLE_GAIN], phys[VOLUME] != 0.0, Dm_inv, coef)
         # ---------------- (1) FEM step, attached nodes prescribed at rigid state n
         f_work[:, :] = 0.0
         acc[ACC_SLOW_TETS] += elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)

@@ -15,15 +15,14 @@ from functools import cached_property
 
 import numpy as np
 
-from ...controllers.muscle_waves import wave_table
-from ...core.registry import BodySpec, register_body
+from ...core.protocols import MUSCLES, Actuation, Observation
 from ...core.schema import rng
 from ...world.terrain import terrain_from_scenario
-from ..friction_kernels import friction_params
-from ..observation import Observation
+from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
+from ..segment_frames import best_fit_frames, csr_rest_offsets, segments_touching
 from . import kernels as K
 from .lattice import build_lattice
 
@@ -87,6 +86,7 @@ class BodyMassSpring:
     """
 
     name = "massspring"
+    capabilities = frozenset({MUSCLES})
 
     def __init__(self, case):
         cre = case.creature
@@ -102,14 +102,19 @@ class BodyMassSpring:
         fps = cfg.frame_rate_hz
         self.stiffness = np.full(lat.n_springs, cfg.stiffness * fps * fps * m_node)
         self.damping = np.full(lat.n_springs, cfg.damping * fps * m_node)
-        self.s_seg = (np.arange(cre.segments) + 0.5) * cre.segment_length_m
-        self.waves = wave_table(case.gait, cre.body_length_m, passive=case.scenario.passive)
+        # muscle segments: one per lattice segment, at its centre's rest arc length from the head [m]
+        self.n_segments = self.n_muscle_segments = cre.segments
+        self.muscle_s = (np.arange(cre.segments) + 0.5) * cre.segment_length_m
+        self.body_length_m = cre.body_length_m
+        # segment i owns the 8 nodes of faces i and i + 1 (CSR for ``segment_frames``)
+        self._seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
+        self._seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
+        self._seg_rest = csr_rest_offsets(lat.rest_nodes, self._seg_ptr, self._seg_nodes)
         self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
         phys[K.GRAVITY] = case.scenario.gravity_m_s2
         phys[K.DT] = case.dt
-        phys[K.RAMP_S] = case.gait.ramp_s
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
         phys[K.R_N] = case.collision.r_n
         phys[K.R_T] = case.collision.r_t
@@ -128,35 +133,61 @@ class BodyMassSpring:
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
 
+    @cached_property
+    def _rest_actuation(self) -> Actuation:
+        return Actuation.for_body(self)
+
     # ------------------------------------------------------------------ stepping
-    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
-        """Run ``n_steps`` steps from time t0 [s] in one kernel call; return (steps done, status code)."""
+    def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
+        """Run ``n_steps`` steps in one kernel call reading ``act.muscle`` (row k at step k); return
+        (steps done, status code).  t0 [s] is not needed: the actuation carries the time.
+        Without ``act`` the muscles are at rest (a passive body)."""
+        if act is None:
+            act = self._rest_actuation
         lat = self.lattice
         return K.advance(self.x, self.v, self.inv_mass, lat.springs, self.stiffness, self.damping, lat.kind, lat.seg,
-                         lat.corner_a, lat.corner_b, lat.L0, lat.Lc, self.s_seg, self.waves, self.fric_model,
-                         self.fric, self.terr_kind, self.terr, self.phys, t0, n_steps,
+                         lat.corner_a, lat.corner_b, lat.L0, lat.Lc, act.muscle, self.fric_model,
+                         self.fric, self.terr_kind, self.terr, self.phys, n_steps,
                          self._force, self._act, self._rest, self._face_scale, self._stretch, self._spine,
                          self.acc)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""
-        x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
-        self.advance(0.0, 1)
+        x, v, acc, a = self.x.copy(), self.v.copy(), self.acc.copy(), self._act.copy()
+        self.advance(0.0, 1, Actuation.for_body(self))
         self.energy(0.0)
-        self.x[:], self.v[:], self.acc[:] = x, v, acc
+        self.sense(Observation(), 0.0)
+        self.x[:], self.v[:], self.acc[:], self._act[:] = x, v, acc, a
 
     @staticmethod
     def status_text(code: int) -> str:
         return S.STATUS_TEXT.get(code, f"status {code}")
 
     # ------------------------------------------------------------------ observation
+    def sense(self, obs: Observation, t: float) -> None:
+        """Control fields of ``obs``: each segment's best-fit frame of its 8 nodes (``segment_frames``)."""
+        n = self.n_segments
+        if obs.seg_pos is None or obs.seg_pos.shape[0] != n:
+            obs.seg_pos, obs.seg_rot, obs.seg_vel = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3))
+            cre = self.case.creature
+            obs.seg_half = np.tile(0.5 * np.array([cre.segment_length_m, cre.height_m, cre.width_m]), (n, 1))
+            self._A = np.zeros((3, 3))
+        obs.t = t
+        best_fit_frames(self.x, self.v, self._seg_ptr, self._seg_nodes, self._seg_rest, obs.seg_pos, obs.seg_rot,
+                        obs.seg_vel, self._A)
+
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         x = self.x
         faces = x.reshape(-1, 4, 3).mean(axis=1)
         seg = 0.5 * (faces[:-1] + faces[1:])
         com = (self.mass[:, None] * x).sum(axis=0) / self.mass.sum()
-        return Observation(t=t, segment_centers=seg, com=com, head=faces[0], tail=faces[-1],
-                           energy=np.array(self.energy(t)), nodes=x.copy() if with_nodes else None)
+        obs = Observation(t=t, segment_centers=seg, com=com, head=faces[0], tail=faces[-1],
+                          energy=np.array(self.energy(t)), nodes=x.copy() if with_nodes else None)
+        self.sense(obs, t)
+        obs.seg_contact = np.zeros(self.n_segments, dtype=bool)
+        segments_touching(x, self._seg_ptr, self._seg_nodes, self.terr_kind, self.terr, self.fric[CONTACT_DISTANCE],
+                          obs.seg_contact)
+        return obs
 
     @cached_property
     def _surface_faces(self) -> np.ndarray:
@@ -170,10 +201,9 @@ class BodyMassSpring:
                      springs=x[self.lattice.springs])  # (S, 2, 3); fancy indexing copies
 
     def energy(self, t: float) -> tuple[float, float, float]:
-        """(kinetic, elastic, gravitational) [J] with the rest lengths of time t."""
-        from ...controllers.muscle_waves import segment_activation
+        """(kinetic, elastic, gravitational) [J] with the rest lengths of the current actuation (the
+        row of the end time of the last ``advance``)."""
         lat = self.lattice
-        segment_activation(self.waves, self.phys[K.RAMP_S], self.s_seg, t, self._act)
         K.lattice_rest_lengths(self._act, self.phys[K.VOLUME] != 0.0, lat.kind, lat.seg, lat.corner_a,
                                lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._stretch, self._rest)
         return K.lattice_energy(self.x, self.v, self.mass, lat.springs, self.stiffness, self._rest,
@@ -191,21 +221,10 @@ class BodyMassSpring:
 
 
 def make_massspring(case):
-    """Miller's lattice; a creature with legs gets rigid boxes joined by spring-cube links under the
-    leg controller (``massspring.myriapod``, ``bodies.myriapod``)."""
+    """Miller's lattice; a creature with legs is built as rigid boxes joined by spring-cube links
+    (``massspring.myriapod``): legs attach to rigid segments (the creature's morphology; the leg
+    controller itself is composed by the runner)."""
     if case.creature.legs_per_segment:
-        from ..myriapod import BodyMyriapod
         from .myriapod import BodyRigidSpringChain
-        body = BodyRigidSpringChain(case)
-        return BodyMyriapod(case, body, body.layout.pitch)
+        return BodyRigidSpringChain(case)
     return BodyMassSpring(case)
-
-
-register_body(BodySpec(
-    name="massspring",
-    description="Miller 1988: cube lattice of point masses, edge and face-diagonal springs, directional friction",
-    config_cls=MassSpringConfig,
-    factory=make_massspring,
-    capabilities=frozenset({"muscles", "legs", "friction:miller", "friction:coulomb", "friction:stick"}),
-    default_dt=default_dt,
-))

@@ -2,7 +2,8 @@
 
 ``advance`` runs many time steps per call.  One step:
 
-1. muscle activation of every segment from the wave table (``segment_activation``);
+1. the step's muscle activation: row k of the actuation buffer written by the
+   controller (``core.protocols.Actuation``; the kernel knows no gait);
 2. spring rest lengths from the activation (``lattice_rest_lengths``);
 3. spring forces f = k (L - l) - D dl/dt along each spring (Miller Sec. 3), plus gravity;
 4. velocity update, then ground friction for masses within the contact
@@ -22,7 +23,6 @@ import math
 
 from numba import njit
 
-from ...controllers.muscle_waves import segment_activation
 from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE
@@ -139,13 +139,15 @@ def spine_vectors(x, n_faces, out):
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, Lc, s_seg, waves,
-            fric_model, fric, terr_kind, terr, phys, t0, n_steps,
+def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, Lc, act_buf,
+            fric_model, fric, terr_kind, terr, phys, n_steps,
             force, act, rest, face_scale, stretch, spine, acc):
-    """Advance the lattice ``n_steps`` steps from time t0 [s]; return (steps done, status).
+    """Advance the lattice ``n_steps`` steps; return (steps done, status).
 
-    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  ``force``,
-    ``act``, ``rest``, ``face_scale``, ``stretch``, ``spine`` are work arrays (overwritten).
+    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  act_buf (n_rows, n_seg, 3):
+    the muscle strains of step k in row k (rows past the last repeat it).  ``act`` (n_seg, 3)
+    is overwritten with row n_steps (the actuation at the end time, which ``energy`` uses), or
+    the last row.  ``force``, ``rest``, ``face_scale``, ``stretch``, ``spine`` are work arrays.
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
@@ -157,10 +159,11 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
     r_t = phys[R_T]
     euler = phys[INTEGRATOR] == EULER
     contact_dist = fric[CONTACT_DISTANCE]
+    n_rows = act_buf.shape[0]
+    act[:, :] = act_buf[min(n_steps, n_rows - 1)]
     for step in range(n_steps):
-        t = t0 + step * dt
-        segment_activation(waves, phys[RAMP_S], s_seg, t, act)
-        lattice_rest_lengths(act, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, stretch, rest)
+        row = act_buf[min(step, n_rows - 1)]
+        lattice_rest_lengths(row, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, stretch, rest)
         force[:, :] = 0.0
         spring_forces(x, v, springs, stiffness, damping, rest, force)
         spine_vectors(x, n_faces, spine)

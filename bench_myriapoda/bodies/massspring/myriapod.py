@@ -52,11 +52,11 @@ from ..hybrid.kernels import (rigid_segments_step, ACC_RES_COUNT, ACC_RES_MAX, A
                               N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
                               VEL_ITERATIONS, VEL_TOLERANCE, link_spines, place_attached_nodes)
 from ..kinematic_targets import drive_to_targets
-from ..observation import Observation
+from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
-from ..segment_chain import CouplingScratch, SegmentChainLayout
+from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
 from .kernels import spring_forces
@@ -221,7 +221,7 @@ def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, sprin
     return n_steps, OK
 
 
-class BodyRigidSpringChain:
+class BodyRigidSpringChain(SupportedSegments):
     """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] of the link nodes (attached
@@ -229,6 +229,9 @@ class BodyRigidSpringChain:
     """
 
     name = "massspring"
+    capabilities = frozenset({SEGMENTS, LEGS})
+    n_muscle_segments = 0
+    muscle_s = np.zeros(0)
 
     def __init__(self, case):
         cre = case.creature
@@ -255,6 +258,9 @@ class BodyRigidSpringChain:
             raise ValueError(f"creature.mass_kg = {cre.mass_kg} kg is less than the free link nodes' {free_mass:.4g} kg")
         self.rigid = RigidBoxes(np.tile(half, (lay.n_rigid, 1)), np.full(lay.n_rigid, m_rigid))
         self.total_mass = m_rigid * lay.n_rigid + free_mass
+        self.n_segments = lay.n_rigid
+        self.segment_pitch_m = lay.pitch
+        self.segment_half_extents = np.tile(half, (lay.n_rigid, 1))
 
         self.terr_kind, self.terr = terrain_from_scenario(sc)
         self.fric_model, self.fric = friction_params(case.friction)
@@ -314,8 +320,9 @@ class BodyRigidSpringChain:
                              self.rigid.v, self.rigid.w, self.scratch.Rb, self.x, self.v, x_pred, self.scratch.residual)
 
     # ------------------------------------------------------------------ stepping
-    def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
-        """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused."""
+    def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
+        """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
+        the links have no muscles (the supported segments are moved by ``apply_support``)."""
         rb = self.rigid
         return advance_chain(self.x, self.v, self.mass, self.free, self.fixed, self.att_body, self.att_local,
                              self.mesh.node_link, self.springs, self.stiffness, self.damping, self.rest,
@@ -340,6 +347,7 @@ class BodyRigidSpringChain:
         saved = self._state()
         self.advance(0.0, 1)
         self.set_support(np.zeros(self.layout.n_rigid, bool), *self.segment_poses(), self.dt)
+        self.observe(0.0)
         self._restore(saved)
 
     @staticmethod
@@ -350,6 +358,10 @@ class BodyRigidSpringChain:
     def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
         """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the boxes."""
         return self.rigid.c, self.rigid.rotation_matrices()
+
+    def segment_velocities(self) -> np.ndarray:
+        """(n_rigid, 3) [m/s] velocities of the boxes' centres."""
+        return self.rigid.v
 
     def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
         """Supported boxes (``kinematic`` (n,) bool) are put at (c_T (n, 3) [m], R_T (n, 3, 3)) with the
@@ -412,8 +424,9 @@ class BodyRigidSpringChain:
         head = rb.c[0] + R[0][:, 0] * half_len
         tail = rb.c[-1] - R[-1][:, 0] * half_len
         nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
-        return Observation(t=t, segment_centers=self.segment_centers(), com=self.centre_of_mass(), head=head,
-                           tail=tail, energy=np.array(self.energy(t)), nodes=nodes)
+        obs = Observation(t=t, segment_centers=self.segment_centers(), com=self.centre_of_mass(), head=head,
+                          tail=tail, energy=np.array(self.energy(t)), nodes=nodes)
+        return self._observe_segments(obs, t)
 
     def energy(self, t: float = 0.0) -> tuple[float, float, float]:
         """(kinetic, spring elastic 1/2 k (L - l)^2, gravitational from y = 0) [J] of boxes and free nodes."""

@@ -23,9 +23,15 @@ One ``step`` per time step, in the paper's order:
 4. legs -- the Switcher updates the states, STANCE legs solve the IK of App. B
    against the target poses (a failure sends the leg to SF1 on the next
    step), the others move by forward kinematics;
-5. deformable segments -- the body's dynamic step, called by the owner after this.
+5. deformable segments -- the body's dynamic step, which the runner calls after this.
 
-The kernels (``targeter``, ``switcher``, ``bodies.legs``) run in numba; this
+As a ``core.protocols.Controller`` it is closed-loop at every time step (``rate_hz`` = 0): it
+reads the segment poses of the observation (``seg_pos``, ``seg_rot``) and writes the supported
+segments and their target poses into the actuation (``support_kinematic``, ``support_c``,
+``support_R``); the body carries them (``apply_support``) before its step.  It never sees the
+body itself, so the same controller drives the hybrid, mass-spring and FEM myriapods.
+
+The kernels (``targeter``, ``switcher``, ``kinematics.legs``) run in numba; this
 class only sequences them, a few calls per time step.
 """
 from __future__ import annotations
@@ -34,7 +40,8 @@ import math
 
 import numpy as np
 
-from ...bodies import legs as L
+from ...core.protocols import LEGS, SEGMENTS
+from ...kinematics import legs as L
 from ...world import terrain_kernels as TK
 from ...world.food import FoodField
 from ...world.terrain import base_height, terrain_from_scenario
@@ -109,7 +116,26 @@ class MyriapodController:
     every ``record_every`` steps for the gait metrics.
     """
 
-    def __init__(self, case, n_segments: int, segment_pitch_m: float, record_every: int = 10):
+    requires = frozenset({SEGMENTS, LEGS})
+    open_loop = False
+    rate_hz = 0.0  # every time step, as the paper (Sec. 6)
+
+    def __init__(self, case, n_segments: int | None = None, segment_pitch_m: float | None = None,
+                 record_every: int = 10):
+        self.case = case
+        self.record_every = record_every
+        if n_segments is not None:
+            self._setup(case, n_segments, segment_pitch_m)
+
+    def reset(self, case, body_info, rng=None) -> None:
+        """Build the legs for the body's segments (``body_info``: n_segments, segment_pitch_m).
+
+        The controller draws from its own generators seeded by ``case.seed`` (not ``rng``), so a
+        run is the same whichever way it is started."""
+        self._setup(case, int(body_info["n_segments"]), float(body_info["segment_pitch_m"]))
+
+    def _setup(self, case, n_segments: int, segment_pitch_m: float) -> None:
+        record_every = self.record_every
         lg, ct, sc = case.legs, case.controller, case.scenario
         self.n_seg = n_segments
         self.n_legs = 2 * n_segments
@@ -185,6 +211,7 @@ class MyriapodController:
         self.R_T = np.zeros((n_segments, 3, 3))
         self.record_every = record_every
         self._step = 0
+        self.recorded = False  # whether the last step was recorded in the timeline
         self.timeline_t: list[float] = []
         self.timeline_states: list[np.ndarray] = []
         self.timeline_tips: list[np.ndarray] = []
@@ -256,14 +283,16 @@ class MyriapodController:
         return 0.0, 0.0, 0.0
 
     # ------------------------------------------------------------------ one step (Sec. 6)
-    def step(self, body, t: float) -> None:
-        """Update head, segment targets and legs for the step starting at t; hand targets to ``body``.
+    def step(self, obs, t: float, act) -> None:
+        """Update head, segment targets and legs for the step starting at t; write the supported
+        segments and their targets into ``act`` (``core.protocols.Actuation``).
 
-        body: a segment body with ``segment_poses() -> (c (n,3), R (n,3,3))`` and
-        ``set_support(kinematic (n,), c_T, R_T, dt)``.
+        obs: ``core.protocols.Observation`` with seg_pos (n, 3) [m] and seg_rot (n, 3, 3).
         """
         dt = self.dt
-        c, R = body.segment_poses()
+        c, R = obs.seg_pos, obs.seg_rot
+        if self._step > 0:  # how well the body followed the last step's targets
+            self.record_tracking(c)
         if self._step == 0:  # the tips of the starting pose
             L.legs_forward_kinematics(c, R, self.geom, self.angles, self._O, self._M, self.tips)
         # 1. antennae (and food)
@@ -300,7 +329,10 @@ class MyriapodController:
         self.kinematic[0] = self.brain != ADJUSTMENT
         TG.targeter_step(c, R, self.kinematic, self.terr_kind, self.terr_walk, self.tg_params, self.link_rest,
                          self.height_target, speed, rate, turn_dir, dt, self.c_T, self.R_T)
-        body.set_support(self.kinematic, self.c_T, self.R_T, dt)
+        act.support_kinematic[:] = self.kinematic
+        act.support_c[:] = self.c_T
+        act.support_R[:] = self.R_T
+        act.support_new = True
         # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
         SW.switcher_step(self.states, self.angles, self.airborne, self.touching, self.ik_failed, self.sw_params,
                          dt, self.entered)
@@ -314,7 +346,8 @@ class MyriapodController:
         L.legs_forward_kinematics(self.c_T, self.R_T, self.geom, self.angles, self._O, self._M, self.tips)
         in_stance = self.states == SW.STANCE
         self.tips[in_stance] = stance_tips[in_stance]  # a planted tip stays where it touched down
-        if self._step % self.record_every == 0:
+        self.recorded = self._step % self.record_every == 0
+        if self.recorded:
             self.timeline_t.append(t)
             self.timeline_states.append(self.states.astype(np.int8))
             self.timeline_tips.append(self.tips.copy())

@@ -4,7 +4,7 @@ Every leg runs the same six-state machine; the kernels below update all legs of
 a creature at once, one call per time step, and are callable from another
 @njit loop.  Legs are indexed ``k = 2 * segment + side`` (side 0 left, 1 right;
 segment 0 is the head), angles are ``angles[k] = (theta, alpha, beta)`` [rad]
-as in ``bench_myriapoda.bodies.legs``.
+as in ``bench_myriapoda.kinematics.legs``.
 
 States and their target poses (Sec. 4.2, "Leg States")
 ------------------------------------------------------
@@ -110,7 +110,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from bench_myriapoda.bodies.legs import (ALPHA, BETA, THETA, leg_ik_from_segment, leg_tip,
+from bench_myriapoda.kinematics.legs import (ALPHA, BETA, THETA, leg_ik_from_segment, leg_tip,
                                          side_sign)
 
 SF1, SF2, SB1, SB2, STANCE, ADJUST = 0, 1, 2, 3, 4, 5

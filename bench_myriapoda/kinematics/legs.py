@@ -2,8 +2,8 @@ r"""Leg kinematics of the myriapod paper (Fang, Jiang & Terzopoulos 2013).
 
 Sec. 3 makes the legs massless rigid links; Sec. 4.2 / Fig. 9 define a pose by
 three angles (theta, alpha, beta) with a fixed fourth angle gamma; App. B gives
-the inverse kinematics.  These numba kernels are the numerical core; the body
-and the leg controller (``bench_myriapoda.controllers.myriapod``) call them once
+the inverse kinematics.  These numba kernels are the numerical core; the leg
+controller (``bench_myriapoda.controllers.myriapod``) and the scene drawing call them once
 per time step for all legs at once, from inside their own @njit loops.
 
 Frames and indexing (PAPER-NOTES.md)
@@ -76,7 +76,7 @@ import math
 import numpy as np
 from numba import njit
 
-from bench_myriapoda.bodies.rigid_kernels import _matTvec, _matvec
+from .rotations import mat_t_vec as _matTvec, matvec as _matvec
 from bench_myriapoda.world.terrain_kernels import signed_distance
 
 LEFT, RIGHT = 0, 1
