@@ -572,7 +572,7 @@ def _closed_pipe() -> int:
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError):  # stdout without a file descriptor (e.g. captured in a test)
+    except (OSError, ValueError, AttributeError):  # stdout without a file descriptor (e.g. captured in a test)
         pass
     return EXIT_CLOSED_PIPE
 

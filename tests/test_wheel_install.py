@@ -3,18 +3,22 @@ environment, and use it from a directory outside the checkout.
 
 The wheel must carry ``models/`` and ``scenarios/`` (copied into
 ``bench_myriapoda/_data/`` by ``setup.py``), and the installed package must find
-them without a checkout.  To keep the test offline-friendly and fast, the venv sees
-the system's third-party packages (numpy, numba, ...) through
-``--system-site-packages``, but our own package comes from the wheel: the test
-checks that ``bench_myriapoda.__file__`` lies inside the venv.
+them without a checkout.  To keep the test offline-friendly and fast, the fresh venv
+borrows the third-party packages (numpy, numba, ...) of the environment running the
+tests: a ``.pth`` file appends that environment's site-packages to the venv's path
+(the ``--system-site-packages`` idea, but for whichever environment runs pytest, a
+venv included).  Our own package comes from the wheel: the venv's site-packages come
+first, and the test checks that ``bench_myriapoda.__file__`` lies inside the venv.
 """
 from __future__ import annotations
 
 import json
 import os
 import shutil
+import site
 import subprocess
 import sys
+import sysconfig
 import venv
 import zipfile
 from pathlib import Path
@@ -63,13 +67,19 @@ def installed(tmp_path_factory):
             shutil.copy2(p, src / name)
     whl = _build_wheel(src, tmp / "dist")
     env_dir = tmp / "venv"
-    venv.create(env_dir, system_site_packages=True, with_pip=True)
+    venv.create(env_dir, with_pip=False)  # this interpreter's pip installs into it (--python): no ensurepip
     bindir = env_dir / ("Scripts" if os.name == "nt" else "bin")
     py = bindir / "python"
-    # --ignore-installed: the editable install of the checkout in the system site must not satisfy it
-    proc = subprocess.run([str(py), "-m", "pip", "install", "--no-deps", "--ignore-installed", "-q", str(whl)],
-                          capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, "-m", "pip", "--python", str(py), "install", "--no-deps",
+                           "--ignore-installed", "-q", str(whl)], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
+    # then the third-party packages of this environment, after the venv's own site-packages; a path
+    # added by a .pth line is not itself scanned for .pth files, so an editable install of the checkout
+    # there (a finder hooked in by a .pth) does not come along
+    venv_site = Path(subprocess.run([str(py), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                                    capture_output=True, text=True, check=True).stdout.strip())
+    borrowed = dict.fromkeys([*site.getsitepackages(), sysconfig.get_paths()["purelib"]])
+    (venv_site / "zz_borrowed_site_packages.pth").write_text("".join(f"{p}\n" for p in borrowed))
     work = tmp / "elsewhere"
     work.mkdir()
     env = {k: v for k, v in os.environ.items() if k not in ("BENCH_MYRIAPODA_ROOT", "PYTHONPATH")}
