@@ -423,7 +423,7 @@ def cmd_matrix(args) -> int:
         try:
             import dask.distributed  # noqa: F401
         except ImportError:
-            raise InputError("--executor", None, "dask is not installed; pip install 'dask[distributed]'") from None
+            raise InputError("--executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
     exp = expand_matrix(locate_matrix(args.file))
     out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name
     if out.exists() and not out.is_dir():
