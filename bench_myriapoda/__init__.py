@@ -37,8 +37,21 @@ if "NUMBA_CACHE_DIR" not in os.environ:  # a user's own choice wins
         pass
 
 
-def run(*args, **kwargs):
-    """Run one case from Python (``bench_myriapoda.api.run``); imported lazily so that importing the
-    package stays light."""
-    from .api import run as _run
-    return _run(*args, **kwargs)
+# The Python API (api.py), imported on first use: `import bench_myriapoda` stays light (no numba,
+# no pandas) and the numba cache directory above is set before anything imports numba.
+_API = ("run", "run_matrix", "load_results", "resolve", "Result", "Series")
+
+
+def __getattr__(name: str):
+    if name in _API:
+        from . import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'bench_myriapoda' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_API))
+
+
+__all__ = ["__version__", *_API]

@@ -7,6 +7,7 @@
     bench-myriapoda matrix FILE [--executor local|dask] [--resume] [...]  a whole scenario matrix
     bench-myriapoda report DIR [--baseline DIR2]   index.html and summary.md of a matrix run
     bench-myriapoda regress [--baseline COMMIT_OR_RUN] [...]   throughput suite vs. the stored history
+    bench-myriapoda keys [SECTION] [--json]   every configuration key --set accepts, described
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -16,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 from pathlib import Path
 from typing import Any, Sequence
@@ -23,9 +25,10 @@ from typing import Any, Sequence
 from .core import registry
 from .core.config import creature_names, load_creature_file, resolve_case, scenario_paths
 from .core.errors import InputError
-from .harness.progress import ProgressBar
+from .harness.progress import MatrixProgress, ProgressBar
 
 EXIT_OK, EXIT_FAIL, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_CLOSED_PIPE = 128 + 13  # what a shell reports for a process ended by SIGPIPE
 
 # What no arguments do: this matrix, written (with its report) to this directory.
 QUICK_MATRIX = "quick"
@@ -44,12 +47,13 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="bench-myriapoda", description="Benchmark suite for simulated myriapods, worms and snakes.")
+    _version_argument(p)
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
 
     ls = sub.add_parser("list", help="creatures, bodies, gaits, scenarios and supported combinations")
     ls.add_argument("--json", action="store_true", help="print one JSON object")
 
-    run = sub.add_parser("run", help="run one case")
+    run = sub.add_parser("run", help="run one case", **_run_help_text())
     _case_arguments(run)
     run.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     run.add_argument("--record", metavar="FILE.npz", help="save the recorded time series (all node positions)")
@@ -113,6 +117,8 @@ def build_parser() -> argparse.ArgumentParser:
                          "raised to 3x the measured noise when that is larger)")
     rg.add_argument("--suite", nargs="+", action="extend", metavar="NAME", default=None,
                     help="run only these entries of the suite (default: all)")
+
+    _keys_parser(sub)
     return p
 
 
@@ -122,11 +128,13 @@ def _case_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--body", required=True, help="body model: " + ", ".join(sorted(_bodies())))
     p.add_argument("--scenario", required=True, help="scenario name (scenarios/NAME.toml) or a .toml path")
     p.add_argument("--gait", help="gait (default: the creature's default gait)")
-    p.add_argument("--duration", type=float, metavar="SECONDS", help="simulated time [s]")
-    p.add_argument("--dt", type=float, metavar="SECONDS", help="time step [s]")
-    p.add_argument("--seed", type=int, metavar="N", help="random seed")
+    p.add_argument("--duration", type=float, metavar="SECONDS",
+                   help="simulated time [s] (default: the scenario's scenario.duration_s)")
+    p.add_argument("--dt", type=float, metavar="SECONDS", help="time step [s] (default: the body model's)")
+    p.add_argument("--seed", type=int, metavar="N", help="random seed (default 0)")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                   help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2")
+                   help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2 "
+                        "(repeatable; `bench-myriapoda keys` lists them all)")
 
 
 def _resolve(args):
@@ -209,9 +217,11 @@ def print_result_table(result) -> None:
     print(f"case {result.case.case_hash()}: {c['creature']['name']} / {c['body']['name']} / {c['gait']['name']} / "
           f"{c['scenario']['name']}  dt={c['dt']:.3g} s  duration={c['duration']:.3g} s")
     print(f"status: {d['status']}" + (f" ({result.message})" if result.message else ""))
-    width = max(len(k) for k in d["metrics"]) if d["metrics"] else 10
-    for k in sorted(d["metrics"]):
-        print(f"  {k:<{width}}  {_fmt(d['metrics'][k])}")
+    labels = d.get("labels", {})  # a coded metric (brain_mode_final) prints its label, as the JSON has it
+    names = sorted(set(d["metrics"]) | set(labels))
+    width = max(len(k) for k in names) if names else 10
+    for k in names:
+        print(f"  {k:<{width}}  {labels[k] if k in labels else _fmt(d['metrics'][k])}")
     t = d["timings"]
     print(f"  {'steps':<{width}}  {t['steps']}   steps/s {_fmt(t['steps_per_s'])}   realtime x{_fmt(t['realtime_factor'])}"
           f"   compile {_fmt(t['compile_s'])} s   wall {_fmt(t['wall_s'])} s")
@@ -231,7 +241,8 @@ def cmd_run(args) -> int:
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
     frames, anim_stride = _frame_recorder(args, case)
-    bar = ProgressBar(enabled=not args.json and sys.stdout.isatty(), label=f"{args.creature}/{args.body}")
+    bar = ProgressBar(enabled=not args.json and sys.stderr.isatty(), label=f"{case.creature.name}/{case.body.name}",
+                      total_s=case.duration, dt=case.dt)
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames)
     bar.close()
     if not args.no_store:
@@ -399,9 +410,7 @@ def cmd_matrix(args) -> int:
     Exit 0 when every case ran to a status ok or unstable, 1 when any case of the matrix (this run or an
     earlier one that --resume kept) is error or timeout, 2 for bad input (nothing written).
     """
-    import time
-
-    from .harness.executors import matrix_rows, run_matrix
+    from .harness.executors import done_hashes, matrix_rows, run_matrix
     from .harness.matrix import expand_matrix, locate_matrix, write_matrix_manifest
 
     if args.workers is not None and args.workers < 1:
@@ -414,7 +423,7 @@ def cmd_matrix(args) -> int:
         try:
             import dask.distributed  # noqa: F401
         except ImportError:
-            raise InputError("--executor", None, "dask is not installed; pip install 'dask[distributed]'") from None
+            raise InputError("--executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
     exp = expand_matrix(locate_matrix(args.file))
     out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name
     if out.exists() and not out.is_dir():
@@ -429,23 +438,20 @@ def cmd_matrix(args) -> int:
     if not exp.cases:
         raise InputError(str(exp.path), None, "no case left to run after exclusions and unsupported combinations")
     labels = {m.case.case_hash(): m.label for m in exp.cases}
-    tty = sys.stderr.isatty()
-    t0, failed = time.perf_counter(), 0
-
-    def on_result(result, done, total):
-        nonlocal failed
-        failed += result.status in ("error", "timeout")
-        if tty:
-            el = time.perf_counter() - t0
-            eta = el / done * (total - done)
-            print(f"[{done}/{total}] failed {failed}  eta {eta:.0f}s  {labels[result.case.case_hash()]}: {result.status}"
-                  + (f" ({result.message})" if result.message else ""), file=sys.stderr)
-
     cases = [m.case for m in exp.cases]
     write_matrix_manifest(out, exp)
-    run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
-               timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
-               resume=args.resume, series_dir=out / "series")
+    todo = len(cases) - (len({c.case_hash() for c in cases} & done_hashes(store, exp.name)) if args.resume else 0)
+    bar = MatrixProgress(sys.stderr.isatty(), todo, label=f"matrix {exp.name}")
+
+    def on_result(result, done, total):
+        bar.case_done(labels[result.case.case_hash()], result.status, result.message)
+
+    try:
+        run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
+                   timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
+                   resume=args.resume, series_dir=out / "series")
+    finally:
+        bar.close()
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(labels)]
     table = []
@@ -543,14 +549,103 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv or ["quick"])
         if args.command is None:
             args = parser.parse_args(["quick", *argv])
-        return {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
-                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress}[args.command](args)
+        code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
+                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys}[args.command](args)
+        sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
+        return code
+    except BrokenPipeError:
+        return _closed_pipe()
     except InputError as exc:
         print(f"bench-myriapoda: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         print("bench-myriapoda: interrupted", file=sys.stderr)
         return 130
+
+
+def _closed_pipe() -> int:
+    """stdout's reader went away (``bench-myriapoda run --json | head -c 10``): stop quietly.
+
+    stdout is pointed at /dev/null so the interpreter's final flush does not raise again;
+    the exit code is the shell's for a process ended by SIGPIPE (128 + 13).
+    """
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # stdout without a file descriptor (e.g. captured in a test)
+        pass
+    return EXIT_CLOSED_PIPE
+
+
+# --------------------------------------------------------------------------- help, version, keys
+
+def _version_argument(p: argparse.ArgumentParser) -> None:
+    from . import __version__
+
+    p.add_argument("--version", action="version", version=f"bench-myriapoda {__version__}")
+
+
+RUN_EXAMPLES = """examples:
+  bench-myriapoda run --creature worm --body massspring --scenario flat
+  bench-myriapoda run --creature snake --body fem --scenario flat --gait sidewinding --duration 5 --json
+  bench-myriapoda run --creature snake --body massspring --scenario flat \\
+      --set friction.mu_transverse=0.2 --set gait.frequency_hz=0.5 --record snake.npz
+  bench-myriapoda run --creature centipede --body hybrid --scenario walk --plot-gait gait.png --animate walk.gif
+  bench-myriapoda run --creature ./my-worm.toml --body massspring --scenario ./my-ground.toml   # your own files
+"""
+
+
+def _run_help_text() -> dict[str, Any]:
+    """``run --help``: what can be chosen (creatures, bodies, gaits, scenarios) and examples at the end."""
+    registry.load_all()
+    creatures = creature_names()
+    lines = [
+        "Run one case (creature x body model x gait x scenario) and print its metrics.",
+        "",
+        f"creatures:  {', '.join(creatures) or '(none found)'}",
+        f"bodies:     {', '.join(sorted(registry.BODIES))}",
+        f"gaits:      {', '.join(sorted(registry.GAITS))} (default: the creature's default gait; "
+        "`bench-myriapoda list` shows which creature has which)",
+        f"scenarios:  {', '.join(scenario_paths()) or '(none found)'}",
+        "",
+        "Any other configuration key: --set SECTION.KEY=VALUE; `bench-myriapoda keys` lists them all with "
+        "types, defaults, ranges and units.",
+    ]
+    return {"description": "\n".join(lines), "epilog": RUN_EXAMPLES,
+            "formatter_class": argparse.RawDescriptionHelpFormatter}
+
+
+def _keys_parser(sub) -> None:
+    from .core.keys import sections
+
+    k = sub.add_parser("keys", help="every configuration key --set accepts: type, default, range, unit, meaning",
+                       description="Every configuration key --set accepts (and creature/scenario files set), with "
+                                   "its type, default, allowed range or choices, unit and description.")
+    k.add_argument("section", nargs="?", metavar="SECTION", default=None,
+                   help=f"only this section: {', '.join(sections())} (default: all)")
+    k.add_argument("--json", action="store_true", help='print one JSON object {"keys": [...]}')
+
+
+def cmd_keys(args) -> int:
+    from .core.keys import config_keys
+
+    rows = config_keys(args.section)
+    if args.json:
+        print(json.dumps({"keys": rows}, indent=1))
+        return EXIT_OK
+    section = None
+    for r in rows:
+        if r["section"] != section:
+            section = r["section"]
+            print(f"[{section}]" + ("  (dt, duration, seed: --dt, --duration, --seed or --set)" if section == "top"
+                                    else ""))
+        default = "-" if r["default"] is None else json.dumps(r["default"])
+        bodies = f"  ({', '.join(r['bodies'])})" if "bodies" in r else ""
+        print(f"  {r['key']}{bodies}")
+        print(f"      {r['type']}; default {default}" + (f"; {r['allowed_text']}" if r["allowed_text"] else "")
+              + (f"; unit {r['unit']}" if r["unit"] else ""))
+        print(f"      {r['description']}")
+    return EXIT_OK
 
 
 if __name__ == "__main__":

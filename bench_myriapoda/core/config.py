@@ -25,6 +25,7 @@ from typing import Any, Iterable, Mapping
 from . import registry
 from .errors import InputError
 from .paths import models_dir, scenarios_dir
+from .suggest import did_you_mean
 from .schema import (SECTIONS, TOP_LEVEL_SCALARS, AntennaeConfig, CollisionConfig, ControllerConfig, CreatureConfig,
                      FoodConfig, FrictionConfig, GaitConfig, LegsConfig, MetricsConfig, RecordConfig, ScenarioConfig,
                      StabilityConfig, check_range, check_section, coerce_value)
@@ -122,7 +123,8 @@ def _locate(name: str, kind: str, flag: str, known: Mapping[str, Path]) -> Path:
     if name.endswith(".toml"):
         return Path(name)
     if name not in known:
-        raise InputError(flag, None, f"unknown {kind} {name!r}; choose one of {', '.join(sorted(known)) or '(none found)'}")
+        raise InputError(flag, None, f"unknown {kind} {name!r}{did_you_mean(name, known)}; choose one of "
+                                     f"{', '.join(sorted(known)) or '(none found)'}")
     return known[name]
 
 
@@ -136,16 +138,19 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
             check_section(SECTIONS[table], data[table], src, table)
     for gait, table in data.get("gaits", {}).items():
         if gait not in registry.GAITS:
-            raise InputError(src, f"gaits.{gait}", f"unknown gait; choose one of {', '.join(sorted(registry.GAITS))}")
+            raise InputError(src, f"gaits.{gait}", f"unknown gait{did_you_mean(gait, registry.GAITS)}; choose one of "
+                                                   f"{', '.join(sorted(registry.GAITS))}")
         check_section(GaitConfig, table, src, f"gaits.{gait}")
     for body, table in data.get("bodies", {}).items():
         if body not in registry.BODIES:
-            raise InputError(src, f"bodies.{body}", f"unknown body model; choose one of {', '.join(sorted(registry.BODIES))}")
+            raise InputError(src, f"bodies.{body}", f"unknown body model{did_you_mean(body, registry.BODIES)}; "
+                                                    f"choose one of {', '.join(sorted(registry.BODIES))}")
         check_section(registry.BODIES[body].config_cls, table, src, f"bodies.{body}")
     c = data["creature"]
     for gait in list(c.get("gaits", ())) + ([c["default_gait"]] if "default_gait" in c else []):
         if gait not in registry.GAITS:
-            raise InputError(src, "creature.gaits", f"unknown gait {gait!r}; choose from {', '.join(sorted(registry.GAITS))}")
+            raise InputError(src, "creature.gaits", f"unknown gait {gait!r}{did_you_mean(gait, registry.GAITS)}; "
+                                                    f"choose from {', '.join(sorted(registry.GAITS))}")
     return path, data
 
 
@@ -187,7 +192,8 @@ def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, bo
     allowed_sections = sorted(list(SECTIONS) + ["body"])
     if len(parts) == 1:
         if key not in TOP_LEVEL_SCALARS:
-            raise InputError(source, key, f"unknown key; allowed: {', '.join(sorted(TOP_LEVEL_SCALARS))} "
+            raise InputError(source, key, f"unknown key{did_you_mean(key, TOP_LEVEL_SCALARS)}; allowed: "
+                                          f"{', '.join(sorted(TOP_LEVEL_SCALARS))} "
                                           f"or SECTION.KEY with SECTION one of {', '.join(allowed_sections)}")
         tp, meta = TOP_LEVEL_SCALARS[key]
         v = coerce_value(value, {"float": float, "int": int}[tp], source, key)
@@ -199,7 +205,8 @@ def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, bo
     section, name = parts
     cls = _section_cls(section, body_name)
     if cls is None:
-        raise InputError(source, key, f"unknown section {section!r}; choose one of {', '.join(allowed_sections)}")
+        raise InputError(source, key, f"unknown section {section!r}{did_you_mean(section, allowed_sections)}; "
+                                      f"choose one of {', '.join(allowed_sections)}")
     checked = check_section(cls, {name: value}, source, section)
     layers.setdefault(section, {}).update(checked)
 
@@ -216,9 +223,11 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     """
     registry.load_all()
     if body not in registry.BODIES:
-        raise InputError("--body", None, f"unknown body model {body!r}; choose one of {', '.join(sorted(registry.BODIES))}")
+        raise InputError("--body", None, f"unknown body model {body!r}{did_you_mean(body, registry.BODIES)}; "
+                                         f"choose one of {', '.join(sorted(registry.BODIES))}")
     if gait is not None and gait not in registry.GAITS:
-        raise InputError("--gait", None, f"unknown gait {gait!r}; choose one of {', '.join(sorted(registry.GAITS))}")
+        raise InputError("--gait", None, f"unknown gait {gait!r}{did_you_mean(gait, registry.GAITS)}; "
+                                         f"choose one of {', '.join(sorted(registry.GAITS))}")
     cpath, cdata = load_creature_file(creature)
     spath, sdata = load_scenario_file(scenario)
     spec = registry.BODIES[body]

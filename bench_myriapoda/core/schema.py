@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any, Mapping
 
 from .errors import InputError
+from .suggest import did_you_mean
 
 
 def rng(default, *, ge=None, gt=None, le=None, lt=None, choices=None, doc="", length=None, multiple=None,
@@ -70,7 +71,7 @@ class CreatureConfig:
     """Morphology of a segmented creature; segment 0 is the head."""
 
     name: str = rng("", doc="creature name")
-    description: str = rng("")
+    description: str = rng("", doc="one line shown by `list`")
     segments: int = rng(10, ge=1, le=1000, doc="number of body segments")
     segment_length_m: float = rng(0.05, gt=0.0, doc="rest length of one segment along the body [m]")
     width_m: float = rng(0.05, gt=0.0, doc="segment width (side to side) [m]")
@@ -100,7 +101,8 @@ class GaitConfig:
     wavelength_bl: float = rng(0.5, gt=0.0, doc="wavelength in body lengths (undeformed)")
     frequency_hz: float = rng(1.0, gt=0.0, doc="wave frequency [Hz]")
     phase_deg: float = rng(0.0, doc="phase offset of the main wave [deg]")
-    direction: str = rng("head-to-tail", choices=("head-to-tail", "tail-to-head"))
+    direction: str = rng("head-to-tail", choices=("head-to-tail", "tail-to-head"),
+                         doc="way the wave travels along the body (Miller's worm: head to tail)")
     vertical_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="sidewinding: vertical wave strain amplitude")
     vertical_phase_deg: float = rng(90.0, doc="sidewinding: phase of the vertical wave relative to the lateral wave [deg]")
     axial_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="arching: axial strain amplitude of the contraction coupled to the arch")
@@ -191,14 +193,17 @@ class FrictionConfig:
     * ``stick``   -- Miller's caterpillar: masses in contact get no tangential motion.
     """
 
-    model: str = rng("coulomb", choices=("miller", "coulomb", "stick"))
+    model: str = rng("coulomb", choices=("miller", "coulomb", "stick"),
+                     doc="'miller': no backward sliding along the spine; 'coulomb': anisotropic Coulomb; "
+                         "'stick': no tangential motion in contact")
     contact_distance_m: float = rng(0.002, ge=0.0, doc="a mass this close to the surface is in contact [m]")
-    mu_forward: float = rng(0.1, ge=0.0)
-    mu_backward: float = rng(0.3, ge=0.0)
-    mu_transverse: float = rng(0.5, ge=0.0)
-    mu_static_forward: float = rng(-1.0, ge=-1.0)
-    mu_static_backward: float = rng(-1.0, ge=-1.0)
-    mu_static_transverse: float = rng(-1.0, ge=-1.0)
+    mu_forward: float = rng(0.1, ge=0.0, doc="coulomb: kinetic coefficient for sliding head-first along the spine")
+    mu_backward: float = rng(0.3, ge=0.0, doc="coulomb: kinetic coefficient for sliding tail-first along the spine")
+    mu_transverse: float = rng(0.5, ge=0.0, doc="coulomb: kinetic coefficient for sliding sideways (across the spine)")
+    mu_static_forward: float = rng(-1.0, ge=-1.0, doc="coulomb: static coefficient head-first; -1: same as mu_forward")
+    mu_static_backward: float = rng(-1.0, ge=-1.0, doc="coulomb: static coefficient tail-first; -1: same as mu_backward")
+    mu_static_transverse: float = rng(-1.0, ge=-1.0,
+                                      doc="coulomb: static coefficient sideways; -1: same as mu_transverse")
 
 
 @dataclass(frozen=True)
@@ -213,12 +218,12 @@ class CollisionConfig:
 class ScenarioConfig:
     """Where the creature starts and what it stands on."""
 
-    name: str = rng("")
-    description: str = rng("")
+    name: str = rng("", doc="scenario name (default: the file name)")
+    description: str = rng("", doc="one line shown by `list`")
     terrain: str = rng("plane", choices=("plane", "slope", "slab", "heightfield", "mesh", "none"),
                        doc="'none': no ground at all; 'heightfield': Gaussian mixture (Sec. 6.2); 'mesh': a closed "
                            "triangle mesh (Fig. 1)")
-    ground_height_m: float = rng(0.0)
+    ground_height_m: float = rng(0.0, doc="height of the ground plane and of a heightfield's base; still water's depth is measured from it [m]")
     slope_deg: float = rng(0.0, ge=-80.0, le=80.0, doc="slope: incline rising toward +x [deg]")
     slab_height_m: float = rng(0.3, gt=0.0, doc="slab: height of Miller's book [m]")
     slab_edge_x_m: float = rng(0.0, doc="slab: x of the book's edge (slab at x <= edge) [m]")
@@ -265,7 +270,7 @@ class ScenarioConfig:
     start_height_m: float = rng(0.0, ge=0.0, doc="clearance of the body's underside above the surface at t=0 [m]")
     start_x_m: float = rng(0.0, doc="x of the head at t=0 (creatures face +x) [m]")
     perturbation_m: float = rng(0.0, ge=0.0, doc="random displacement (std) of every node at t=0, seeded by seed [m]")
-    gravity_m_s2: float = rng(9.81, ge=0.0)
+    gravity_m_s2: float = rng(9.81, ge=0.0, doc="gravitational acceleration, pointing down (-y) [m/s^2]")
     passive: bool = rng(False, doc="muscles off (for energy checks)")
     suspended: bool = rng(False, doc="the head is held fixed and the body hangs straight down from it (paper Fig. 10)")
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
@@ -486,7 +491,8 @@ def check_section(cls, data: Mapping[str, Any], source: str, prefix: str) -> dic
     for key, value in data.items():
         dotted = f"{prefix}.{key}" if prefix else key
         if key not in types:
-            raise InputError(source, dotted, f"unknown key; allowed keys of [{prefix}]: {', '.join(sorted(types))}")
+            hint = did_you_mean(dotted, [f"{prefix}.{t}" if prefix else t for t in types])
+            raise InputError(source, dotted, f"unknown key{hint}; allowed keys of [{prefix}]: {', '.join(sorted(types))}")
         v = coerce_value(value, types[key], source, dotted)
         check_range(v, metas[key], source, dotted)
         out[key] = v

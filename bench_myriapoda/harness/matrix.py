@@ -50,6 +50,7 @@ from ..core import registry
 from ..core.config import Case, creature_names, read_tables, resolve_case, scenario_paths
 from ..core.errors import InputError
 from ..core.paths import scenarios_dir
+from ..core.suggest import did_you_mean
 
 AXIS_KEYS = {"creatures": "creature", "bodies": "body", "gaits": "gait", "scenarios": "scenario", "seeds": "seed"}
 BLOCK_KEYS = set(AXIS_KEYS) | {"grid", "set", "duration"}
@@ -118,7 +119,8 @@ def locate_matrix(name_or_path: str) -> Path:
         return p
     known = matrix_paths()
     if name_or_path not in known:
-        raise InputError("matrix", None, f"unknown matrix {name_or_path!r}; give a .toml path or one of "
+        raise InputError("matrix", None, f"unknown matrix {name_or_path!r}{did_you_mean(name_or_path, known)}; "
+                                         f"give a .toml path or one of "
                                          f"{', '.join(sorted(known)) or '(none found)'}")
     return known[name_or_path]
 
@@ -139,7 +141,8 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[s
         raise InputError(src, prefix, "expected a table")
     for key in table:
         if key not in allowed:
-            raise InputError(src, f"{prefix}.{key}", f"unknown key; allowed: {', '.join(sorted(allowed))}")
+            raise InputError(src, f"{prefix}.{key}", f"unknown key{did_you_mean(key, allowed)}; "
+                                                     f"allowed: {', '.join(sorted(allowed))}")
     out = dict(table)
     for key in ("creatures", "bodies", "gaits", "scenarios"):
         if key in out:
@@ -169,7 +172,8 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[s
     for key, known in names.items():
         for v in out.get(key, ()):
             if v not in known and not (key in ("creatures", "scenarios") and v.endswith(".toml")):
-                raise InputError(src, f"{prefix}.{key}", f"unknown {AXIS_KEYS[key]} {v!r}; choose one of {', '.join(known)}")
+                raise InputError(src, f"{prefix}.{key}", f"unknown {AXIS_KEYS[key]} {v!r}{did_you_mean(v, known)}; "
+                                                         f"choose one of {', '.join(known)}")
     return out
 
 

@@ -75,6 +75,20 @@ class FEMConfig:
         if self.mesh not in ("grid", "capsule") and not os.path.isfile(self.mesh):
             raise InputError(self.mesh, "body.mesh", "no such file; use 'grid', 'capsule' or the path of a closed "
                                                      "surface mesh trimesh can load")
+        if self.mesh != "grid":
+            missing = missing_mesh_packages()
+            if missing:
+                raise InputError(self.mesh, "body.mesh", f"a surface mesh other than 'grid' is tetrahedralized with "
+                                                         f"fTetWild, which needs {' and '.join(missing)} (not "
+                                                         f"installed): pip install 'bench-myriapoda[mesh]'")
+
+
+def missing_mesh_packages() -> list[str]:
+    """The packages of the ``[mesh]`` extra that are not installed (found without importing them:
+    pyvista, which pytetwild imports, takes seconds to import)."""
+    import importlib.util
+
+    return [m for m in ("pytetwild", "pyvista") if importlib.util.find_spec(m) is None]
 
 
 def surface_body_mesh(cfg: FEMConfig, n_seg: int, L: float, w: float, h: float):
