@@ -62,14 +62,17 @@ class Series:
 
     ``t`` (T,) [s]; ``com``, ``head``, ``tail`` (T, 3) [m] (x forward, y up, z right);
     ``segment_centers`` (T, n_seg, 3) [m], segment 0 the head; ``energy`` (T, 3) [J]:
-    kinetic, elastic, gravitational; ``nodes`` (T, n_nodes, 3) [m] with ``keep_nodes=True``, else None.
+    kinetic, elastic, gravitational; ``nodes`` (T, n_nodes, 3) [m] with ``keep_nodes=True``, else None;
+    ``segment_positions`` (T, n, 3) [m], ``segment_rotations`` (T, n, 3, 3) and ``segment_contact`` (T, n)
+    of the body's segments (``core.series.Series``).
     """
 
     ENERGY = ("kinetic_j", "elastic_j", "gravitational_j")
 
     def __init__(self, series):
         self._s = series
-        for name in ("t", "com", "head", "tail", "segment_centers", "energy", "nodes"):
+        for name in ("t", "com", "head", "tail", "segment_centers", "energy", "nodes", "segment_positions",
+                     "segment_rotations", "segment_contact"):
             setattr(self, name, getattr(series, name))
 
     def __len__(self) -> int:
