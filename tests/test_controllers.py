@@ -48,6 +48,15 @@ def test_every_creature_runs_on_every_body_with_every_gait():
         resolve_case(creature, body, scenario, gait)  # raises InputError for an unsupported combination
 
 
+def test_list_json_shows_every_creature_body_pair_with_all_its_gaits(capsys):
+    import json
+    from bench_myriapoda.cli import main
+    assert main(["list", "--json"]) == 0
+    listed = {(r["creature"], r["body"], r["gait"]) for r in json.loads(capsys.readouterr().out)["supported"]}
+    assert listed == {(c, b, g) for c, b, g, _ in ROWS}
+    assert len({(c, b) for c, b, _ in listed}) >= 18
+
+
 @pytest.mark.parametrize("creature, body, gait, scenario", ROWS, ids=["-".join(r[:3]) for r in ROWS])
 def test_conformance(creature, body, gait, scenario):
     case = resolve_case(creature, body, scenario, gait, duration=CONFORMANCE_S)

@@ -118,9 +118,11 @@ class Observation:
 class Body(Protocol):
     """A body model backend (``bodies/<name>/``): owns the state, integrates the dynamics.
 
-    Declared attributes: ``name``; ``capabilities`` (frozenset of MUSCLES, SEGMENTS, ...);
-    ``n_segments``; ``n_muscle_segments`` and ``muscle_s`` (n_muscle_segments,) [m];
-    ``body_length_m`` [m] rest length head to tail.
+    Declared attributes: ``name``; ``capabilities`` (frozenset of MUSCLES, SEGMENTS, LEGS);
+    ``n_segments``; ``segment_pitch_m`` [m] rest distance of neighbouring segment centres;
+    ``n_muscle_segments`` and ``muscle_s`` (n_muscle_segments,) [m]; ``body_length_m`` [m] rest
+    length head to tail.  A body with SEGMENTS also has ``apply_support(act)``,
+    ``segment_poses()``, ``segment_centers()`` and ``segment_half_extents`` (n_segments, 3) [m].
     """
 
     name: str
@@ -179,7 +181,7 @@ def body_info(body: Body, dt: float) -> dict[str, Any]:
     """What a controller's ``reset`` learns of the body: sizes, arc positions and the time step."""
     return {"n_segments": body.n_segments, "muscle_s": np.asarray(body.muscle_s, float),
             "body_length_m": float(body.body_length_m), "dt": float(dt), "capabilities": body.capabilities,
-            "segment_pitch_m": float(getattr(body, "segment_pitch_m", body.body_length_m / body.n_segments))}
+            "segment_pitch_m": float(body.segment_pitch_m)}
 
 
 def controller_settings(ctrl) -> tuple[frozenset, bool, float]:

@@ -162,6 +162,7 @@ class BodyFEM:
         self.n_segments = self.n_muscle_segments = n_seg
         self.muscle_s = (np.arange(n_seg) + 0.5) * L   # segment centres' rest arc length from the head [m]
         self.body_length_m = cre.body_length_m
+        self.segment_pitch_m = cre.segment_length_m  # centre-to-centre distance of segments [m]
         # each node takes the spine of the segment it belongs to (end-face nodes: the anterior one);
         # segment centres average the nodes of each segment's tets
         self.node_seg = np.clip(np.floor(-nodes[:, 0] / L + 1e-9).astype(np.int64), 0, n_seg - 1)

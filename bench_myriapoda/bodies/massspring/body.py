@@ -106,6 +106,7 @@ class BodyMassSpring:
         self.n_segments = self.n_muscle_segments = cre.segments
         self.muscle_s = (np.arange(cre.segments) + 0.5) * cre.segment_length_m
         self.body_length_m = cre.body_length_m
+        self.segment_pitch_m = cre.segment_length_m  # centre-to-centre distance of segments [m]
         # segment i owns the 8 nodes of faces i and i + 1 (CSR for ``segment_frames``)
         self._seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
         self._seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
