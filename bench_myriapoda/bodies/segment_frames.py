@@ -10,11 +10,15 @@ maps segment coordinates (x forward, y dorsal, z right) to world coordinates.
 """
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 from numba import njit
 
 from ..world.terrain_kernels import signed_distance
+from ..core.protocols import Actuation
 from .fem.kernels import polar_rotation
+from .friction_kernels import CONTACT_DISTANCE
 
 
 def csr_rest_offsets(rest: np.ndarray, ptr: np.ndarray, nodes: np.ndarray) -> np.ndarray:
@@ -84,3 +88,35 @@ def groups_touching(points, group_size, terr_kind, terr, distance, out):
             if signed_distance(terr_kind, terr, points[a, 0], points[a, 1], points[a, 2]) < distance:
                 out[s] = True
                 break
+
+
+class NodeSegments:
+    """Observation and rest actuation of a body whose segments are groups of nodes (the lattice,
+    the FEM mesh).  A subclass sets ``x``, ``v`` (n_nodes, 3), ``case``, ``n_segments``, the CSR
+    ``seg_ptr`` / ``seg_nodes`` of each segment's nodes, ``seg_rest_offsets``
+    (``csr_rest_offsets``), ``terr_kind`` / ``terr`` and ``fric``."""
+
+    @cached_property
+    def _rest_actuation(self) -> Actuation:
+        """No muscle strain: what ``advance`` reads when given no actuation."""
+        return Actuation.for_body(self)
+
+    def sense(self, obs, t: float) -> None:
+        """Control fields of ``obs``: each segment's best-fit frame of its nodes (module docstring)."""
+        n = self.n_segments
+        if obs.seg_pos is None or obs.seg_pos.shape[0] != n:
+            obs.seg_pos, obs.seg_rot, obs.seg_vel = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3))
+            cre = self.case.creature
+            obs.seg_half = np.tile(0.5 * np.array([cre.segment_length_m, cre.height_m, cre.width_m]), (n, 1))
+            self._A = np.zeros((3, 3))
+        obs.t = t
+        best_fit_frames(self.x, self.v, self.seg_ptr, self.seg_nodes, self.seg_rest_offsets, obs.seg_pos,
+                        obs.seg_rot, obs.seg_vel, self._A)
+
+    def _observe_segments(self, obs, t: float):
+        """Fill the control fields and ``seg_contact`` (any node within the friction contact distance)."""
+        self.sense(obs, t)
+        obs.seg_contact = np.zeros(self.n_segments, dtype=bool)
+        segments_touching(self.x, self.seg_ptr, self.seg_nodes, self.terr_kind, self.terr,
+                          self.fric[CONTACT_DISTANCE], obs.seg_contact)
+        return obs

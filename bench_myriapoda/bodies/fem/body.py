@@ -30,10 +30,10 @@ from ...core.protocols import MUSCLES, Actuation, Observation
 from ...core.schema import rng
 from ...world.terrain import terrain_from_scenario
 from .. import step_status as S
-from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..friction_kernels import friction_params
 from ..placement import place_points
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
-from ..segment_frames import best_fit_frames, csr_rest_offsets, segments_touching
+from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
 from .mesh import chain_grid, signed_volumes, tetrahedralize_surface
@@ -132,7 +132,7 @@ def default_dt(cfg: FEMConfig) -> float:
     return cfg.dt_s
 
 
-class BodyFEM:
+class BodyFEM(NodeSegments):
     """A segmented creature as one connected tetrahedral mesh, lying along +x (head first)."""
 
     name = "fem"
@@ -169,7 +169,7 @@ class BodyFEM:
         members = [np.unique(tets[tet_seg == i]) for i in range(n_seg)]
         self.seg_ptr = np.concatenate([[0], np.cumsum([len(m) for m in members])]).astype(np.int64)
         self.seg_nodes = np.concatenate(members).astype(np.int64)
-        self._seg_rest = csr_rest_offsets(nodes, self.seg_ptr, self.seg_nodes)
+        self.seg_rest_offsets = csr_rest_offsets(nodes, self.seg_ptr, self.seg_nodes)
         # the end faces (a smooth surface has no flat end: the nodes within 2 % of a body length)
         end_band = 1e-9 if cfg.mesh == "grid" else 0.02 * n_seg * L
         self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
@@ -206,10 +206,6 @@ class BodyFEM:
         self._min_J = math.inf
         self._inverted_max = 0
         self._max_strain = 0.0
-
-    @cached_property
-    def _rest_actuation(self) -> Actuation:
-        return Actuation.for_body(self)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -254,17 +250,6 @@ class BodyFEM:
         self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
         self._max_strain = max(self._max_strain, float(np.abs(self._sigma - 1.0).max()))
 
-    def sense(self, obs: Observation, t: float) -> None:
-        """Control fields of ``obs``: each segment's best-fit frame of its nodes (``segment_frames``)."""
-        n = self.n_segments
-        if obs.seg_pos is None or obs.seg_pos.shape[0] != n:
-            obs.seg_pos, obs.seg_rot, obs.seg_vel = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3))
-            cre = self.case.creature
-            obs.seg_half = np.tile(0.5 * np.array([cre.segment_length_m, cre.height_m, cre.width_m]), (n, 1))
-            self._A = np.zeros((3, 3))
-        obs.t = t
-        best_fit_frames(self.x, self.v, self.seg_ptr, self.seg_nodes, self._seg_rest, obs.seg_pos, obs.seg_rot,
-                        obs.seg_vel, self._A)
 
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         self._sample_invariants()
@@ -274,11 +259,7 @@ class BodyFEM:
         obs = Observation(t=t, segment_centers=self._centers.copy(), com=com,
                           head=self.x[self.head_nodes].mean(axis=0), tail=self.x[self.tail_nodes].mean(axis=0),
                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
-        self.sense(obs, t)
-        obs.seg_contact = np.zeros(self.n_segments, dtype=bool)
-        segments_touching(self.x, self.seg_ptr, self.seg_nodes, self.terr_kind, self.terr,
-                          self.fric[CONTACT_DISTANCE], obs.seg_contact)
-        return obs
+        return self._observe_segments(obs, t)
 
     @cached_property
     def _surface(self) -> tuple[np.ndarray, np.ndarray]:

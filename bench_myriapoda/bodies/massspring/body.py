@@ -18,11 +18,11 @@ import numpy as np
 from ...core.protocols import MUSCLES, Actuation, Observation
 from ...core.schema import rng
 from ...world.terrain import terrain_from_scenario
-from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..friction_kernels import friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
-from ..segment_frames import best_fit_frames, csr_rest_offsets, segments_touching
+from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
 from .lattice import build_lattice
 
@@ -77,7 +77,7 @@ def default_dt(cfg: MassSpringConfig) -> float:
     return 1.0 / (cfg.frame_rate_hz * cfg.substeps_per_frame)
 
 
-class BodyMassSpring:
+class BodyMassSpring(NodeSegments):
     """A creature as a Miller cube lattice on a terrain.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s].  The body is built lying
@@ -108,9 +108,9 @@ class BodyMassSpring:
         self.body_length_m = cre.body_length_m
         self.segment_pitch_m = cre.segment_length_m  # centre-to-centre distance of segments [m]
         # segment i owns the 8 nodes of faces i and i + 1 (CSR for ``segment_frames``)
-        self._seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
-        self._seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
-        self._seg_rest = csr_rest_offsets(lat.rest_nodes, self._seg_ptr, self._seg_nodes)
+        self.seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
+        self.seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
+        self.seg_rest_offsets = csr_rest_offsets(lat.rest_nodes, self.seg_ptr, self.seg_nodes)
         self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
@@ -133,10 +133,6 @@ class BodyMassSpring:
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
-
-    @cached_property
-    def _rest_actuation(self) -> Actuation:
-        return Actuation.for_body(self)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -165,17 +161,6 @@ class BodyMassSpring:
         return S.STATUS_TEXT.get(code, f"status {code}")
 
     # ------------------------------------------------------------------ observation
-    def sense(self, obs: Observation, t: float) -> None:
-        """Control fields of ``obs``: each segment's best-fit frame of its 8 nodes (``segment_frames``)."""
-        n = self.n_segments
-        if obs.seg_pos is None or obs.seg_pos.shape[0] != n:
-            obs.seg_pos, obs.seg_rot, obs.seg_vel = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3))
-            cre = self.case.creature
-            obs.seg_half = np.tile(0.5 * np.array([cre.segment_length_m, cre.height_m, cre.width_m]), (n, 1))
-            self._A = np.zeros((3, 3))
-        obs.t = t
-        best_fit_frames(self.x, self.v, self._seg_ptr, self._seg_nodes, self._seg_rest, obs.seg_pos, obs.seg_rot,
-                        obs.seg_vel, self._A)
 
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         x = self.x
@@ -184,11 +169,7 @@ class BodyMassSpring:
         com = (self.mass[:, None] * x).sum(axis=0) / self.mass.sum()
         obs = Observation(t=t, segment_centers=seg, com=com, head=faces[0], tail=faces[-1],
                           energy=np.array(self.energy(t)), nodes=x.copy() if with_nodes else None)
-        self.sense(obs, t)
-        obs.seg_contact = np.zeros(self.n_segments, dtype=bool)
-        segments_touching(x, self._seg_ptr, self._seg_nodes, self.terr_kind, self.terr, self.fric[CONTACT_DISTANCE],
-                          obs.seg_contact)
-        return obs
+        return self._observe_segments(obs, t)
 
     @cached_property
     def _surface_faces(self) -> np.ndarray:
