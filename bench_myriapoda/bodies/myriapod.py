@@ -50,6 +50,9 @@ class BodyMyriapod:
         self.behaviour = BehaviourSampler(ctrl.terr_kind, ctrl.terr, case.scenario.terrain == "none")
         cr = case.creature
         self._half = 0.5 * np.array([cr.segment_length_m, cr.height_m, cr.width_m])  # boxes of bodies without any
+        if ctrl.antennae is not None:  # antennae on the starting head pose: frame 0 of a scene shows them
+            c, R = segments.segment_poses()
+            ctrl.antennae.place(c[0], R[0], 0.0)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:
