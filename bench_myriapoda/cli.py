@@ -270,17 +270,6 @@ def cmd_run(args) -> int:
 
 def _check_frame_outputs(args) -> None:
     """Validate --animate, --export-frames and --frame-format before anything runs or is written."""
-    if args.animate:
-        from matplotlib.animation import FFMpegWriter
-
-        from .report.animate import SUFFIXES
-
-        suffix = Path(args.animate).suffix.lower()
-        if suffix not in SUFFIXES:
-            raise InputError("--animate", None, f"{args.animate!r}: the file name must end in .gif or .mp4")
-        if suffix == ".mp4" and not FFMpegWriter.isAvailable():
-            raise InputError("--animate", None, f"{args.animate!r}: writing .mp4 needs ffmpeg, which is not on PATH; "
-                                                "install ffmpeg or write a .gif")
     for flag, value in (("--size", args.size), ("--view", args.view)):
         if value is not None and not args.animate:
             raise InputError(flag, None, "only meaningful with --animate")
@@ -293,6 +282,17 @@ def _check_frame_outputs(args) -> None:
             raise InputError("--size", None, str(exc)) from None
         if Path(args.animate).suffix.lower() == ".mp4" and (w % 2 or h % 2):
             raise InputError("--size", None, f"{args.size!r}: an .mp4 (H.264, yuv420p) needs an even width and height")
+    if args.animate:
+        from matplotlib.animation import FFMpegWriter
+
+        from .report.animate import SUFFIXES
+
+        suffix = Path(args.animate).suffix.lower()
+        if suffix not in SUFFIXES:
+            raise InputError("--animate", None, f"{args.animate!r}: the file name must end in .gif or .mp4")
+        if suffix == ".mp4" and not FFMpegWriter.isAvailable():
+            raise InputError("--animate", None, f"{args.animate!r}: writing .mp4 needs ffmpeg, which is not on PATH; "
+                                                "install ffmpeg or write a .gif")
     if args.frame_format and not args.export_frames:
         raise InputError("--frame-format", None, "only meaningful with --export-frames")
     if args.export_frames:
