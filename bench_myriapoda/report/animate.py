@@ -356,6 +356,7 @@ MIN_FIG_WIDTH = 7.5                      # room for the leg-state legend
 LEFT, GAP, RIGHT = 0.75, 0.95, 0.2       # margins left of, between and right of the two panels
 BOTTOM, TOP, LEGEND = 0.5, 0.65, 0.5     # x labels; panel titles and the time line; the leg-state legend
 MAX_PANEL_HEIGHT = 6.0
+STACK_GAP = 0.75                         # [in] between panels placed one above the other (x labels, title)
 DEFAULT_DPI = 80                         # pixels per inch without --size: 13 in = 1040 px
 REF_HEIGHT = 6.5                         # [in] the height a --size picture is laid out for (with FIG_WIDTH)
 MIN_DPI, MAX_DPI = 40, 300
@@ -377,9 +378,10 @@ def parse_size(text: str) -> tuple[int, int]:
 
 def size_dpi(size: tuple[int, int]) -> float:
     """Pixels per inch for a picture of ``size`` (W, H) [px]: the layout's fonts and margins (in inches and
-    points) keep their proportion to a FIG_WIDTH x REF_HEIGHT picture, within MIN_DPI..MAX_DPI."""
+    points) keep their share of the picture's area as in a FIG_WIDTH x REF_HEIGHT inch picture, within
+    MIN_DPI..MAX_DPI (1040 x 720 px: 94 dpi; 1920 x 1080: 157)."""
     w, h = size
-    return float(min(MAX_DPI, max(MIN_DPI, min(w / FIG_WIDTH, h / REF_HEIGHT))))
+    return float(min(MAX_DPI, max(MIN_DPI, math.sqrt(w * h / (FIG_WIDTH * REF_HEIGHT)))))
 
 
 def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: float, size_in=None):
@@ -393,6 +395,7 @@ def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: float, size_i
     xs = xlim[1] - xlim[0]
     ratios = ((zlim[1] - zlim[0]) / xs, (ylim[1] - ylim[0]) / xs)
     bottom = BOTTOM + LEGEND * has_legs
+    stacked = False
     if size_in is None:
         pw = 0.5 * (FIG_WIDTH - LEFT - GAP - RIGHT)
         pw = min(pw, MAX_PANEL_HEIGHT / max(ratios))  # a tall view (a hanging body) makes the panels narrower
@@ -400,16 +403,27 @@ def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: float, size_i
         height = bottom + pw * max(ratios) + TOP
     else:
         width, height = size_in
-        pw = max(0.1, min(0.5 * (width - LEFT - GAP - RIGHT), (height - bottom - TOP) / max(ratios)))
+        free_h = height - bottom - TOP
+        beside = min(0.5 * (width - LEFT - GAP - RIGHT), free_h / max(ratios))
+        # one above the other (the top view above) when that makes the panels larger, e.g. a 4:3 picture
+        above = min(width - LEFT - RIGHT, (free_h - STACK_GAP) / sum(ratios))
+        stacked = above > beside
+        pw = max(0.1, above if stacked else beside)
     ph = [pw * r for r in ratios]
-    left0 = 0.5 * (width - (2 * pw + GAP + RIGHT - LEFT))  # centred when the figure is wider than the panels
-    bottom += 0.5 * max(0.0, height - bottom - TOP - max(ph))  # and vertically when it is taller
     fig = plt.figure(figsize=(width, height), dpi=dpi)
+    if stacked:
+        left0 = 0.5 * (width - (pw + RIGHT - LEFT))
+        b0 = bottom + 0.5 * max(0.0, height - bottom - TOP - sum(ph) - STACK_GAP)
+        boxes = [(left0, b0 + ph[1] + STACK_GAP, ph[0]), (left0, b0, ph[1])]
+    else:
+        left0 = 0.5 * (width - (2 * pw + GAP + RIGHT - LEFT))  # centred when the figure is wider than the panels
+        b0 = bottom + 0.5 * max(0.0, height - bottom - TOP - max(ph))  # and vertically when it is taller
+        boxes = [(left0, b0, ph[0]), (left0 + pw + GAP, b0, ph[1])]
     axes = []
     for k, (vlim, label, name) in enumerate(((zlim, "z [m]", "from above (x-z)"),
                                              (ylim, "y [m]", "from the right side (x-y)"))):
-        left = left0 + k * (pw + GAP)
-        ax = fig.add_axes((left / width, bottom / height, pw / width, ph[k] / height))
+        left, low, h = boxes[k]
+        ax = fig.add_axes((left / width, low / height, pw / width, h / height))
         ax.set_xlim(*xlim)
         ax.set_ylim(*vlim)
         ax.set_xlabel("x [m]", fontsize=9, labelpad=1)

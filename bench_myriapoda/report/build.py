@@ -118,7 +118,7 @@ class _Page:
         rel = path.relative_to(self.fig_dir.parent).as_posix()
         anchor = "fig-" + _slug(path.stem)
         if path in self.figures:
-            self.html.append(f'<p class="note"><a href="#{anchor}">{html.escape(caption)}</a> (shown above)</p>')
+            self.html.append(f'<p class="note">{html.escape(caption)}: {html.escape(path.name)}, shown above</p>')
             self.md.append(f"{caption}: see above ({rel})\n")
             return
         self.figures.append(path)
@@ -126,10 +126,10 @@ class _Page:
                          f"<figcaption>{html.escape(caption)}</figcaption></figure>")
         self.md.append(f"![{caption}]({rel})\n")
 
-    def link(self, path: Path, text: str) -> None:
-        """A line pointing at a figure shown elsewhere in the report (not drawn again)."""
-        self.html.append(f'<p class="note">{html.escape(text)}: <a href="#fig-{_slug(path.stem)}">'
-                         f"{html.escape(path.name)}</a></p>")
+    def link(self, path: Path, text: str, section: str) -> None:
+        """A line pointing at a figure shown in another section of the report (not drawn again)."""
+        self.html.append(f'<p class="note">{html.escape(text)}: <a href="#{section}">{html.escape(path.name)}'
+                         f"</a> in section {html.escape(dict(SECTIONS)[section])}</p>")
         self.md.append(f"{text}: see {path.relative_to(self.fig_dir.parent).as_posix()}\n")
 
 
@@ -401,8 +401,7 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         if "gait" in fig.images and "leg_states" in rec and len(rec["leg_t"]) > 1:
             gait_png = page.fig_dir / f"gait_{slug}.png"
             if gait_png in page.figures:
-                page.link(gait_png, "Leg states during the last second (the right panel of Fig. 10): in the gait "
-                                    "section")
+                page.link(gait_png, "Leg states during the last second (the right panel of Fig. 10)", "gait")
             else:  # the gait section stopped at MAX_GAIT_CASES before this case
                 plot_gait_diagram(rec["leg_t"], rec["leg_states"], gait_png, last_seconds=1.0,
                                   title=f"{r.label}: leg states, last second")
@@ -410,7 +409,7 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         if "top" in fig.images:
             top_png = page.fig_dir / f"top_{_slug(r.creature, r.scenario, r.body)}.png"
             if top_png in page.figures:
-                page.link(top_png, "Seen from above: in the trajectories section")
+                page.link(top_png, "Seen from above", "trajectories")
             else:
                 page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png",
                                            scenarios=[scen], foods=[food]), "Seen from above.")

@@ -132,12 +132,18 @@ def comparison_tables(df: pd.DataFrame, grid_columns: Sequence[str] = ()) -> dic
                 continue
             values = pd.to_numeric(sub[col], errors="coerce")
             reasons = pd.Series([not_applicable_reason(r, col) or "" for _, r in sub.iterrows()], index=sub.index)
-            values = values.where(reasons == "")
-            if values.notna().any():
-                table[head] = values
+            if values.notna().any():  # measured for some case: shown, blanked (with the reason) where meaningless
+                table[head] = values.where(reasons == "")
                 notes[head] = reasons
-        order = table.assign(_sweep=[bool(x) for x in swept], _swept=swept).sort_values(
-            ["_sweep"] + [c for c in ("body", "gait", "scenario") if c in table] + ["_swept"]).index
+        # outside sweeps first; then by body, gait, scenario, the swept values (numerically) and the seed
+        keys = table.assign(_sweep=[bool(x) for x in swept])
+        by = ["_sweep"] + [c for c in ("body", "gait", "scenario") if c in table]
+        for col in grid_columns:
+            keys[col] = pd.to_numeric(sub[col], errors="coerce")
+            by.append(col)
+        if "seed" in table:
+            by.append("seed")
+        order = keys.sort_values(by, na_position="first").index
         table, notes = table.loc[order].reset_index(drop=True), notes.loc[order].reset_index(drop=True)
         used = set(notes.to_numpy().ravel()) - {""}
         out[str(creature)] = ComparisonTable(table, notes, {k: text for k, _, text in NOT_APPLICABLE if k in used})
