@@ -37,7 +37,7 @@ from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noq
 from ..bodies.scene import Scene  # noqa: E402
 from ..world.terrain_kernels import H_NOBST, OBST_CYLINDER, SLAB, obstacle_records  # noqa: E402
 from .animate import (  # noqa: E402
-    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, KIND_COLORS, OBSTACLE_COLOR,
+    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, KIND_COLORS,
     add_leg_state_legend, surface_height,
 )
 from ..metrics.gait import STATE_COLORS  # noqa: E402
@@ -53,6 +53,7 @@ LIGHT = np.array([-0.35, 1.0, 0.45]) / np.linalg.norm([-0.35, 1.0, 0.45])  # tow
 AMBIENT = 0.35                        # shade of a face turned away from the light
 GROUND_DARK = "#d8ccb4"               # the checkerboard's second colour
 CYLINDER_SIDES = 16
+OBSTACLE_3D_COLOR = "#a4a4a4"         # lighter than the 2-D view's grey: the shading darkens it
 
 
 def _to_plot(p: np.ndarray) -> np.ndarray:
@@ -108,6 +109,9 @@ def ground_cells(terrain, xlim, zlim, step: float) -> tuple[list, np.ndarray]:
     A slab's edge is a cell boundary, so the step shows as a wall.
     """
     kind, f = terrain
+    if f.shape[0] > H_NOBST and f[H_NOBST] > 0:  # the ground alone: obstacles are drawn as solids
+        f = f.copy()
+        f[H_NOBST] = 0.0
     xe = np.arange(math.floor(xlim[0] / step), math.ceil(xlim[1] / step) + 1) * step
     xe = np.clip(xe, *xlim)
     if kind == SLAB and xlim[0] < f[2] < xlim[1]:  # the book's edge: a near-vertical cell of width 1e-6 step
@@ -174,7 +178,13 @@ def obstacle_polygons(terrain, xlim, zlim, toward_camera: np.ndarray) -> tuple[n
     # outward normals: flip those pointing at the obstacle's inside is not needed for shading alone, but
     # culling needs a consistent orientation; use two-sided shading and no culling for obstacles
     n = np.where((n @ toward_camera < 0)[:, None], -n, n)
-    return q[ok], shade(n[ok], to_rgb(OBSTACLE_COLOR))
+    return q[ok], shade(n[ok], to_rgb(OBSTACLE_3D_COLOR))
+
+
+def nice_step(target: float) -> float:
+    """The smallest of 1, 2, 5 x 10^k [m] at least ``target`` [m]: checkerboard cells of a round size."""
+    base = 10.0 ** math.floor(math.log10(target))
+    return next(m * base for m in (1.0, 2.0, 5.0, 10.0) if m * base >= target * (1 - 1e-9))
 
 
 def camera_window(frames: Sequence[Scene]) -> tuple[float, float]:
@@ -205,8 +215,7 @@ def figure_3d(frames: Sequence[Scene], terrain, title: str, dpi: float, size_in)
     R, V = camera_window(frames)
     ax.set_box_aspect((2 * R, 2 * R, V), zoom=ZOOM)
     toward = camera_direction()
-    step = 10.0 ** math.floor(math.log10(2 * R / GROUND_CELLS))
-    step *= 2.0 if 2 * R / step > 2 * GROUND_CELLS else 1.0
+    step = nice_step(2 * R / GROUND_CELLS)
 
     ground = ax.add_collection3d(Poly3DCollection([], linewidths=0.0, zorder=0), autolim=False)
     legs_far = ax.add_collection3d(Line3DCollection([], linewidths=1.8, zorder=1), autolim=False)
@@ -235,7 +244,7 @@ def figure_3d(frames: Sequence[Scene], terrain, title: str, dpi: float, size_in)
             quads, qcol = ground_cells(terrain, gx, gz, step)
             ground.set_verts([_to_plot(q) for q in quads])
             ground.set_facecolor(qcol)
-            obst, ocol = obstacle_polygons(terrain, xlim, zlim, toward)
+            obst, ocol = obstacle_polygons(terrain, gx, gz, toward)
         else:
             obst, ocol = np.zeros((0, 4, 3)), np.zeros((0, 4))
         tris, tcol = body_polygons(scene, toward)
