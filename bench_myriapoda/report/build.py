@@ -362,7 +362,8 @@ def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         for _, r in sub.iterrows():
             rec = res.recording(r.case_hash)
             if rec is not None and len(rec["t"]) > 1:
-                runs.append((f"{r.body} / {r.gait} / {r.scenario}", series_from_recording(rec)))
+                runs.append((f"{r.body} / {r.gait} / {r.scenario}"
+                             + ("" if pd.isna(r.get("seed")) else f" / seed {int(r.seed)}"), series_from_recording(rec)))
         if runs:
             path = plot_energy(runs[:9], page.fig_dir / f"energy_{_slug(creature)}.png")
             page.figure(path, f"{creature}: kinetic, elastic, gravitational and total energy relative to t = 0 [J].")

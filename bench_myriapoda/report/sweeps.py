@@ -107,7 +107,8 @@ def plot_stability_heatmap(sub: pd.DataFrame, key: str, path: Path, title: str,
 
     Colour bar: t_fail / duration from 0 (blew up at once, dark red) to 1 (light); green = stable for
     the whole run; grey = error or timeout; white = not run at this dt.  Each cell is also labelled
-    (``stable``, t_fail in s, or the status).  dts: the columns [s] (``shared_dt_grid``), default this
+    (``stable``, t_fail in s, or the status).  Several seeds in a cell: the earliest blow-up, with
+    "(k/n)" when only k of the n seeds blew up.  dts: the columns [s] (``shared_dt_grid``), default this
     sweep's own.
     """
     kcol = f"grid.{key}"
@@ -119,19 +120,23 @@ def plot_stability_heatmap(sub: pd.DataFrame, key: str, path: Path, title: str,
     text = np.full((len(ks), len(dts)), "not run", dtype=object)
     cmap = plt.get_cmap("Reds_r")
     norm = Normalize(0.0, 1.0)
-    for _, r in sub.iterrows():
-        i = ks.index(float(r[kcol]))
-        j = int(np.argmin([abs(d - float(r["dt"])) for d in dts]))
-        if r["status"] == "ok":
-            rgba[i, j], text[i, j] = STABLE_COLOR, "stable"
-        elif r["status"] == "unstable":
-            tf = float(r.get("metric.t_fail_s", np.nan))
+    sub = sub.assign(_k=sub[kcol].astype(float), _dt=sub["dt"].astype(float))
+    for (k, dt), cell in sub.groupby(["_k", "_dt"], sort=False):  # several seeds share a cell
+        i, j = ks.index(k), int(np.argmin([abs(d - dt) for d in dts]))
+        status = list(cell["status"])
+        n_unstable, n = status.count("unstable"), len(status)
+        if n_unstable:  # the earliest blow-up of the cell's seeds; "k/n" when not every seed blew up
+            tf = float(pd.to_numeric(cell.loc[cell.status == "unstable", "metric.t_fail_s"], errors="coerce").min()) \
+                if "metric.t_fail_s" in cell else math.nan
             frac = tf / duration if math.isfinite(tf) and duration > 0 else 0.0
             survived[i, j] = frac
             rgba[i, j] = cmap(norm(0.8 * frac))  # at most 0.8 of the map: the lightest reds stay visible
-            text[i, j] = f"{tf:.2g} s" if math.isfinite(tf) else "unstable"
+            text[i, j] = (f"{tf:.2g} s" if math.isfinite(tf) else "unstable") + \
+                ("" if n_unstable == n else f" ({n_unstable}/{n})")
+        elif all(st == "ok" for st in status):
+            rgba[i, j], text[i, j] = STABLE_COLOR, "stable"
         else:
-            rgba[i, j], text[i, j] = ERROR_COLOR, str(r["status"])
+            rgba[i, j], text[i, j] = ERROR_COLOR, next(st for st in status if st != "ok")
     fig, ax = plt.subplots(figsize=(max(8.5, 1.25 * len(dts) + 4.2), 0.62 * len(ks) + 2.6), layout="constrained")
     ax.imshow(rgba, origin="lower", aspect="auto")
     for i in range(len(ks)):
