@@ -175,8 +175,8 @@ def obstacle_polygons(terrain, xlim, zlim, toward_camera: np.ndarray) -> tuple[n
         return np.zeros((0, 4, 3)), np.zeros((0, 4))
     q = np.asarray(quads, dtype=float)
     n, ok = _unit_normals(q)
-    # outward normals: flip those pointing at the obstacle's inside is not needed for shading alone, but
-    # culling needs a consistent orientation; use two-sided shading and no culling for obstacles
+    # the fan tops and the flipped box faces are not all wound alike: shade both sides alike (each normal
+    # turned toward the camera) and cull nothing -- mplot3d's depth sort hides the far faces
     n = np.where((n @ toward_camera < 0)[:, None], -n, n)
     return q[ok], shade(n[ok], to_rgb(OBSTACLE_3D_COLOR))
 
@@ -220,7 +220,8 @@ def figure_3d(frames: Sequence[Scene], terrain, title: str, dpi: float, size_in)
     ground = ax.add_collection3d(Poly3DCollection([], linewidths=0.0, zorder=0), autolim=False)
     legs_far = ax.add_collection3d(Line3DCollection([], linewidths=1.8, zorder=1), autolim=False)
     solids = ax.add_collection3d(Poly3DCollection([], linewidths=0.2, zorder=2), autolim=False)
-    springs = ax.add_collection3d(Line3DCollection([], colors=[(0.2, 0.2, 0.2, 0.35)], linewidths=0.4, zorder=2.5), autolim=False)
+    springs = ax.add_collection3d(Line3DCollection([], colors=[(0.2, 0.2, 0.2, 0.35)], linewidths=0.4, zorder=2.5),
+                                  autolim=False)
     legs_near = ax.add_collection3d(Line3DCollection([], linewidths=1.8, zorder=3), autolim=False)
     antennae = ax.add_collection3d(Line3DCollection([], linewidths=1.3, zorder=4), autolim=False)
     for coll in (ground, legs_far, solids, springs, legs_near, antennae):
@@ -240,7 +241,8 @@ def figure_3d(frames: Sequence[Scene], terrain, title: str, dpi: float, size_in)
         ax.set_zlim(c[1] - 0.45 * V, c[1] + 0.55 * V)
         if terrain is not None:
             # the floor reaches past the window (mplot3d does not clip): it fills the picture to the horizon
-            gx, gz = (c[0] - GROUND_REACH * R, c[0] + GROUND_REACH * R), (c[2] - GROUND_REACH * R, c[2] + GROUND_REACH * R)
+            reach = GROUND_REACH * R
+            gx, gz = (c[0] - reach, c[0] + reach), (c[2] - reach, c[2] + reach)
             quads, qcol = ground_cells(terrain, gx, gz, step)
             ground.set_verts([_to_plot(q) for q in quads])
             ground.set_facecolor(qcol)

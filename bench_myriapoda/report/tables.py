@@ -83,7 +83,8 @@ def swept_values(row, grid_columns: Sequence[str]) -> str:
         v = row.get(col)
         if v is None or (isinstance(v, float) and not math.isfinite(v)):
             continue
-        parts.append(f"{col.removeprefix('grid.')}={v:.4g}" if isinstance(v, float) else f"{col.removeprefix('grid.')}={v}")
+        key = col.removeprefix("grid.")
+        parts.append(f"{key}={v:.4g}" if isinstance(v, float) else f"{key}={v}")
     return ", ".join(parts)
 
 

@@ -14,6 +14,7 @@ from ..harness.recorder import Series  # noqa: E402
 from matplotlib.cm import ScalarMappable  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.colors import Normalize  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from .figure_files import WIDE_IN, save_figure  # noqa: E402
 
@@ -79,7 +80,10 @@ def _limits(points: np.ndarray, min_span: float, pad_frac: float = 0.06):
     lo, hi = p[:, [0, 2]].min(axis=0), p[:, [0, 2]].max(axis=0)
     span = max(float((hi - lo).max()), min_span, 1e-6)
     half = np.maximum(0.5 * (hi - lo), 0.5 * MIN_SHORT_SIDE * span)
-    half[np.argmax(hi - lo)] = 0.5 * span  # the long side: at least min_span
+    if (hi - lo).max() < min_span:  # a body that barely moved: a square window of min_span
+        half[:] = 0.5 * span
+    else:
+        half[np.argmax(hi - lo)] = 0.5 * span
     half += pad_frac * span
     mid = 0.5 * (lo + hi)
     return (mid[0] - half[0], mid[0] + half[0]), (mid[1] - half[1], mid[1] + half[1])
@@ -146,6 +150,7 @@ def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: in
                     linewidths=0.4)
         ax.set_title(f"{title}: body")
         axp.set_title("centre-of-mass path, zoomed")
+        axp.xaxis.set_major_locator(MaxNLocator(4))  # long tick labels of a small window must not overlap
         for a, ((x0, x1), (z0, z1)) in ((ax, blim), (axp, plim)):
             a.set_xlim(x0, x1)
             a.set_ylim(z1, z0)  # z points to the right of a creature facing +x: down, seen from above
