@@ -67,6 +67,12 @@ def build_parser() -> argparse.ArgumentParser:
                                                             "and DIR/frames.json, for Blender or Maya")
     run.add_argument("--frame-format", choices=("obj", "ply"), default=None,
                      help="mesh format of --export-frames (default obj)")
+    run.add_argument("--size", metavar="WxH", default=None,
+                     help="pixel size of the --animate picture, e.g. 1280x720 (default: 1040 px wide for the 2-D "
+                          "view, 1040x720 for the 3-D view; even numbers for .mp4)")
+    run.add_argument("--view", choices=("2d", "3d"), default=None,
+                     help="--animate view: 2d = from above and from the side (default); 3d = a shaded perspective "
+                          "view whose camera follows the creature")
 
     sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
     _case_arguments(sd)
@@ -275,6 +281,18 @@ def cmd_run(args) -> int:
 
 def _check_frame_outputs(args) -> None:
     """Validate --animate, --export-frames and --frame-format before anything runs or is written."""
+    for flag, value in (("--size", args.size), ("--view", args.view)):
+        if value is not None and not args.animate:
+            raise InputError(flag, None, "only meaningful with --animate")
+    if args.size is not None:
+        from .report.animate import parse_size
+
+        try:
+            w, h = parse_size(args.size)
+        except ValueError as exc:
+            raise InputError("--size", None, str(exc)) from None
+        if Path(args.animate).suffix.lower() == ".mp4" and (w % 2 or h % 2):
+            raise InputError("--size", None, f"{args.size!r}: an .mp4 (H.264, yuv420p) needs an even width and height")
     if args.animate:
         from matplotlib.animation import FFMpegWriter
 
@@ -301,9 +319,11 @@ def _frame_recorder(args, case):
     """(the runner's on_sample hook or None, every how many recorded frames the animation keeps one)."""
     if not (args.animate or args.export_frames):
         return None, 1
-    from .report.animate import FrameRecorder, expected_samples, frame_stride, sample_period
+    from .report.animate import GIF_TICK_S, FrameRecorder, expected_samples, frame_stride, sample_period
 
-    anim_stride = frame_stride(expected_samples(case), sample_period(case))
+    # a GIF shows frames for whole centiseconds: choose the stride so every frame interval is one
+    tick = GIF_TICK_S if args.animate and Path(args.animate).suffix.lower() == ".gif" else None
+    anim_stride = frame_stride(expected_samples(case), sample_period(case), tick_s=tick) if args.animate else 1
     if args.export_frames:  # the export wants every sample; the animation takes every anim_stride-th of them
         return FrameRecorder(1), anim_stride
     return FrameRecorder(anim_stride), 1
@@ -325,7 +345,7 @@ def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
 
     try:
         if args.animate:
-            from .report.animate import write_animation
+            from .report.animate import parse_size, write_animation
             from .world.terrain import terrain_from_scenario
 
             terrain = None if case.scenario.terrain == "none" else terrain_from_scenario(case.scenario)
@@ -334,8 +354,11 @@ def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
             if water is not None:
                 water = (water[0][::anim_stride], water[1])
             info = write_animation(frames.frames[::anim_stride], frames.times[::anim_stride], terrain,
-                                   Path(args.animate), title=title, water=water)
-            print(f"animation: {info['path']} ({info['frames']} frames at {info['fps']:.3g} fps)", file=note)
+                                   Path(args.animate), title=title, water=water,
+                                   size=parse_size(args.size) if args.size else None, view=args.view or "2d")
+            w, h = info["size"]
+            print(f"animation: {info['path']} ({info['frames']} frames at {info['fps']:.3g} fps, {w}x{h} px)",
+                  file=note)
         if args.export_frames:
             from .report.export_frames import export_frames
 

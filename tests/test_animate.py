@@ -28,9 +28,9 @@ from bench_myriapoda.core import registry
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import run_case
 from bench_myriapoda.metrics.gait import STATE_COLORS
-from bench_myriapoda.report.animate import (FrameRecorder, _leg_segments, _project_triangles, expected_samples,
-                                            frame_stride, playback_fps, sample_period, surface_height, view_limits,
-                                            write_animation)
+from bench_myriapoda.report.animate import (FrameRecorder, _antenna_segments, _leg_segments, _project_triangles,
+                                            expected_samples, frame_stride, gif_durations_cs, playback_fps,
+                                            sample_period, surface_height, view_limits, write_animation)
 from bench_myriapoda.report.export_frames import TUBE_SECTIONS, export_frames, scene_mesh, tubes
 from bench_myriapoda.world.terrain import terrain_from_scenario
 from bench_myriapoda.world.terrain_kernels import terrain_phi_numpy
@@ -243,12 +243,13 @@ def test_run_animate_gif_has_one_frame_per_kept_sample_played_in_real_time(capsy
     code, out, err = cli(capsys, *WORM, "--duration", "1", "--animate", gif, "--no-store")
     assert code == 0, err
     with Image.open(gif) as im:
-        # 1 s at 60 samples/s = 61 samples (t = 0 included), every 2nd kept: 30 frames per simulated second
-        assert im.n_frames == 31
-        assert abs(im.info["duration"] - 1000 / 30) <= 10  # [ms]; GIF stores centiseconds
-        im.seek(15)
+        # 1 s at 60 samples/s = 61 samples (t = 0 included); a GIF keeps every 3rd (50 ms = 5 whole cs:
+        # every 2nd would be 33.3 ms, which a GIF can only show as 30 or 40 ms)
+        assert im.n_frames == 21
+        assert im.info["duration"] == 50  # [ms]
+        im.seek(10)
         assert len(im.convert("RGB").getcolors(1 << 20)) > 10  # drawn, not blank
-    assert "31 frames" in out
+    assert "21 frames" in out
     assert [p.name for p in gif.parent.iterdir()] == ["worm.gif"]  # no temporary file left
 
 
@@ -385,3 +386,144 @@ def test_frame_format_needs_export_frames(capsys, tmp_path):
     code, _, err = cli(capsys, *WORM, "--frame-format", "stl", "--export-frames", tmp_path / "x", "--no-store")
     assert code == 2 and "--frame-format" in err
     assert list(tmp_path.iterdir()) == []
+
+
+# --------------------------------------------------------------------------- real-time GIFs, size, 3-D view
+
+def _gif_durations(path) -> list[int]:
+    with Image.open(path) as im:
+        out = []
+        for i in range(im.n_frames):
+            im.seek(i)
+            out.append(im.info["duration"])
+    return out
+
+
+def test_gif_frame_durations_equal_the_recordings_sample_interval(capsys, tmp_path):
+    gif, rec = tmp_path / "w.gif", tmp_path / "w.npz"
+    code, _, err = cli(capsys, *WORM, "--duration", "1.5", "--animate", gif, "--record", rec, "--no-store")
+    assert code == 0, err
+    with np.load(rec) as z:
+        t = z["t"]
+    durations = np.array(_gif_durations(gif), dtype=float)  # [ms]
+    stride = (len(t) - 1) // (len(durations) - 1)
+    assert stride * (len(durations) - 1) == len(t) - 1       # every stride-th sample, the last one included
+    interval_ms = 1000.0 * np.diff(t[::stride])               # the simulated time each frame stands for
+    assert np.abs(durations[:-1] - interval_ms).max() <= 1.0
+    assert abs(durations[-1] - interval_ms[-1]) <= 1.0
+    assert abs(durations.sum() - 1000.0 * (t[-1] - t[0]) - durations[-1]) <= 1.0  # real time overall
+
+
+def test_gif_durations_spread_the_rounding_when_no_stride_is_whole_centiseconds():
+    # 16.8 ms samples (dt = 0.7 ms, 24 steps a sample): 2 samples = 33.6 ms, never whole centiseconds
+    assert frame_stride(200, 0.0168, tick_s=0.01) == 2
+    times = np.arange(60) * 0.0336
+    cs = np.array(gif_durations_cs(times))
+    assert set(cs) <= {3, 4}
+    assert np.abs(np.cumsum(cs[:-1]) * 10.0 - 1000.0 * times[1:]).max() <= 5.0  # never more than 5 ms off
+    assert frame_stride(61, 1 / 60, tick_s=0.01) == 3 and frame_stride(101, 0.02, tick_s=0.01) == 2
+    assert gif_durations_cs(np.arange(5) / 60, fps=20) == [5] * 5
+
+
+@pytest.fixture(scope="module")
+def centipede_outputs(tmp_path_factory):
+    """A short centipede run animated in 3-D at a given size, its frames exported, and its frame recorder."""
+    d = tmp_path_factory.mktemp("centipede")
+    argv = ["run", "--creature", "centipede", "--body", "massspring", "--scenario", "walk", "--duration", "0.2",
+            "--no-store", "--animate", str(d / "c.gif"), "--view", "3d", "--size", "640x400",
+            "--export-frames", str(d / "frames")]
+    assert main(argv) == 0
+    rec = FrameRecorder(1)
+    run_case(resolve_case("centipede", "massspring", "walk", duration=0.2), on_sample=rec)
+    return d, rec
+
+
+def test_antennae_have_their_length_in_frame_0(centipede_outputs):
+    d, rec = centipede_outputs
+    case = resolve_case("centipede", "massspring", "walk", duration=0.2)
+    ant = rec.frames[0].antennae
+    assert rec.times[0] == 0.0
+    np.testing.assert_allclose(np.linalg.norm(np.diff(ant, axis=1), axis=2), case.antennae.link_length_m, rtol=1e-9)
+    seg, _ = _antenna_segments(rec.frames[0], "side")       # what the 2-D GIF draws
+    assert min(np.linalg.norm(s[-1] - s[0]) for s in seg) > 0.5 * case.antennae.link_length_m
+    # the antenna roots sit on the head: the same place as in the next frame, to within its motion
+    assert np.abs(rec.frames[0].antennae[:, 0] - rec.frames[1].antennae[:, 0]).max() < 0.05
+    # the exported frame 0: the antenna tubes span the antennae
+    groups = _obj_groups(d / "frames" / "frame_00000.obj")
+    verts = groups["__vertices__"]
+    r = json.loads((d / "frames" / "frames.json").read_text())["leg_tube_radius_m"]  # antenna tubes: r / 2
+    for a in (0, 1):
+        used = verts[np.unique(groups[f"antenna_{a}"]) - 1]
+        np.testing.assert_allclose(used.min(axis=0), ant[a].min(axis=0), atol=0.5 * r + 1e-9)
+        np.testing.assert_allclose(used.max(axis=0), ant[a].max(axis=0), atol=0.5 * r + 1e-9)
+
+
+def _obj_groups(path) -> dict:
+    """{group name: (F, 3) 1-based face indices} of an OBJ file, and its vertices under '__vertices__'."""
+    groups, verts, current = {}, [], None
+    for line in path.read_text().splitlines():
+        if line.startswith("v "):
+            verts.append([float(x) for x in line.split()[1:4]])
+        elif line.startswith("g "):
+            current = line[2:].strip()
+            groups[current] = []
+        elif line.startswith("f "):
+            groups[current].append([int(x) for x in line.split()[1:4]])
+    out = {k: np.array(v, dtype=int) for k, v in groups.items()}
+    out["__vertices__"] = np.array(verts)
+    return out
+
+
+def test_exported_obj_frames_name_one_group_per_part(centipede_outputs):
+    d, rec = centipede_outputs
+    scene = rec.frames[-1]
+    n_legs = len(scene.legs)
+    groups = _obj_groups(d / "frames" / sorted(p.name for p in (d / "frames").glob("*.obj"))[-1])
+    names = [k for k in groups if k != "__vertices__"]
+    assert names == ["body"] + [f"leg_{k:02d}" for k in range(n_legs)] + ["antenna_0", "antenna_1"]
+    per_tube = len(tubes(np.zeros((1, 3)), np.ones((1, 3)), 0.1)[1])
+    assert len(groups["body"]) == sum(len(f) for _, f, _ in scene.triangles)
+    links = scene.antennae.shape[1] - 1
+    assert all(len(groups[f"leg_{k:02d}"]) == 2 * per_tube for k in range(n_legs))
+    assert len(groups["antenna_0"]) == len(groups["antenna_1"]) == links * per_tube
+    # leg k's tubes run from its root to its tip
+    verts = groups["__vertices__"]
+    for k in (0, n_legs - 1):
+        used = verts[np.unique(groups[f"leg_{k:02d}"]) - 1]
+        for p in scene.legs[k]:
+            assert np.linalg.norm(used - p, axis=1).min() < 0.1
+    # trimesh still reads it as one mesh with the vertices in order
+    mesh = trimesh.load(d / "frames" / "frame_00000.obj", process=False)
+    assert len(mesh.faces) == sum(len(v) for k, v in groups.items() if k != "__vertices__")
+
+
+def test_view_3d_writes_a_gif_of_the_requested_size_with_a_following_camera(centipede_outputs):
+    d, rec = centipede_outputs
+    with Image.open(d / "c.gif") as im:
+        assert im.size == (640, 400)
+        assert im.n_frames == math.ceil(len(rec.frames) / 3)  # 60 Hz samples, every 3rd: 50 ms frames
+        im.seek(im.n_frames - 1)
+        last = np.asarray(im.convert("RGB"), dtype=float)
+    # shaded: many distinct colours, not flat fills; the body (dark browns) is near the middle of the picture
+    colors = {tuple(c) for c in last.reshape(-1, 3)[::7]}
+    assert len(colors) > 40
+    dark = (last.sum(axis=2) < 300).nonzero()
+    assert len(dark[0]) > 100
+    assert 0.2 < np.median(dark[1]) / 640 < 0.8 and 0.2 < np.median(dark[0]) / 400 < 0.8
+
+
+def test_size_is_honoured_by_the_2d_view_and_bad_sizes_exit_2(capsys, tmp_path):
+    gif = tmp_path / "w.gif"
+    code, out, err = cli(capsys, *WORM, "--duration", "0.2", "--animate", gif, "--size", "800x600", "--no-store")
+    assert code == 0, err
+    with Image.open(gif) as im:
+        assert im.size == (800, 600)
+    assert "800x600 px" in out
+    for flags, message in ((["--animate", tmp_path / "a.gif", "--size", "800"], "WIDTHxHEIGHT"),
+                           (["--animate", tmp_path / "a.gif", "--size", "20x20"], "160 to 7680"),
+                           (["--animate", tmp_path / "a.mp4", "--size", "801x600"], "even"),
+                           (["--size", "800x600"], "only meaningful with --animate"),
+                           (["--view", "3d"], "only meaningful with --animate")):
+        code, _, err = cli(capsys, *WORM, "--duration", "0.2", "--no-store", *flags)
+        assert code == 2 and flags[-2] in err and message in err and len(err.strip().splitlines()) == 1
+    assert [p.name for p in tmp_path.iterdir()] == ["w.gif"]

@@ -110,9 +110,15 @@ def test_report_has_every_section_and_only_existing_files(matrix_dir):
     for sid in ("gait", "trajectories", "stability", "scaling", "energy", "paper"):
         body = html.split(f'<section id="{sid}">', 1)[1].split("</section>", 1)[0]
         assert "<img" in body, f"section {sid} drew no figure"
-    # the worm and the centipede each have a comparison table; the sweeps are not in it
+    # the worm and the centipede each have a comparison table; the sweeps are in them too (the snake's only
+    # cases are a segment-count sweep), each row naming its swept values
     comp = html.split('<section id="comparison">', 1)[1].split("</section>", 1)[0]
-    assert "<h3>worm</h3>" in comp and "<h3>centipede</h3>" in comp and "<h3>snake</h3>" not in comp
+    assert "<h3>worm</h3>" in comp and "<h3>centipede</h3>" in comp and "<h3>snake</h3>" in comp
+    for n in (6, 12, 24):
+        assert f"<td>creature.segments={n}</td>" in comp
+    for dt in (0.002, 0.03):
+        for k in (1.5, 6):
+            assert f"<td>dt={dt:g}, body.stiffness={k:g}</td>" in comp
     # the dt=0.03 s lattice blows up: the heatmap and the overview count it
     assert "unstable" in html.split('<section id="overview">', 1)[1].split("</section>", 1)[0]
 
@@ -236,3 +242,108 @@ def test_report_plots_the_regress_history(matrix_dir, tmp_path):
     assert main(["report", str(matrix_dir), "--history-store", str(tmp_path / "none.sqlite")]) == 0
     section = (matrix_dir / "index.html").read_text().split('<section id="history">', 1)[1].split("</section>", 1)[0]
     assert "<img" not in section and "bench-myriapoda regress" in section
+
+
+def _section(html: str, sid: str) -> str:
+    return html.split(f'<section id="{sid}">', 1)[1].split("</section>", 1)[0]
+
+
+def test_report_tables_footnote_metrics_that_do_not_apply(matrix_dir):
+    html = (matrix_dir / "index.html").read_text()
+    comp = _section(html, "comparison")
+    # the worm and the centipede are driven: their energy drift is '-' with a mark, the reason below the table
+    worm = comp.split("<h3>worm</h3>", 1)[1].split("<h3>", 1)[0]
+    head = re.findall(r"<th>(.*?)</th>", worm.split("</thead>", 1)[0])
+    rows = re.findall(r"<tr[^>]*>(.*?)</tr>", worm.split("<tbody>", 1)[1])
+    col = head.index("energy drift [rel]")
+    for row in rows:
+        cells = re.findall(r"<td[^>]*>(.*?)</td>", row)
+        assert cells[col] == "-<sup>a</sup>"
+    assert re.search(r'<p class="footnote"><sup>a</sup> -: actively driven', worm)
+    # the rules: a legged creature has no per-cycle speed; a passive chain no speed; a hanging body no speed
+    from bench_myriapoda.report.tables import not_applicable_reason
+
+    legged = {"gait": "leg-wave", "scenario": "walk", "case_json": json.dumps({"creature": {"legs_per_segment": 1}})}
+    assert not_applicable_reason(legged, "metric.speed_bl_per_cycle") == "legged"
+    assert not_applicable_reason(legged, "metric.speed_bl_per_s") is None
+    assert not_applicable_reason(legged, "metric.energy_drift_rel") == "driven"
+    chain = {"gait": "passive", "scenario": "fig4-drop"}
+    assert not_applicable_reason(chain, "metric.speed_m_per_s") == "passive"
+    assert not_applicable_reason(chain, "metric.travel_angle_deg") == "passive"
+    assert not_applicable_reason(chain, "metric.energy_drift_rel") is None
+    assert not_applicable_reason({"gait": "leg-wave", "scenario": "hang"}, "metric.speed_m_per_s") == "suspended"
+
+
+def test_report_overview_separates_intended_blow_ups(matrix_dir):
+    overview = _section((matrix_dir / "index.html").read_text(), "overview")
+    # the two dt = 0.03 s runs of the dt x stiffness sweep blow up, as the sweep intends
+    assert "Blow-ups: 2 intended" in overview and "0 unexpected" in overview
+
+
+def test_report_draws_each_figure_once_with_captions_that_match_the_colours(matrix_dir):
+    html = (matrix_dir / "index.html").read_text()
+    srcs = re.findall(r'<img src="([^"]+)"', html)
+    assert len(srcs) == len(set(srcs)), "a figure is shown twice"
+    # the paper section links to the walk's gait diagram instead of showing it again
+    paper = _section(html, "paper")
+    gait_srcs = re.findall(r'<img src="(figures/gait_[^"]+)"', _section(html, "gait"))
+    assert gait_srcs and all(f'<a href="#gait">{Path(g).name}</a>' in paper for g in gait_srcs)
+    # viridis runs dark purple -> yellow: the captions say so (not "light to dark")
+    assert "light to dark" not in html
+    assert "from dark purple (start) to yellow (end)" in _section(html, "trajectories")
+
+
+def test_seed_spread_and_shared_dt_grid():
+    from bench_myriapoda.report.seed_spread import has_several_seeds, seed_spread
+    from bench_myriapoda.report.sweeps import shared_dt_grid
+
+    df = pd.DataFrame({"creature": "worm", "body": ["massspring"] * 3 + ["fem"], "gait": "rectilinear",
+                       "scenario": "flat", "seed": [0, 1, 2, 0], "status": "ok",
+                       "metric.speed_bl_per_s": [1.0, 2.0, 3.0, 5.0]})
+    assert has_several_seeds(df)
+    st = seed_spread(df, "metric.speed_bl_per_s").set_index("body")
+    assert st.loc["massspring", "n"] == 3 and st.loc["massspring", "mean"] == 2.0
+    assert st.loc["massspring", "std"] == pytest.approx(1.0)  # sample std (n - 1)
+    assert st.loc["fem", "n"] == 1 and math.isnan(st.loc["fem", "std"])
+    assert not has_several_seeds(df[df.seed == 0])
+    groups = [("worm", "massspring", "body.stiffness", pd.DataFrame({"dt": [0.002, 0.01]})),
+              ("worm", "fem", "body.youngs_modulus_pa", pd.DataFrame({"dt": [0.001, 0.01]}))]
+    assert shared_dt_grid(groups) == [0.001, 0.002, 0.01]
+
+
+_PROBE = """<script>window.addEventListener('load', () => {
+  const imgs = [...document.images].map(i => [i.getAttribute('src'), i.getBoundingClientRect().width, i.naturalWidth,
+                                              i.complete]);
+  const secs = [...document.querySelectorAll('section')].map(s => [s.id, s.getBoundingClientRect().height,
+                                                                   s.querySelector('h2').getBoundingClientRect().height]);
+  const p = document.createElement('pre'); p.id = 'probe';
+  p.textContent = JSON.stringify({imgs, secs, width: document.documentElement.clientWidth});
+  document.body.appendChild(p);
+});</script>"""
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="Debian's chromium is not installed (.ci/run installs it)")
+def test_report_in_chromium_at_1400_px_shows_every_section_and_images_at_least_800_px_wide(matrix_dir, tmp_path):
+    """Laid out by headless chromium in a 1400 px window: every section there with its heading, every image
+    loaded and drawn at least 800 px wide (the report's pages carry no script; a copy gets a probe)."""
+    import html as html_lib
+
+    probe = matrix_dir / ".probe.html"
+    probe.write_text((matrix_dir / "index.html").read_text().replace("</body>", _PROBE + "</body>"))
+    try:
+        cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+               "--disable-background-networking", "--disable-component-update", "--disable-sync",
+               f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1400,1000", "--virtual-time-budget=20000",
+               "--dump-dom", probe.as_uri()]
+        dom = subprocess.run(cmd, check=True, timeout=120, capture_output=True, text=True).stdout
+    finally:
+        probe.unlink()
+    data = json.loads(html_lib.unescape(re.search(r'<pre id="probe">(.*?)</pre>', dom, re.S).group(1)))
+    assert 1300 <= data["width"] <= 1400
+    assert [s[0] for s in data["secs"]] == [sid for sid, _ in SECTIONS]
+    for sid, height, h2 in data["secs"]:
+        assert h2 > 10 and height > h2, f"section {sid} not shown"
+    assert len(data["imgs"]) >= 8
+    for src, shown, natural, complete in data["imgs"]:
+        assert complete and natural >= 800, f"{src}: {natural} px wide"
+        assert shown >= 800, f"{src} drawn {shown} px wide"

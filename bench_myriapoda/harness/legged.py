@@ -30,6 +30,9 @@ class LeggedView:
     def __init__(self, body, controller: MyriapodController):
         self.body = body
         self.controller = controller
+        if controller.antennae is not None:  # antennae on the starting head pose: frame 0 of a scene shows them
+            c, R = body.segment_poses()
+            controller.antennae.place(c[0], R[0], 0.0)
 
     def __getattr__(self, name):
         return getattr(self.body, name)

@@ -40,7 +40,8 @@ from . import sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
-from .tables import comparison_tables, fmt, html_table, md_table
+from .figure_files import report_style
+from .tables import comparison_tables, fmt, footnote_marks, html_table, md_table
 
 SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
             ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
@@ -49,8 +50,10 @@ SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body mod
             ("history", "Performance history (regress)"), ("baseline", "Changes against the baseline"))
 MAX_GAIT_CASES = 12  # a matrix with many legged cases shows the first ones; the tables list all
 
+# Read at about 1400 px: a figure is shown at its own pixel size (every report figure is >= 800 px wide,
+# figure_files.MIN_WIDTH_PX) and only shrinks to the page width, never to a fraction of it.
 CSS = """
-body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:1.5em auto;max-width:1200px;
+body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:1.5em auto;max-width:1360px;
 padding:0 1em;color:#222}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 h3{font-size:1em;margin-bottom:.3em}
@@ -59,8 +62,9 @@ th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3
 td:first-child,th:first-child{text-align:left}
 tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
 tr.improvement td{background:#d8f0dc}tr.unstable td{background:#fff3cd}tr.error td,tr.timeout td{background:#f8d7da}
-figure{display:inline-block;margin:.3em .6em .8em 0;vertical-align:top;max-width:48%}
-figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.8em;color:#555;max-width:640px}
+figure{display:block;margin:.3em 0 1.2em 0}
+figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.9em;color:#444;max-width:1000px}
+td.na{color:#999}p.footnote{font-size:.85em;color:#555;margin:.1em 0}
 nav a{margin-right:.8em;font-size:.9em}.note{color:#666;font-size:.85em}
 .caption{font-style:italic;max-width:900px}
 """
@@ -100,16 +104,33 @@ class _Page:
         self.html.append(f"<h3>{html.escape(text)}</h3>")
         self.md.append(f"\n### {text}\n")
 
-    def table(self, df: pd.DataFrame, row_classes=None) -> None:
-        self.html.append(html_table(df, row_classes))
-        self.md.append(md_table(df))
+    def table(self, df: pd.DataFrame, row_classes=None, notes=None, footnotes: dict[str, str] | None = None) -> None:
+        """A table; ``notes`` / ``footnotes``: blanked cells and their reasons (``tables.ComparisonTable``)."""
+        marks = footnote_marks(footnotes or {})
+        self.html.append(html_table(df, row_classes, notes, marks))
+        self.md.append(md_table(df, notes, marks))
+        for key, text in (footnotes or {}).items():
+            self.html.append(f'<p class="footnote"><sup>{marks[key]}</sup> -: {html.escape(text)}</p>')
+            self.md.append(f"({marks[key]}) -: {text}\n")
 
     def figure(self, path: Path, caption: str) -> None:
+        """Show a figure; each file once per report (a second use of the same file is a link to the first)."""
         rel = path.relative_to(self.fig_dir.parent).as_posix()
+        anchor = "fig-" + _slug(path.stem)
+        if path in self.figures:
+            self.html.append(f'<p class="note">{html.escape(caption)}: {html.escape(path.name)}, shown above</p>')
+            self.md.append(f"{caption}: see above ({rel})\n")
+            return
         self.figures.append(path)
-        self.html.append(f'<figure><img src="{html.escape(rel)}" alt="{html.escape(caption)}">'
+        self.html.append(f'<figure id="{anchor}"><img src="{html.escape(rel)}" alt="{html.escape(caption)}">'
                          f"<figcaption>{html.escape(caption)}</figcaption></figure>")
         self.md.append(f"![{caption}]({rel})\n")
+
+    def link(self, path: Path, text: str, section: str) -> None:
+        """A line pointing at a figure shown in another section of the report (not drawn again)."""
+        self.html.append(f'<p class="note">{html.escape(text)}: <a href="#{section}">{html.escape(path.name)}'
+                         f"</a> in section {html.escape(dict(SECTIONS)[section])}</p>")
+        self.md.append(f"{text}: see {path.relative_to(self.fig_dir.parent).as_posix()}\n")
 
 
 def _slug(*parts) -> str:
@@ -128,41 +149,48 @@ def build_report(directory: Path | str, baseline: Path | str | None = None, hist
     d = res.directory
     tmp = Path(tempfile.mkdtemp(prefix=".report-", dir=d))
     try:
-        page = _Page(tmp / "figures")
-        page.fig_dir.mkdir()
-        _overview(page, res)
-        sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
-        main = res.df[~sweep] if not res.df.empty else res.df
-        _comparison(page, res, main)
-        _gait(page, res, main)
-        _trajectories(page, res, main)
-        _stability(page, res)
-        _scaling(page, res)
-        _energy(page, res, main)
-        _paper(page, res, main)
-        _history(page, Path(history_store) if history_store else None)
-        regressions = _baseline(page, res, base, threshold)
-        page.html.append("</section>")
-        nav = "".join(f'<a href="#{sid}">{html.escape(t)}</a>' for sid, t in SECTIONS)
-        title = f"bench-myriapoda report: matrix {res.name}"
-        doc = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
-               f"<style>{CSS}</style></head><body><h1>{html.escape(title)}</h1><nav>{nav}</nav>"
-               + "\n".join(page.html) + "</body></html>\n")
-        (tmp / "index.html").write_text(doc, encoding="utf-8")
-        (tmp / "summary.md").write_text(f"# {title}\n" + "\n".join(page.md), encoding="utf-8")
-        # move into place: figures first (the old page keeps working until index.html is replaced)
-        final_fig = d / "figures"
-        old = d / f".figures-old-{os.getpid()}"
-        if final_fig.exists():
-            final_fig.rename(old)
-        (tmp / "figures").rename(final_fig)
-        os.replace(tmp / "index.html", d / "index.html")
-        os.replace(tmp / "summary.md", d / "summary.md")
-        shutil.rmtree(old, ignore_errors=True)
-        figures = [final_fig / p.name for p in page.figures]
-        return ReportSummary(d / "index.html", d / "summary.md", figures, regressions)
+        with report_style():
+            return _build(res, base, history_store, threshold, d, tmp)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _build(res: MatrixResults, base: MatrixResults | None, history_store, threshold: float, d: Path,
+           tmp: Path) -> ReportSummary:
+    """The body of ``build_report``: every section into ``tmp``, then moved into ``d``."""
+    page = _Page(tmp / "figures")
+    page.fig_dir.mkdir()
+    _overview(page, res)
+    sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
+    main = res.df[~sweep] if not res.df.empty else res.df
+    _comparison(page, res)
+    _gait(page, res, main)
+    _trajectories(page, res, main)
+    _stability(page, res)
+    _scaling(page, res)
+    _energy(page, res, main)
+    _paper(page, res, main)
+    _history(page, Path(history_store) if history_store else None)
+    regressions = _baseline(page, res, base, threshold)
+    page.html.append("</section>")
+    nav = "".join(f'<a href="#{sid}">{html.escape(t)}</a>' for sid, t in SECTIONS)
+    title = f"bench-myriapoda report: matrix {res.name}"
+    doc = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
+           f"<style>{CSS}</style></head><body><h1>{html.escape(title)}</h1><nav>{nav}</nav>"
+           + "\n".join(page.html) + "</body></html>\n")
+    (tmp / "index.html").write_text(doc, encoding="utf-8")
+    (tmp / "summary.md").write_text(f"# {title}\n" + "\n".join(page.md), encoding="utf-8")
+    # move into place: figures first (the old page keeps working until index.html is replaced)
+    final_fig = d / "figures"
+    old = d / f".figures-old-{os.getpid()}"
+    if final_fig.exists():
+        final_fig.rename(old)
+    (tmp / "figures").rename(final_fig)
+    os.replace(tmp / "index.html", d / "index.html")
+    os.replace(tmp / "summary.md", d / "summary.md")
+    shutil.rmtree(old, ignore_errors=True)
+    figures = [final_fig / p.name for p in page.figures]
+    return ReportSummary(d / "index.html", d / "summary.md", figures, regressions)
 
 
 # --------------------------------------------------------------------------- sections
@@ -174,6 +202,20 @@ def _overview(page: _Page, res: MatrixResults) -> None:
     counts = df["status"].value_counts().to_dict() if not df.empty else {}
     page.p(f"{len(df)} cases: " + (", ".join(f"{n} {s}" for s, n in sorted(counts.items())) or "none stored yet")
            + f". Built {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}.")
+    if not df.empty:
+        unstable = df["status"] == "unstable"
+        intended = unstable & sweeps.blow_up_sweep_mask(df, res.grid_keys)
+        unexpected = unstable & ~intended
+        if unstable.any():
+            page.p(f"Blow-ups: {int(intended.sum())} intended -- cases of a dt or stiffness sweep ("
+                   + ", ".join(k for k in res.grid_keys if k in sweeps.BLOW_UP_KEYS)
+                   + "), which looks for where the integrator fails; see the stability heatmaps -- and "
+                   f"{int(unexpected.sum())} unexpected (outside such a sweep).")
+        if unexpected.any():
+            page.p("Unexpected blow-ups:")
+            page.table(df.loc[unexpected, ["label", "status", "metric.t_fail_s", "message"]]
+                       .rename(columns={"metric.t_fail_s": "t_fail [s]"}).reset_index(drop=True),
+                       ["unstable"] * int(unexpected.sum()))
     bad = df[df["status"].isin(["error", "timeout"])] if not df.empty else df
     if not bad.empty:
         page.p("Cases that did not finish:")
@@ -183,16 +225,29 @@ def _overview(page: _Page, res: MatrixResults) -> None:
         page.p("Unsupported combinations (listed before the run, not run): " + "; ".join(res.unsupported), "note")
 
 
-def _comparison(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+def _comparison(page: _Page, res: MatrixResults) -> None:
+    from .seed_spread import has_several_seeds, plot_seed_spread
+
     page.section("comparison", "Comparison across body models")
-    if main.empty:
-        page.p("No case outside the parameter sweeps; see the stability and scaling sections.", "note")
+    if res.df.empty:
+        page.p("No case stored yet.", "note")
         return
-    page.p("One table per creature; a row per case. Speed, gait, stability and throughput metrics "
-           "(README, 'Metrics'); '-' = undefined for this case (e.g. leg metrics of a worm).", "note")
-    for creature, table in comparison_tables(main, [f"grid.{k}" for k in res.grid_keys]).items():
+    page.p("One table per creature; a row per case, the cases of parameter sweeps included (after the others, "
+           "each naming its swept values). Speed, gait, stability and throughput metrics (README, 'Metrics'); "
+           "a column appears when some case of the creature has a value; '-' with a mark = does not apply to "
+           "that case (the reason under the table); '-' alone = not measured (e.g. leg metrics of a worm).",
+           "note")
+    grid_columns = [f"grid.{k}" for k in res.grid_keys]
+    for creature, ct in comparison_tables(res.df, grid_columns).items():
         page.h3(creature)
-        page.table(table, [s if s != "ok" else "" for s in table["status"]])
+        page.table(ct.table, [s if s != "ok" else "" for s in ct.table["status"]], ct.notes, ct.footnotes)
+        sub = res.df[res.df["creature"] == creature]
+        sub = sub[~sweeps.sweep_mask(sub, res.grid_keys)]
+        if has_several_seeds(sub):
+            path = plot_seed_spread(sub, page.fig_dir / f"seeds_{_slug(creature)}.png",
+                                    f"{creature}: spread over seeds")
+            page.figure(path, f"{creature}: each case's mean over its seeds with an error bar of one standard "
+                              "deviation (sample, n - 1), and every seed's value as a grey dot.")
 
 
 def _legged(res: MatrixResults, df: pd.DataFrame):
@@ -234,9 +289,10 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
 
     page.section("trajectories", "Trajectories from above")
     drawn = 0
-    for (creature, scenario), sub in main.groupby(["creature", "scenario"], sort=True):
+    # one figure per creature, scenario and body: the seeds of a case are its panels
+    for (creature, scenario, body), sub in main.groupby(["creature", "scenario", "body"], sort=True):
         runs, scen, foods = [], [], []
-        for _, r in sub.iterrows():
+        for _, r in sub.sort_values([c for c in ("gait", "seed") if c in sub]).iterrows():
             rec = res.recording(r.case_hash)
             if rec is None or len(rec["t"]) < 2:
                 continue
@@ -246,10 +302,13 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
             foods.append(res.case(r.case_hash).get("food"))
         if not runs:
             continue
-        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario)}.png", scenarios=scen[:6],
-                              foods=foods[:6])
-        page.figure(path, f"{creature} on {scenario}, seen from above: body centre line at six times (light to dark) "
-                          "and the centre of mass path (dashed); x forward, z to the right.")
+        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario, body)}.png",
+                              scenarios=scen[:6], foods=foods[:6])
+        page.figure(path, f"{creature} on {scenario}, {body} body, seen from above, one row per run. Left: the "
+                          "body's centre line at six times (head: dot) and the centre-of-mass path (dashed). "
+                          "Right: the centre-of-mass path, zoomed, dots at the six times. Coloured by "
+                          "time from dark purple (start) to yellow (end), as the colour bar shows; x forward, "
+                          "z to the creature's right; equal scales.")
         drawn += 1
     if not drawn:
         page.p("No recorded trajectories in this matrix.", "note")
@@ -262,11 +321,15 @@ def _stability(page: _Page, res: MatrixResults) -> None:
         page.p("No sweep over dt and a stiffness key (" + ", ".join(sweeps.STIFFNESS_KEYS) + ") in this matrix; "
                "add one under [matrix.grid] to get a heatmap.", "note")
         return
+    dts = sweeps.shared_dt_grid(groups)
+    page.p("Every heatmap has the same dt columns (all dt values of any sweep in this matrix), so the bodies' "
+           "stable ranges line up; a body not run at a dt shows a blank cell.", "note")
     for creature, body, key, sub in groups:
         path = sweeps.plot_stability_heatmap(sub, key, page.fig_dir / f"stability_{_slug(creature, body)}.png",
-                                             f"{creature} / {body}: stable (green) or time of blow-up")
+                                             f"{creature} / {body}: stable or time of blow-up", dts)
         page.figure(path, f"{creature} on the {body} body: each cell a run of {sub['duration'].max():g} s at that "
-                          f"dt and {key}; green = stable throughout, red = blew up (t_fail shown), grey = error.")
+                          f"dt and {sweeps.key_label(key)}; green = stable throughout; red = blew up, darker = "
+                          "earlier (colour bar: t_fail / duration; t_fail in the cell); grey = error or timeout.")
 
 
 def _scaling(page: _Page, res: MatrixResults) -> None:
@@ -299,7 +362,8 @@ def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         for _, r in sub.iterrows():
             rec = res.recording(r.case_hash)
             if rec is not None and len(rec["t"]) > 1:
-                runs.append((f"{r.body} / {r.gait} / {r.scenario}", series_from_recording(rec)))
+                runs.append((f"{r.body} / {r.gait} / {r.scenario}"
+                             + ("" if pd.isna(r.get("seed")) else f" / seed {int(r.seed)}"), series_from_recording(rec)))
         if runs:
             path = plot_energy(runs[:9], page.fig_dir / f"energy_{_slug(creature)}.png")
             page.figure(path, f"{creature}: kinetic, elastic, gravitational and total energy relative to t = 0 [J].")
@@ -332,17 +396,24 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         slug = _slug(r.case_hash)
         if "side" in fig.images:
             page.figure(plot_side_strip(f"{r.label}: side view", s, scen, page.fig_dir / f"paper_side_{slug}.png"),
-                        "Side view at six times spaced by the body's motion (light to dark), over the terrain.")
+                        "Side view at six times spaced by the body's motion, coloured from dark purple (first) "
+                        "to yellow (last) as the legend's times show, over the terrain.")
+        # The gait and trajectory sections have drawn these already (each figure is drawn once): link to them.
         if "gait" in fig.images and "leg_states" in rec and len(rec["leg_t"]) > 1:
-            gait_png = page.fig_dir / f"gait_{slug}.png"  # drawn by the gait section already, unless capped
-            if not gait_png.is_file():
+            gait_png = page.fig_dir / f"gait_{slug}.png"
+            if gait_png in page.figures:
+                page.link(gait_png, "Leg states during the last second (the right panel of Fig. 10)", "gait")
+            else:  # the gait section stopped at MAX_GAIT_CASES before this case
                 plot_gait_diagram(rec["leg_t"], rec["leg_states"], gait_png, last_seconds=1.0,
                                   title=f"{r.label}: leg states, last second")
-            page.figure(gait_png, "Leg states during the last second (the right panel of Fig. 10).")
+                page.figure(gait_png, "Leg states during the last second (the right panel of Fig. 10).")
         if "top" in fig.images:
-            page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png", scenarios=[scen],
-                                       foods=[food]),
-                        "Seen from above.")
+            top_png = page.fig_dir / f"top_{_slug(r.creature, r.scenario, r.body)}.png"
+            if top_png in page.figures:
+                page.link(top_png, "Seen from above", "trajectories")
+            else:
+                page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png",
+                                           scenarios=[scen], foods=[food]), "Seen from above.")
     walks = main[(main.get("scenario") == "walk") & (main.get("creature") == "centipede")] if not main.empty else main
     if not walks.empty:
         page.h3("Throughput headline (Sec. 6)")

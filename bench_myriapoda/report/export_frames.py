@@ -5,7 +5,10 @@ One file per recorded sample, ``DIR/frame_00000.obj`` (10 decimals) or ``.ply``
 world coordinates [m] (y up, as Blender's and Maya's OBJ importers expect by
 default): the triangle surfaces of the body's ``Scene`` (``bodies.scene``:
 rigid boxes, FEM boundaries, lattice faces), in the scene's order, followed by
-every leg as two closed hexagonal tubes (root -> knee, knee -> tip).  The
+every leg as two closed hexagonal tubes (root -> knee, knee -> tip) and every
+antenna link as a thinner tube.  An OBJ names the parts as groups (``g body``,
+``g leg_00`` ..., ``g antenna_0``, ``g antenna_1``: ``part_groups``) so Blender
+can shade them apart; a PLY has no groups.  The
 surfaces' vertices come first, in order and unmerged, so vertex i of every
 frame is the same material point: the sequence can drive a mesh-cache /
 blend-shape animation.
@@ -119,6 +122,48 @@ def scene_mesh(scene: Scene, radius: float | None = None):
     return trimesh.Trimesh(np.concatenate(verts), np.concatenate(faces), process=False)
 
 
+def part_groups(scene: Scene, mesh) -> list[tuple[str, np.ndarray]]:
+    """(name, face indices) of each part of ``scene_mesh(scene)``: ``body`` (every surface), ``leg_NN``
+    (leg k = 2 segment + side: its root-knee and knee-tip tubes) and ``antenna_A`` (0 left, 1 right: its
+    link tubes), in face order of the mesh.  Names are zero-padded so they sort in leg order."""
+    n_body = sum(len(f) for _, f, _ in scene.triangles)
+    groups = [("body", np.arange(n_body))] if n_body else []
+    per_tube = len(_TUBE_FACES)
+    start = n_body
+    if scene.legs is not None and len(scene.legs):
+        n = len(scene.legs)
+        width = max(2, len(str(n - 1)))
+        tube = np.arange(per_tube)
+        for k in range(n):  # tubes: all root-knee tubes, then all knee-tip tubes
+            groups.append((f"leg_{k:0{width}d}", np.concatenate([start + k * per_tube + tube,
+                                                                 start + (n + k) * per_tube + tube])))
+        start += 2 * n * per_tube
+    if scene.antennae is not None and len(scene.antennae):
+        links = scene.antennae.shape[1] - 1
+        for a in range(len(scene.antennae)):
+            groups.append((f"antenna_{a}", start + a * links * per_tube + np.arange(links * per_tube)))
+    assert sum(len(g) for _, g in groups) == len(mesh.faces), "parts do not cover the mesh"
+    return groups
+
+
+def obj_text(scene: Scene, mesh, digits: int = 10) -> str:
+    """The mesh as Wavefront OBJ text with one named group (``g NAME``) per part (``part_groups``).
+
+    Vertices first, in mesh order (no normals or texture coordinates: vertex i in the file is vertex i of
+    the mesh on import); then each group's faces (1-based indices).  Blender's OBJ importer turns the
+    groups into separate objects (with "Split by Group") or vertex groups, so body, legs and antennae
+    can be given their own materials.
+    """
+    v = np.asarray(mesh.vertices, dtype=float)
+    f = np.asarray(mesh.faces, dtype=np.int64) + 1
+    out = [f"# bench-myriapoda frame: {len(v)} vertices, {len(f)} triangles, units m, y up\n"]
+    out.append("".join(f"v {x:.{digits}f} {y:.{digits}f} {z:.{digits}f}\n" for x, y, z in v))
+    for name, idx in part_groups(scene, mesh):
+        out.append(f"g {name}\n")
+        out.append("".join(f"f {a} {b} {c}\n" for a, b, c in f[idx]))
+    return "".join(out)
+
+
 def check_out_dir(out_dir) -> None:
     """Raise ValueError if ``out_dir`` exists and is not an empty directory (nothing may be overwritten)."""
     out = Path(out_dir)
@@ -155,10 +200,7 @@ def export_frames(frames: Sequence[Scene], times: Sequence[float], case_dict: di
             name = f"frame_{i:05d}.{fmt}"
             mesh = scene_mesh(scene, radius)
             if fmt == "obj":
-                # no normals or texture: vertex i in the file is vertex i of the mesh on import
-                data = mesh.export(file_type="obj", include_normals=False, include_color=False,
-                                   include_texture=False, digits=10)
-                (tmp / name).write_text(data)
+                (tmp / name).write_text(obj_text(scene, mesh))
             else:
                 (tmp / name).write_bytes(mesh.export(file_type="ply", encoding="binary"))
             files.append(name)
@@ -167,7 +209,8 @@ def export_frames(frames: Sequence[Scene], times: Sequence[float], case_dict: di
                 "leg_tube_radius_m": radius,
                 "contents": "per frame one triangle mesh: the body's surfaces (rigid boxes, FEM boundary, "
                             "lattice faces) with their vertices first and in a fixed order, then two tubes "
-                            "per leg (root-knee, knee-tip)",
+                            "per leg (root-knee, knee-tip), then one tube per antenna link; OBJ files name "
+                            "the parts as groups: body, leg_00 ..., antenna_0 ...",
                 "case": case_dict}
         (tmp / "frames.json").write_text(json.dumps(meta, indent=1))
         if out.is_dir():

@@ -32,10 +32,12 @@ from ..metrics.gait import (  # noqa: E402
     stride_stats,
     wave_metrics,
 )
-from .figure_files import save_figure  # noqa: E402
+from .figure_files import LABEL_PT, TITLE_PT, WIDE_IN, save_figure  # noqa: E402
 
 ROW_HEIGHT = 0.9        # bar height as a fraction of the row pitch: thin white gaps separate legs
 GROUP_GAP_ROWS = 0.8    # extra space between the left and the right block in the grouped layout
+ROW_PITCH_IN = 0.2      # [in] per leg row: room for a 9 pt label
+MAX_HEIGHT_IN = 16.0    # [in] taller diagrams label every other leg
 
 
 def leg_rows(n_legs: int, layout: str = "grouped") -> list[tuple[int, float]]:
@@ -74,8 +76,9 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
     rows = leg_rows(n_legs, layout)
     y_max = max((y for _, y in rows), default=0.0) + 1
 
-    fig_h = min(max(2.4, 0.22 * y_max + 1.3), 14.0)
-    fig, ax = plt.subplots(figsize=(8.0, fig_h))
+    # a row pitch of at least 0.2 in keeps the 9 pt leg labels apart (taller than 16 in: every other label)
+    fig_h = min(max(2.6, ROW_PITCH_IN * y_max + 1.4), MAX_HEIGHT_IN)
+    fig, ax = plt.subplots(figsize=(WIDE_IN * 0.85, fig_h))
     for leg, y in rows:
         runs = run_lengths(t, states[:, leg])
         for code in range(N_STATES):
@@ -84,18 +87,19 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
                 # antialiasing off: bar interiors keep their exact state colour, edges do not blend
                 ax.broken_barh(list(zip(runs.t_start[sel], runs.duration[sel])), (y - ROW_HEIGHT / 2, ROW_HEIGHT),
                                facecolors=STATE_COLORS[code], edgecolors="none", antialiased=False)
-    ax.set_yticks([y for _, y in rows])
-    ax.set_yticklabels([leg_label(leg) for leg, _ in rows], fontsize=7 if n_legs <= 24 else 5)
+    every = 1 if (fig_h - 1.4) / y_max >= ROW_PITCH_IN * 0.99 else 2
+    ax.set_yticks([y for _, y in rows][::every])
+    ax.set_yticklabels([leg_label(leg) for leg, _ in rows][::every], fontsize=LABEL_PT)
     ax.set_ylim(y_max - 0.5, -0.5)  # head at the top
     ax.set_xlim(t[0], t[-1] if t[-1] > t[0] else t[0] + 1e-3)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("leg (L/R, segment; head at top)")
     handles = [Patch(facecolor=STATE_COLORS[c], label=STATE_NAMES[c]) for c in range(N_STATES)]
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
-              title="leg state", title_fontsize=8)
-    ax.set_title(title or f"Leg states, last {t[-1] - t[0]:.2f} s", fontsize=10)
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=LABEL_PT, frameon=False,
+              title="leg state", title_fontsize=LABEL_PT)
+    ax.set_title(title or f"Leg states, last {t[-1] - t[0]:.2f} s", fontsize=TITLE_PT)
     fig.tight_layout()
-    return save_figure(fig, path, dpi=110)
+    return save_figure(fig, path)
 
 
 def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = None) -> Path:
@@ -112,7 +116,7 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
     wave, labels = wave_metrics(stride_stats(t, states, warmup_s).onset_times)
     n_legs = states.shape[1]
 
-    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    fig, ax = plt.subplots(figsize=(WIDE_IN * 0.8, 4.4))
     for side, marker, name in ((LEFT, "o", "left"), (RIGHT, "s", "right")):
         legs = np.arange(side, n_legs, 2)
         seg = legs // 2
@@ -123,12 +127,12 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
     if math.isfinite(lag):
         ax.axhline(lag, color="k", ls="--", lw=0.8, label=f"mean {lag:+.3f} ({labels['wave_direction']})")
     ax.set_ylim(-0.5, 0.5)
-    ax.text(0.01, 0.97, "retrograde (head to tail)", transform=ax.transAxes, va="top", fontsize=7, color="0.4")
-    ax.text(0.01, 0.03, "direct (tail to head)", transform=ax.transAxes, va="bottom", fontsize=7, color="0.4")
+    ax.text(0.01, 0.97, "retrograde (head to tail)", transform=ax.transAxes, va="top", fontsize=LABEL_PT, color="0.4")
+    ax.text(0.01, 0.03, "direct (tail to head)", transform=ax.transAxes, va="bottom", fontsize=LABEL_PT, color="0.4")
     ax.set_xlabel("segment (0 = head)")
     ax.set_ylabel("phase lag behind the leg ahead [cycles]")
     ax.set_xlim(0.5, max((n_legs + 1) // 2 - 0.5, 1.5))
-    ax.legend(fontsize=7, loc="best")
-    ax.set_title(title or "Inter-leg phase lag along the body", fontsize=10)
+    ax.legend(fontsize=LABEL_PT, loc="best")
+    ax.set_title(title or "Inter-leg phase lag along the body", fontsize=TITLE_PT)
     fig.tight_layout()
-    return save_figure(fig, path, dpi=110)
+    return save_figure(fig, path)

@@ -50,7 +50,7 @@ def plot_regress_history(df, path: Path | str, title: str | None = None) -> Path
                             color=line[0].get_color())
         top.set_yscale("log")
         top.set_ylabel("steps/s / reference ops/s")
-        top.legend(fontsize=8, ncol=2, loc="best")
+        top.legend(fontsize=9, ncol=2, loc="best")
         top.grid(True, which="both", alpha=0.3)
         bottom.axhline(0.0, color="0.4", lw=0.8)
         bottom.set_ylabel("change vs. first run [%]")
@@ -58,7 +58,7 @@ def plot_regress_history(df, path: Path | str, title: str | None = None) -> Path
         step = max(1, math.ceil(len(runs) / 20))  # at most about 20 labels
         ticks = list(range(0, len(runs), step))
         bottom.set_xticks(ticks)
-        bottom.set_xticklabels([f"{runs[i]}\n{short[runs[i]]}" for i in ticks], fontsize=7)
+        bottom.set_xticklabels([f"{runs[i]}\n{short[runs[i]]}" for i in ticks], fontsize=9)
         bottom.set_xlabel("regress run / commit")
         bottom.set_xlim(-0.5, len(runs) - 0.5)
     top.set_title(title or "Normalized throughput per regress run")

@@ -25,7 +25,7 @@ from ..core.schema import ScenarioConfig  # noqa: E402
 from ..harness.recorder import Series  # noqa: E402
 from ..world.terrain import terrain_from_scenario  # noqa: E402
 from ..world.terrain_kernels import terrain_phi_numpy  # noqa: E402
-from .figure_files import save_figure  # noqa: E402
+from .figure_files import LABEL_PT, WIDE_IN, save_figure  # noqa: E402
 
 ENERGY_NAMES = ("kinetic", "elastic", "gravitational")
 
@@ -35,22 +35,21 @@ def plot_energy(runs: Sequence[tuple[str, Series]], path: Path) -> Path:
     n = len(runs)
     cols = min(n, 3)
     rows = (n + cols - 1) // cols
-    fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 2.6 * rows), squeeze=False)
+    fig, axes = plt.subplots(rows, cols, figsize=(WIDE_IN if cols > 1 else 8.5, 3.4 * rows + 0.4), squeeze=False,
+                             layout="constrained")
     for ax, (title, s) in zip(axes.flat, runs):
         e = np.asarray(s.energy, dtype=float)
         for k, name in enumerate(ENERGY_NAMES):
             ax.plot(s.t, e[:, k] - e[0, k], lw=1.0, label=f"{name}")
         ax.plot(s.t, e.sum(axis=1) - e[0].sum(), "k-", lw=1.4, label="total")
         ax.axhline(0.0, color="0.6", lw=0.6)
-        ax.set_title(title, fontsize=8)
-        ax.set_xlabel("time [s]", fontsize=8)
-        ax.tick_params(labelsize=7)
+        ax.set_title(title, fontsize=LABEL_PT + 1)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("E - E(0) [J]")
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
-    axes[0][0].set_ylabel("energy - energy at t=0 [J]", fontsize=8)
-    axes[0][0].legend(fontsize=6, loc="best")
-    fig.tight_layout()
-    return save_figure(fig, path, dpi=100)
+    axes[0][0].legend(loc="best")
+    return save_figure(fig, path)
 
 
 def motion_spaced_frames(centers: np.ndarray, frames: int) -> np.ndarray:
@@ -73,11 +72,14 @@ def motion_spaced_frames(centers: np.ndarray, frames: int) -> np.ndarray:
 
 
 def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: int = 6) -> Path:
-    """The body from the side at ``frames`` times spaced by its motion (light to dark), over the terrain profile."""
+    """The body from the side at ``frames`` times spaced by its motion, over the terrain profile.
+
+    Coloured by ``viridis`` in time order: dark purple first, yellow last; the legend gives the times.
+    """
     xy = s.segment_centers[..., :2].reshape(-1, 2)
     span = xy.max(axis=0) - xy.min(axis=0)
     tall = span[1] > span[0]  # a hanging body: a portrait figure
-    fig, ax = plt.subplots(figsize=(4.2, 6.0) if tall else (7.0, 2.8))
+    fig, ax = plt.subplots(figsize=(8.5, 7.0) if tall else (WIDE_IN, 3.8), layout="constrained")
     idx = motion_spaced_frames(s.segment_centers, frames)
     cmap = plt.get_cmap("viridis")
     for k, i in enumerate(idx):
@@ -101,10 +103,9 @@ def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: i
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    ax.set_title(title, fontsize=9)
-    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
-    fig.tight_layout()
-    return save_figure(fig, path, dpi=100)
+    ax.set_title(title)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, title="dark to light:")
+    return save_figure(fig, path)
 
 
 def stored_section(cls, data: dict | None):

@@ -192,6 +192,16 @@ def _phi_near(f, near, n_near, x, y, z):
 # --------------------------------------------------------------------------- the kernels
 
 @njit(cache=True)
+def wave_angles(params, t, nominal_a):
+    """The wave of the links after the root at time t [s]: nominal_a (N, 2) [rad] of one antenna, rows 1..N-1
+    written in place (row 0, the root, follows its own target dynamics)."""
+    for i in range(1, nominal_a.shape[0]):
+        ph = params[P_OMEGA_W] * t - params[P_LAMBDA] * i
+        nominal_a[i, THETA] = params[P_ATH] * math.sin(ph) + params[P_BTH]
+        nominal_a[i, PHI] = params[P_APH] * math.sin(ph) + params[P_BPH]
+
+
+@njit(cache=True)
 def antennae_forward_kinematics(c, R, params, angles, points, frames):
     """Link points of both antennae from joint angles, no contact handling.
 
@@ -252,10 +262,7 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
                 root_omega[a] = params[P_OMEGA0]
             arrived[a] = True
             any_arrived = True
-        for i in range(1, n):
-            ph = params[P_OMEGA_W] * t - params[P_LAMBDA] * i
-            nominal[a, i, THETA] = params[P_ATH] * math.sin(ph) + params[P_BTH]
-            nominal[a, i, PHI] = params[P_APH] * math.sin(ph) + params[P_BPH]
+        wave_angles(params, t, nominal[a])
         for i in range(n):
             offsets[a, i, THETA] *= relax
             offsets[a, i, PHI] *= relax
@@ -401,6 +408,20 @@ class Antennae:
         p = self.params
         self.targets_drawn += 1
         return np.array([self.rng.uniform(p[P_TH_LO], p[P_TH_HI]), self.rng.uniform(p[P_PH_LO], p[P_PH_HI])])
+
+    def place(self, c: np.ndarray, R: np.ndarray, t: float = 0.0) -> None:
+        """Put the antennae on the head pose (c (3,) [m], R (3, 3)) at time t [s] without advancing them.
+
+        Before the first ``step`` the link points would otherwise be all zero, so a scene of the starting
+        pose (frame 0 of an animation or of an exported frame sequence) would show antennae of zero
+        length at the origin.  Only ``points``, ``frames`` and the wave rows of ``nominal`` (which every
+        ``step`` recomputes from t) are written: the run's dynamics do not change.
+        """
+        for a in (LEFT, RIGHT):
+            wave_angles(self.params, t, self.nominal[a])
+        antennae_forward_kinematics(np.ascontiguousarray(c, dtype=np.float64),
+                                    np.ascontiguousarray(R, dtype=np.float64), self.params,
+                                    self.nominal + self.offsets, self.points, self.frames)
 
     def step(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
         """Update the antennae on the head pose (c (3,) [m], R (3, 3)) at time t [s]."""
