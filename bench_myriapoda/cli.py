@@ -459,11 +459,11 @@ def cmd_matrix(args) -> int:
         raise InputError("--out", None, f"{out} exists and is not a directory")
     store = out / "results.sqlite"
     _check_matrix_outputs(args, out, store)
-    for m in exp.cases:
-        _check_case_fits(m.case, args, f"{exp.path}: case {m.label}")
+    for m in exp.cases:  # the budget only: a case its body cannot build is an error row, as any case that raises
+        _check_case_fits(m.case, args, f"{exp.path}: case {m.label}", buildable=False)
     if args.executor == "dask" and args.scheduler:
-        from .harness.executors import DASK_PROBE_TIMEOUT_S, check_dask_scheduler
-        check_dask_scheduler(args.scheduler, probe_timeout=args.dask_timeout or DASK_PROBE_TIMEOUT_S)
+        from .harness.executors import check_dask_scheduler
+        check_dask_scheduler(args.scheduler, probe_timeout=args.dask_timeout)
     print(f"matrix {exp.name}: {len(exp.cases)} cases ({exp.excluded} excluded, {exp.duplicates} duplicates, "
           f"{len(exp.unsupported)} unsupported combinations)")
     if exp.unsupported:
@@ -620,8 +620,9 @@ def _case_source(args) -> str:
     return f"{args.creature}/{args.body}/{args.scenario}"
 
 
-def _check_case_fits(case, args, source: str, keep_nodes: bool = False) -> None:
-    """The case can be built, and (unless --force) fits the resource budget (core/feasibility.py)."""
+def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildable: bool = True) -> None:
+    """(Unless --force) the case fits the resource budget and (``buildable``) its body can be built
+    (core/feasibility.py)."""
     from .core.feasibility import check_budget, check_buildable
 
     budget = None
@@ -636,7 +637,8 @@ def _check_case_fits(case, args, source: str, keep_nodes: bool = False) -> None:
     elif not math.isfinite(case.duration / case.dt) or case.duration / case.dt > 2 ** 62:
         raise InputError(source, None, f"duration {case.duration:g} s / dt {case.dt:g} s: too many steps to count, "
                                        "even with --force")
-    check_buildable(case, source)
+    if buildable:
+        check_buildable(case, source)
 
 
 def _check_matrix_flags(args) -> None:

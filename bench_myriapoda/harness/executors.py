@@ -265,8 +265,8 @@ def probe_worker() -> str:
     return ",".join(sorted(registry.BODIES))
 
 
-def check_dask_scheduler(address: str, flag: str = "--scheduler", connect_timeout: float = DASK_CONNECT_TIMEOUT_S,
-                         probe_timeout: float = DASK_PROBE_TIMEOUT_S) -> None:
+def check_dask_scheduler(address: str, flag: str = "--scheduler", connect_timeout: float | None = None,
+                         probe_timeout: float | None = None) -> None:
     """Connect to the scheduler at ``address`` and run :func:`probe_worker` on a worker, each within its timeout.
 
     ``InputError`` naming ``flag`` when the scheduler cannot be reached, has no worker that runs the probe in
@@ -279,12 +279,18 @@ def check_dask_scheduler(address: str, flag: str = "--scheduler", connect_timeou
 
     from ..core.errors import InputError
 
-    logging.getLogger("distributed").setLevel(logging.CRITICAL)  # the one-line message below says it all
+    connect_timeout = DASK_CONNECT_TIMEOUT_S if connect_timeout is None else connect_timeout
+    probe_timeout = DASK_PROBE_TIMEOUT_S if probe_timeout is None else probe_timeout
+    log = logging.getLogger("distributed")
+    level = log.level
+    log.setLevel(logging.CRITICAL)  # the one-line message below says it all
     try:
         client = Client(address, timeout=connect_timeout)
     except (OSError, TimeoutError, DaskTimeout, ValueError, TypeError) as exc:
         raise InputError(flag, None, f"cannot reach a dask scheduler at {address!r} within {connect_timeout:g} s "
                                      f"({type(exc).__name__}: {exc})") from None
+    finally:
+        log.setLevel(level)
     try:
         fut = client.submit(probe_worker, pure=False)
         try:
