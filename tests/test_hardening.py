@@ -339,23 +339,40 @@ def test_nan_or_inf_inside_a_list_value(where_, value, fresh, capsys):
     bad(capsys, argv, *words, where=fresh)
 
 
-@pytest.mark.parametrize("body,sets,key", [
-    ("massspring", ["creature.segments=1"], "creature.segments"),
-    ("fem", ["creature.segments=1"], "creature.segments"),
-    ("hybrid", ["creature.segments=1"], "creature.segments"),
-    ("massspring", ["creature.mass_kg=0.01"], "creature.mass_kg"),
-    ("fem", ["creature.mass_kg=0.01", "body.block_density_kg_m3=-1"], "creature.mass_kg"),
-    ("hybrid", ["creature.mass_kg=0.01", "body.rigid_density_kg_m3=-1"], "creature.mass_kg"),
-    ("hybrid", ["body.link_width_m=5.0"], "body.link_width_m"),
+@pytest.mark.parametrize("creature,body,sets,key", [
+    ("centipede", "massspring", ["creature.segments=1"], "creature.segments"),
+    ("centipede", "fem", ["creature.segments=1"], "creature.segments"),
+    ("centipede", "hybrid", ["creature.segments=1"], "creature.segments"),
+    ("chain", "hybrid", ["creature.segments=1"], "creature.segments"),
+    ("centipede", "massspring", ["creature.mass_kg=0.01"], "creature.mass_kg"),
+    ("centipede", "fem", ["creature.mass_kg=0.01", "body.block_density_kg_m3=-1"], "creature.mass_kg"),
+    ("chain", "hybrid", ["creature.mass_kg=0.9"], "creature.mass_kg"),  # the free link nodes weigh 1 kg
+    ("chain", "hybrid", ["body.link_width_m=5.0"], "body.link_width_m"),
+    ("centipede", "massspring", ["body.link_height_m=9.0"], "body.link_height_m"),
 ])
-def test_geometry_a_body_cannot_build_is_refused_before_the_run(body, sets, key, fresh, capsys, monkeypatch):
+def test_geometry_a_body_cannot_build_is_refused_before_the_run(creature, body, sets, key, fresh, capsys,
+                                                                 monkeypatch):
     ran = []
     monkeypatch.setattr("bench_myriapoda.harness.runner.run_case", lambda *a, **k: ran.append(1))
-    argv = ["run", "--creature", "centipede", "--body", body, "--scenario", "flat", "--duration", "0.05"]
+    argv = ["run", "--creature", creature, "--body", body, "--scenario", "flat", "--duration", "0.05"]
     for s in sets:
         argv += ["--set", s]
-    bad(capsys, argv, key, "centipede/" + body, where=fresh)
+    bad(capsys, argv, key, f"{creature}/{body}", where=fresh)
     assert not ran
+
+
+def test_the_geometry_checks_accept_what_the_bodies_build():
+    """At the limit: the chain's free link nodes weigh exactly 1 kg, so 1.01 kg builds (and check_buildable agrees)."""
+    from bench_myriapoda.core import registry
+    from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.core.feasibility import check_buildable
+
+    for creature, body in (("chain", "hybrid"), ("centipede", "massspring"), ("centipede", "fem"),
+                           ("worm", "fem"), ("worm", "massspring")):
+        check_buildable(resolve_case(creature, body, "flat"), "test")
+    case = resolve_case("chain", "hybrid", "flat", overrides=["creature.mass_kg=1.01"])
+    check_buildable(case, "test")
+    registry.BODIES["hybrid"].factory(case)  # builds
 
 
 def test_obstacles_that_cannot_be_placed_are_refused_before_the_run(fresh, capsys):
