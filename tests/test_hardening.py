@@ -314,6 +314,18 @@ def test_unwritable_matrix_out_is_refused_before_any_case_runs(fresh, capsys, mo
     assert not ran
 
 
+@pytest.mark.xfail(reason="closed-stdout (BrokenPipe) handling in cli.main is helper i14a's part of the CLI; "
+                          "passes once that lands", strict=False)
+def test_a_closed_stdout_is_no_traceback(tmp_path):
+    """The reader of stdout goes away (``bench-myriapoda list | head -0``): no traceback."""
+    proc = subprocess.Popen([sys.executable, "-m", "bench_myriapoda.cli", "list"], cwd=ROOT, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    proc.stdout.close()  # nobody reads: the first write that reaches the pipe gets EPIPE
+    err = proc.stderr.read()
+    proc.wait(timeout=120)
+    assert "Traceback" not in err and "Exception ignored" not in err and err.count("\n") <= 1, err
+
+
 # =========================================================================== caught only at run time before
 
 @pytest.mark.parametrize("table,line,key", [

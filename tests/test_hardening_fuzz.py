@@ -400,9 +400,28 @@ def _fuzz_one(example):
     assert not Path("/tmp/fuzz-abs").exists()
 
 
+def compiled_signatures() -> int:
+    """How many (function, signature) pairs numba has compiled or loaded from its cache in this process."""
+    import sys
+
+    from numba.core.dispatcher import Dispatcher
+
+    seen, n = set(), 0
+    for name, mod in list(sys.modules.items()):
+        if not name.startswith("bench_myriapoda") or mod is None:
+            continue
+        for obj in vars(mod).values():
+            if isinstance(obj, Dispatcher) and id(obj) not in seen:
+                seen.add(id(obj))
+                n += len(obj.signatures)
+    return n
+
+
 def test_generated_malformed_inputs_all_exit_2_with_one_line_and_write_nothing(capsys):
     OUTCOMES.clear()
+    compiled = compiled_signatures()
     _fuzz_one()
+    assert compiled_signatures() == compiled  # validation refused every input before any kernel was compiled
     total = sum(OUTCOMES.values())
     with capsys.disabled():
         print(f"\nfuzz: {total} generated malformed inputs; exit codes {dict(OUTCOMES)}; "
