@@ -398,7 +398,7 @@ def cmd_stable_dt(args) -> int:
             print(f"  dt = {dt:.4g} s  {st}" + ("" if math.isnan(tf) else f" (failed at t = {tf:.3g} s)"))
         print(f"stable_dt_max_s = {_fmt(res.stable_dt_max_s)}   (smallest unstable dt: {_fmt(res.unstable_dt_min_s)})")
     if res.error:
-        print(f"bench-myriapoda: stable-dt stopped: {res.error.splitlines()[0] if res.error else ''}", file=sys.stderr)
+        print(f"bench-myriapoda: stable-dt stopped: {res.error.splitlines()[0]}", file=sys.stderr)
         return EXIT_FAIL
     return EXIT_OK
 
