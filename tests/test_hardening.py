@@ -440,6 +440,8 @@ def test_gait_names_and_control_list_lengths_given_through_set(sets, key, fresh,
     ('"friction.mu_transverse" = "high"', "exclude[0].friction.mu_transverse"),
     ('body = ["fem", 3]', "exclude[0].body"), ('body = []', "exclude[0].body"),
     ('"friction.mu_transverse" = true', "exclude[0].friction.mu_transverse"),
+    ('"friction.mu_transverse" = nan', "exclude[0].friction.mu_transverse"),
+    ('"friction.mu_transverse" = [0.2, inf]', "exclude[0].friction.mu_transverse"),
 ])
 def test_exclude_values_are_type_checked(rule, key, fresh, capsys):
     p = write(fresh, "m.toml", f"""

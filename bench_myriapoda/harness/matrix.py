@@ -258,6 +258,8 @@ def _check_exclude_value(src: str, key: str, axis: str, want: Any, blocks: list[
         kind = "a number" if numeric else ("a value like " + ", ".join(sorted({repr(v) for v in values})[:3]))
         ok = all(isinstance(o, SCALARS) and (not numeric or (isinstance(o, (int, float)) and not isinstance(o, bool)))
                  and (numeric or type(o) in types) for o in options)
+    if ok and any(isinstance(o, float) and not math.isfinite(o) for o in options):
+        kind, ok = "a finite number", False  # NaN matches nothing; inf no grid value
     if not ok:
         raise InputError(src, key, f"expected {kind} (or a list of them), got {want!r}")
 
