@@ -37,6 +37,7 @@ from bench_myriapoda.core import registry  # noqa: E402
 from bench_myriapoda.core.config import resolve_case  # noqa: E402
 from bench_myriapoda.core.schema import SECTIONS, field_types  # noqa: E402
 from bench_myriapoda.harness.matrix import load_matrix  # noqa: E402
+from bench_myriapoda.harness.throughput_suite import SUITE  # noqa: E402
 
 EXAMPLES = int(os.environ.get("BENCH_FUZZ_EXAMPLES", "1000"))
 registry.load_all()
@@ -226,6 +227,9 @@ def matrix_input(draw):
 # --------------------------------------------------------------------------- flags
 
 CASE = ["--creature", "worm", "--body", "massspring", "--scenario", "flat"]
+JSON = st.recursive(st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text(max_size=8),
+                    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=6), inner, max_size=3),
+                    max_leaves=8)
 BAD_FLOAT = st.sampled_from(["nan", "inf", "-inf", "-1", "0", "abc", "", "1e999", "-0"])
 
 
@@ -311,24 +315,30 @@ def other_flags(draw, cmd: str):
     if cmd == "report":
         choice = draw(st.integers(0, 5))
         if choice == 0:
-            return {}, ["report", "{d}/nonesuch"]
+            return {}, ["report", "{d}/" + draw(NAME_TEXT.map(lambda v: v.strip() or "x"))]  # no such directory
         if choice == 1:
-            return {"notdir": b"x"}, ["report", "{d}/notdir"]
-        if choice == 2:
-            return {}, ["report", "{d}", "--threshold", draw(st.sampled_from(["nan", "0", "-1", "10", "inf", "x"]))]
-        if choice == 3:
-            return {"results.sqlite": draw(st.sampled_from([b"", b"garbage" * 30])),
-                    "matrix.json": draw(st.sampled_from([b"[]", b"{", b'{"name": 1}', b'{"name": "m", "cases": 5}',
-                                                         b"\xff\xfe"]))}, ["report", "{d}"]
+            return {"notdir": draw(st.binary(max_size=50))}, ["report", "{d}/notdir"]
+        if choice == 2:  # ({d} is no matrix directory either)
+            return {}, ["report", "{d}", "--threshold", draw(st.one_of(
+                st.sampled_from(["nan", "inf", "x", ""]), st.floats(max_value=0.0).map(_fmt),
+                st.floats(min_value=10.0).map(_fmt)))]
+        if choice == 3:  # a store that is not SQLite next to any matrix.json
+            store = draw(st.binary(max_size=300).filter(lambda b: not b.startswith(b"SQLite format 3")))
+            manifest = draw(st.one_of(st.binary(max_size=100), JSON.map(lambda v: json.dumps(v).encode())))
+            return {"results.sqlite": store, "matrix.json": manifest}, ["report", "{d}"]
         if choice == 4:
-            return {}, ["report", "{d}", "--history-store", draw(st.sampled_from(["", "{d}/h.sqlite"]))]
+            store = draw(st.binary(min_size=1, max_size=300).filter(lambda b: not b.startswith(b"SQLite format 3")))
+            return {"h.sqlite": store}, ["report", "{d}", "--history-store", draw(st.sampled_from(["", "{d}/h.sqlite"]))]
         return {}, ["report", "{d}", "--baseline", "{d}/nonesuch"]
-    extra = draw(st.sampled_from([
-        ["--repeats", "0"], ["--repeats", "-1"], ["--repeats", "100000"], ["--repeats", "x"],
-        ["--threshold", "nan"], ["--threshold", "-0.1"], ["--threshold", "1"], ["--threshold", "inf"],
-        ["--suite", "nonesuch"], ["--store", ""], ["--store", "{d}"], ["--store", "{d}/g.sqlite"],
-        ["--baseline", "nonesuch-run"], ["--nonesuch"]]))
-    files = {"g.sqlite": b"garbage" * 30} if "{d}/g.sqlite" in extra else {}
+    extra = draw(st.one_of(
+        st.sampled_from([["--repeats", "x"], ["--threshold", "x"], ["--suite"], ["--store", ""], ["--store", "{d}"],
+                         ["--store", "{d}/g.sqlite"], ["--baseline", "nonesuch-run"], ["--nonesuch"]]),
+        st.one_of(st.integers(max_value=2), st.integers(min_value=1001)).map(lambda n: ["--repeats", str(n)]),
+        st.one_of(st.floats(max_value=-1e-9), st.floats(min_value=1.0), st.sampled_from([math.nan])).map(
+            lambda x: ["--threshold", _fmt(x)]),
+        NAME_TEXT.filter(lambda v: v not in SUITE and v.strip()).map(lambda v: ["--suite", v])))
+    files = {"g.sqlite": draw(st.binary(min_size=1, max_size=300).filter(
+        lambda b: not b.startswith(b"SQLite format 3")))} if "{d}/g.sqlite" in extra else {}
     store = [] if "--store" in extra else ["--store", "{d}/r.sqlite"]
     return files, ["regress", *extra, *store]
 
