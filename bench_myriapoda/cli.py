@@ -73,6 +73,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--view", choices=("2d", "3d"), default=None,
                      help="--animate view: 2d = from above and from the side (default); 3d = a shaded perspective "
                           "view whose camera follows the creature")
+    _budget_arguments(run)
 
     sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
     _case_arguments(sd)
@@ -81,6 +82,7 @@ def build_parser() -> argparse.ArgumentParser:
     sd.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     sd.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     sd.add_argument("--no-store", action="store_true", help="do not record the result in the results database")
+    _budget_arguments(sd)
 
     q = sub.add_parser("quick", help="run scenarios/matrix/quick.toml and write reports/quick/index.html "
                                      "(also what no arguments do)")
@@ -95,11 +97,17 @@ def build_parser() -> argparse.ArgumentParser:
     mx.add_argument("--scheduler", metavar="ADDRESS", default=None,
                     help="dask scheduler address (default: start a LocalCluster)")
     mx.add_argument("--resume", action="store_true", help="run only the cases without a result in the store")
+    mx.add_argument("--retry-failed", action="store_true",
+                    help="with --resume: also rerun the cases stored as error or timeout")
+    mx.add_argument("--dask-timeout", type=float, metavar="SECONDS", default=None,
+                    help="--scheduler: how long a worker may take to run a test task before the matrix "
+                         "is refused (default 60)")
     mx.add_argument("--timeout-per-case", type=float, metavar="SECONDS", default=None,
                     help="record a case that runs longer as status timeout and stop its worker")
     mx.add_argument("--out", metavar="DIR", default=None,
                     help="results.sqlite, results.csv, matrix.json and series/ go here (default reports/matrix/NAME)")
     mx.add_argument("--report", action="store_true", help="write DIR/index.html and DIR/summary.md when done")
+    _budget_arguments(mx)
 
     rp = sub.add_parser("report", help="write DIR/index.html and DIR/summary.md from a matrix output directory")
     rp.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
@@ -141,6 +149,16 @@ def _case_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                    help="override a configuration key by dotted path, e.g. friction.mu_transverse=0.2 "
                         "(repeatable; `bench-myriapoda keys` lists them all)")
+
+
+def _budget_arguments(p: argparse.ArgumentParser) -> None:
+    """The resource budget a case must fit before it runs (core/feasibility.py)."""
+    p.add_argument("--force", action="store_true", help="run a case even when its resource estimate exceeds "
+                                                        "the budget below")
+    p.add_argument("--memory-budget", type=float, metavar="GB", default=None,
+                   help="refuse a case estimated to need more memory (default: half of this machine's)")
+    p.add_argument("--max-steps", type=float, metavar="N", default=None,
+                   help="refuse a case of more time steps (duration / dt; default 1e9)")
 
 
 def _resolve(args):
@@ -238,14 +256,18 @@ def cmd_run(args) -> int:
     from .harness.runner import run_case
     from .harness.store import DEFAULT_STORE, record_run
 
+    _check_path_flags(args, "--store", "--record", "--plot-gait", "--animate", "--export-frames")
     if args.record and not args.record.endswith(".npz"):
         raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
     if args.plot_gait and not args.plot_gait.endswith(".png"):
         raise InputError("--plot-gait", None, f"{args.plot_gait!r}: the file name must end in .png")
     _check_frame_outputs(args)
+    _check_run_outputs(args)
     case = _resolve(args)
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
+    _check_case_fits(case, args, _case_source(args),
+                     keep_nodes=bool(args.record or args.animate or args.export_frames))
     frames, anim_stride = _frame_recorder(args, case)
     bar = ProgressBar(enabled=not args.json and sys.stderr.isatty(), label=f"{case.creature.name}/{case.body.name}",
                       total_s=case.duration, dt=case.dt)
@@ -377,11 +399,16 @@ def cmd_stable_dt(args) -> int:
     from .harness.stable_dt import find_stable_dt
     from .harness.store import DEFAULT_STORE, record_run
 
-    if args.rel_tol <= 0:
-        raise InputError("--rel-tol", None, f"{args.rel_tol} is out of range; must be > 0")
-    if args.max_runs < 2:
-        raise InputError("--max-runs", None, f"{args.max_runs} is out of range; must be >= 2")
+    if not (math.isfinite(args.rel_tol) and 0 < args.rel_tol <= 10):
+        raise InputError("--rel-tol", None, f"{args.rel_tol} is out of range; must be a number > 0 and <= 10")
+    if not 2 <= args.max_runs <= 1000:
+        raise InputError("--max-runs", None, f"{args.max_runs} is out of range; must be 2 to 1000")
+    _check_path_flags(args, "--store")
+    if not args.no_store:
+        from .harness.store import DEFAULT_STORE, check_store
+        check_store(args.store or DEFAULT_STORE, "--store")
     case = _resolve(args)
+    _check_case_fits(case, args, _case_source(args))
     show = not args.json and sys.stdout.isatty()
 
     def progress(dt, status):
@@ -391,8 +418,9 @@ def cmd_stable_dt(args) -> int:
     res = find_stable_dt(case, rel_tol=args.rel_tol, max_runs=args.max_runs, progress=progress)
     metrics = {"stable_dt_max_s": res.stable_dt_max_s, "unstable_dt_min_s": res.unstable_dt_min_s,
                "stable_dt_runs": float(len(res.trials))}
-    result = RunResult(case, "ok", metrics, {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
-                                             "compile_s": float("nan"), "wall_s": float("nan")})
+    result = RunResult(case, "error" if res.error else "ok", metrics,
+                       {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
+                        "compile_s": float("nan"), "wall_s": float("nan")}, res.error)
     if not args.no_store:
         record_run(args.store or DEFAULT_STORE, result, command="stable-dt")
     if args.json:
@@ -403,13 +431,17 @@ def cmd_stable_dt(args) -> int:
         for dt, st, tf in res.trials:
             print(f"  dt = {dt:.4g} s  {st}" + ("" if math.isnan(tf) else f" (failed at t = {tf:.3g} s)"))
         print(f"stable_dt_max_s = {_fmt(res.stable_dt_max_s)}   (smallest unstable dt: {_fmt(res.unstable_dt_min_s)})")
+    if res.error:
+        print(f"bench-myriapoda: stable-dt stopped: {res.error.splitlines()[0]}", file=sys.stderr)
+        return EXIT_FAIL
     return EXIT_OK
 
 
 def cmd_quick(args) -> int:
     """The main job: the quick matrix on a local process pool, then its report."""
     ns = argparse.Namespace(file=QUICK_MATRIX, executor="local", workers=args.workers, scheduler=None, resume=False,
-                            timeout_per_case=None, out=args.out, report=True)
+                            timeout_per_case=None, out=args.out, report=True, retry_failed=False, dask_timeout=None,
+                            force=False, memory_budget=None, max_steps=None)
     return cmd_matrix(ns)
 
 
@@ -419,6 +451,10 @@ def cmd_report(args) -> int:
 
     if not 0 < args.threshold < 10:
         raise InputError("--threshold", None, f"{args.threshold} is out of range; must be in (0, 10)")
+    _check_path_flags(args, "--history-store", "--baseline")
+    if args.history_store:
+        from .harness.store import check_store
+        check_store(args.history_store, "--history-store", write=False)
     history = Path(args.history_store) if args.history_store else DEFAULT_STORE
     summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold)
     print(f"report written to {summary.index} and {summary.summary} ({len(summary.figures)} figures)")
@@ -436,10 +472,12 @@ def cmd_matrix(args) -> int:
     from .harness.executors import done_hashes, matrix_rows, run_matrix
     from .harness.matrix import expand_matrix, locate_matrix, write_matrix_manifest
 
-    if args.workers is not None and args.workers < 1:
-        raise InputError("--workers", None, f"{args.workers} is out of range; must be >= 1")
-    if args.timeout_per_case is not None and not args.timeout_per_case > 0:
-        raise InputError("--timeout-per-case", None, f"{args.timeout_per_case} is out of range; must be > 0")
+    if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
+        raise InputError("--workers", None, f"{args.workers} is out of range; must be 1 to {MAX_WORKERS}")
+    if args.timeout_per_case is not None and not (math.isfinite(args.timeout_per_case) and args.timeout_per_case > 0):
+        raise InputError("--timeout-per-case", None, f"{args.timeout_per_case} is out of range; must be a finite "
+                                                     "number of seconds > 0")
+    _check_matrix_flags(args)
     if args.scheduler and args.executor != "dask":
         raise InputError("--scheduler", None, "only meaningful with --executor dask")
     if args.executor == "dask":
@@ -452,6 +490,12 @@ def cmd_matrix(args) -> int:
     if out.exists() and not out.is_dir():
         raise InputError("--out", None, f"{out} exists and is not a directory")
     store = out / "results.sqlite"
+    _check_matrix_outputs(args, out, store)
+    for m in exp.cases:  # the budget only: a case its body cannot build is an error row, as any case that raises
+        _check_case_fits(m.case, args, f"{exp.path}: case {m.label}", buildable=False)
+    if args.executor == "dask" and args.scheduler:
+        from .harness.executors import check_dask_scheduler
+        check_dask_scheduler(args.scheduler, probe_timeout=args.dask_timeout)
     print(f"matrix {exp.name}: {len(exp.cases)} cases ({exp.excluded} excluded, {exp.duplicates} duplicates, "
           f"{len(exp.unsupported)} unsupported combinations)")
     if exp.unsupported:
@@ -472,7 +516,7 @@ def cmd_matrix(args) -> int:
     try:
         run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
                    timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
-                   resume=args.resume, series_dir=out / "series")
+                   resume=args.resume, series_dir=out / "series", retry_failed=args.retry_failed)
     finally:
         bar.close()
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
@@ -522,9 +566,12 @@ def cmd_regress(args) -> int:
     repeats = R.check_repeats(args.repeats)
     threshold = R.check_threshold(args.threshold)
     names = R.check_suite_names(args.suite)
+    _check_path_flags(args, "--store", "--baseline")
     store = Path(args.store) if args.store else DEFAULT_STORE
     if store.exists() and not store.is_file():
         raise InputError("--store", None, f"{store} exists and is not a file")
+    from .harness.store import check_store
+    check_store(store, "--store")
     machine = json.dumps(machine_fingerprint(), sort_keys=True)
     base = R.resolve_baseline(store, args.baseline, machine, names)
     tty = not args.json and sys.stderr.isatty()
@@ -563,6 +610,91 @@ def cmd_regress(args) -> int:
         elif regressed:
             print(f"{len(regressed)} regression(s): {', '.join(regressed)}")
     return EXIT_FAIL if regressed else EXIT_OK
+
+
+# --------------------------------------------------------------------------- validation of flags and outputs
+# Everything here runs before a case is built or a file is written (issue 15): a bad flag or an output
+# that cannot be written is one line and exit 2, not a traceback after the simulation ran.
+
+MAX_WORKERS = 1024
+
+
+def _check_path_flags(args, *flags: str) -> None:
+    """A path flag given as an empty (or blank) string is an error, not 'use the default'."""
+    for flag in flags:
+        value = getattr(args, flag.lstrip("-").replace("-", "_"), None)
+        if value is not None and not value.strip():
+            raise InputError(flag, None, "empty path; give a path or leave the flag out")
+        if value is not None and "\x00" in value:
+            raise InputError(flag, None, "a path cannot contain a NUL character")
+
+
+def _check_run_outputs(args) -> None:
+    """``run``: the store is opened and schema-checked, every output file can be written (nothing is yet)."""
+    from .harness.store import DEFAULT_STORE, check_store, check_writable_file
+
+    if not args.no_store:
+        check_store(args.store or DEFAULT_STORE, "--store")
+    for flag in ("--record", "--plot-gait", "--animate"):
+        value = getattr(args, flag.lstrip("-").replace("-", "_"))
+        if value:
+            check_writable_file(value, flag)
+    if args.export_frames:
+        from .harness.store import check_writable_dir
+        check_writable_dir(args.export_frames, "--export-frames")
+
+
+def _case_source(args) -> str:
+    """How a message names the case of run and stable-dt: CREATURE/BODY/SCENARIO as given."""
+    return f"{args.creature}/{args.body}/{args.scenario}"
+
+
+def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildable: bool = True) -> None:
+    """(Unless --force) the case fits the resource budget and (``buildable``) its body can be built
+    (core/feasibility.py)."""
+    from .core.feasibility import check_budget, check_buildable
+
+    budget = None
+    if args.memory_budget is not None:
+        if not (math.isfinite(args.memory_budget) and args.memory_budget > 0):
+            raise InputError("--memory-budget", None, f"{args.memory_budget} is out of range; must be a number of GB > 0")
+        budget = args.memory_budget * 1e9
+    if args.max_steps is not None and not (math.isfinite(args.max_steps) and args.max_steps >= 1):
+        raise InputError("--max-steps", None, f"{args.max_steps} is out of range; must be a number >= 1")
+    if not args.force:
+        check_budget(case, source, budget, args.max_steps, keep_nodes)
+    elif not math.isfinite(case.duration / case.dt) or case.duration / case.dt > 2 ** 62:
+        raise InputError(source, None, f"duration {case.duration:g} s / dt {case.dt:g} s: too many steps to count, "
+                                       "even with --force")
+    if buildable:
+        check_buildable(case, source)
+
+
+def _check_matrix_flags(args) -> None:
+    _check_path_flags(args, "--out", "--scheduler")
+    if args.retry_failed and not args.resume:
+        raise InputError("--retry-failed", None, "only meaningful with --resume")
+    if args.dask_timeout is not None:
+        if not args.scheduler:
+            raise InputError("--dask-timeout", None, "only meaningful with --scheduler")
+        if not (math.isfinite(args.dask_timeout) and 0 < args.dask_timeout <= 3600):
+            raise InputError("--dask-timeout", None, f"{args.dask_timeout} is out of range; must be > 0 and <= 3600")
+
+
+def _check_matrix_outputs(args, out: Path, store: Path) -> None:
+    """``matrix``: DIR can be written, its store is opened and schema-checked, its files are files."""
+    from .harness.store import check_store, check_writable_dir
+
+    check_writable_dir(out, "--out")
+    check_store(store, "--out")
+    for name in ("matrix.json", "results.csv", "results.parquet"):
+        if (out / name).exists() and not (out / name).is_file():
+            raise InputError("--out", None, f"{out / name} exists and is not a file")
+    if (out / "series").exists() and not (out / "series").is_dir():
+        raise InputError("--out", None, f"{out / 'series'} exists and is not a directory")
+    if args.report:
+        from .report.build import check_report_outputs
+        check_report_outputs(out)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -77,16 +77,56 @@ class Case:
 
 # --------------------------------------------------------------------------- files
 
+MAX_TOML_BYTES = 10_000_000  # the largest shipped file is a few kB
+MAX_TOML_DEPTH = 16  # tables and arrays nested deeper than any file of this project needs
+
+
 def read_toml(path: Path) -> dict[str, Any]:
+    """A TOML file as a dict; ``InputError`` naming the file for anything unreadable.
+
+    Checked here, before any key is looked at: the file exists, is a regular file of at most
+    ``MAX_TOML_BYTES``, is UTF-8, parses, and nests tables and arrays at most ``MAX_TOML_DEPTH`` deep.
+    """
+    src = str(path)
     try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
+        p = Path(path)
+        if p.is_dir():
+            raise InputError(src, None, "is a directory; expected a .toml file")
+        with open(p, "rb") as fh:
+            raw = fh.read(MAX_TOML_BYTES + 1)
     except FileNotFoundError:
-        raise InputError(str(path), None, "file not found") from None
+        raise InputError(src, None, "file not found") from None
     except OSError as exc:
-        raise InputError(str(path), None, f"cannot read file ({exc.strerror})") from None
+        raise InputError(src, None, f"cannot read file ({exc.strerror or exc})") from None
+    if len(raw) > MAX_TOML_BYTES:
+        raise InputError(src, None, f"larger than {MAX_TOML_BYTES:,} bytes; not a configuration file")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise InputError(src, None, f"not UTF-8: byte 0x{raw[exc.start]:02x} on line {line}; TOML files must be "
+                                    "UTF-8") from None
+    try:
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(str(path), None, f"malformed TOML: {exc}") from None
+        raise InputError(src, None, f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(src, None, f"malformed TOML: nested deeper than {MAX_TOML_DEPTH} levels") from None
+    _check_depth(data, src)
+    return data
+
+
+def _check_depth(data: Any, src: str) -> None:
+    """Tables and arrays nested at most MAX_TOML_DEPTH deep (checked without recursion)."""
+    stack = [(data, 0, "")]
+    while stack:
+        value, depth, key = stack.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise InputError(src, key or None, f"nested deeper than {MAX_TOML_DEPTH} levels")
+        if isinstance(value, dict):
+            stack.extend((v, depth + 1, f"{key}.{k}" if key else str(k)) for k, v in value.items())
+        elif isinstance(value, list):
+            stack.extend((v, depth + 1, key) for v in value)
 
 
 def read_tables(path: Path, allowed: set[str], required: str) -> dict[str, Any]:
@@ -136,6 +176,15 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
     for table in ("legs", "controller", "antennae", "friction", "collision", "record", "stability", "metrics"):
         if table in data:
             check_section(SECTIONS[table], data[table], src, table)
+    for table in ("gaits", "bodies"):
+        if not isinstance(data.get(table, {}), dict):
+            raise InputError(src, table, f"expected tables [{table}.NAME], got {data[table]!r}")
+        for name, sub in data.get(table, {}).items():
+            if isinstance(sub, dict) and "name" in sub:
+                kind = "gait" if table == "gaits" else "body model"
+                raise InputError(src, f"{table}.{name}.name", f"not allowed: the {kind} is named by the table "
+                                                              f"[{table}.{name}] (and chosen with "
+                                                              f"{'--gait' if table == 'gaits' else '--body'})")
     for gait, table in data.get("gaits", {}).items():
         if gait not in registry.GAITS:
             raise InputError(src, f"gaits.{gait}", f"unknown gait{did_you_mean(gait, registry.GAITS)}; choose one of "
@@ -213,6 +262,29 @@ def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, bo
 
 # --------------------------------------------------------------------------- resolution
 
+def _check_after_overrides(layers: dict[str, Any], gait: str) -> None:
+    """Cross-key checks that ``--set`` could break after the files passed them: the creature's gait
+    names, the chosen gait still among them and still possible, and the control schedule's lengths."""
+    cre = layers["creature"]
+    names = list(cre.get("gaits", ())) + ([cre["default_gait"]] if cre.get("default_gait") else [])
+    for g in names:
+        if g not in registry.GAITS:
+            raise InputError("--set", "creature.gaits", f"unknown gait {g!r}; choose from {', '.join(sorted(registry.GAITS))}")
+    if "gaits" in cre and gait not in cre["gaits"]:
+        raise InputError("--set", "creature.gaits", f"{list(cre['gaits'])!r} does not include the chosen gait {gait!r}")
+    if "legs" in registry.GAITS[gait].requires and cre.get("legs_per_segment", 0) == 0:
+        raise InputError("--set", "creature.legs_per_segment", f"unsupported combination: gait {gait!r} needs legs")
+    lens = _control_lengths(layers["scenario"])
+    if len(set(lens.values())) > 1:
+        raise InputError("--set", "scenario.control_*", f"the control schedule lists differ in length: {lens}")
+
+
+def _control_lengths(sc: Mapping[str, Any]) -> dict[str, int]:
+    """Lengths of the CONTROL schedule's three lists (a list not given has its default's length)."""
+    keys = ("control_times_s", "control_speed_m_s", "control_turn_rate_deg_s")
+    return {k: len(sc[k]) if k in sc else len(getattr(ScenarioConfig, k)) for k in keys}
+
+
 def resolve_case(creature: str, body: str, scenario: str, gait: str | None = None, *,
                  duration: float | None = None, dt: float | None = None, seed: int | None = None,
                  overrides: Iterable[str] = ()) -> Case:
@@ -259,8 +331,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     }
     for table in ("legs", "controller", "antennae", "food", "friction", "collision", "record", "stability", "metrics"):
         layers[table] = {**cdata.get(table, {}), **sdata.get(table, {})}
-    sc = layers["scenario"]
-    lens = {k: len(sc[k]) for k in ("control_times_s", "control_speed_m_s", "control_turn_rate_deg_s") if k in sc}
+    lens = _control_lengths(layers["scenario"])
     if len(set(lens.values())) > 1:
         raise InputError(str(spath), "scenario.control_*", f"the control schedule lists differ in length: {lens}")
     friction_model = layers["friction"].get("model", FrictionConfig.model)
@@ -279,6 +350,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     friction_model = layers["friction"].get("model", FrictionConfig.model)
     if f"friction:{friction_model}" not in spec.capabilities:
         raise InputError("--set", "friction.model", f"unsupported combination: body {body!r} has no {friction_model!r} friction")
+    _check_after_overrides(layers, gait)
 
     sections = {name: cls(**layers.get(name, {})) for name, cls in SECTIONS.items()}
     body_cfg = spec.config_cls(**layers["body"])

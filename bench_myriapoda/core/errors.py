@@ -17,4 +17,11 @@ class InputError(Exception):
         self.key = key
         self.message = message
         where = f"{source}: {key}" if key else source
-        super().__init__(f"{where}: {message}")
+        super().__init__(one_line(f"{where}: {message}"))
+
+
+def one_line(text: str, limit: int = 2000) -> str:
+    """``text`` as one printable line: control characters escaped (a key or file name may hold a newline),
+    cut to ``limit`` characters so a huge value cannot flood the terminal."""
+    out = "".join(ch if ch.isprintable() or ch == " " else repr(ch)[1:-1] for ch in text)
+    return out if len(out) <= limit else out[: limit - 3] + "..."

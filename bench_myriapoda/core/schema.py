@@ -12,6 +12,7 @@ Body-model sections are registered by each backend (see
 from __future__ import annotations
 
 import dataclasses
+import math
 import typing
 from dataclasses import dataclass, field
 from typing import Any, Mapping
@@ -31,6 +32,11 @@ def rng(default, *, ge=None, gt=None, le=None, lt=None, choices=None, doc="", le
     """
     return field(default=default, metadata=dict(ge=ge, gt=gt, le=le, lt=lt, choices=choices, doc=doc, length=length,
                                                 multiple=multiple, ordered=ordered, check=check))
+
+
+# Every Gaussian bump and every obstacle is a term of every terrain query (world/terrain_kernels.py): at
+# 2,000 of each a scene still sets up in seconds; 100,000 took minutes to set up and would crawl when run.
+MAX_TERRAIN_TERMS = 2000
 
 
 def _check_box_list(v) -> str | None:
@@ -229,7 +235,8 @@ class ScenarioConfig:
     slab_edge_x_m: float = rng(0.0, doc="slab: x of the book's edge (slab at x <= edge) [m]")
     slab_edge_radius_m: float = rng(0.02, gt=0.0, doc="slab: radius of the rounded edge [m]")
     terrain_seed: int = rng(0, ge=0, doc="seed of the random height field and random obstacles (not the case seed)")
-    heightfield_count: int = rng(20, ge=0, le=100000, doc="heightfield: number of Gaussians")
+    heightfield_count: int = rng(20, ge=0, le=MAX_TERRAIN_TERMS,
+                                doc="heightfield: number of Gaussians (each is a term of every terrain query)")
     heightfield_amplitude_m: list = rng((0.0, 0.5), length=2, ordered=True,
                                         doc="heightfield: [lo, hi] of the uniform Gaussian amplitudes "
                                             "(negative: pits) [m]")
@@ -251,7 +258,9 @@ class ScenarioConfig:
     mesh_band_m: float = rng(0.0, ge=0.0, doc="mesh: signed distances within this band (exact within a quarter "
                                               "hash cell of the surface, interpolated from exact samples beyond), "
                                               "+-band farther [m]; 0: a tenth of the mesh's bounding-box diagonal")
-    obstacle_cylinders: int = rng(0, ge=0, le=100000, doc="number of random vertical cylinders (Fig. 13)")
+    obstacle_cylinders: int = rng(0, ge=0, le=MAX_TERRAIN_TERMS,
+                                  doc="number of random vertical cylinders (Fig. 13; each is a term of every "
+                                      "terrain query)")
     obstacle_radius_m: list = rng((0.2, 0.5), gt=0.0, length=2, ordered=True,
                                   doc="random cylinders: [lo, hi] of the uniform radii [m]")
     obstacle_height_m: list = rng((0.1, 0.4), gt=0.0, length=2, ordered=True,
@@ -408,6 +417,17 @@ def _type_name(tp) -> str:
             list: "a list of numbers"}.get(tp, str(tp))
 
 
+MAX_INT = 2 ** 63 - 1  # integers reach numpy and numba kernels as int64
+MAX_LIST_LENGTH = 100_000
+MAX_STRING_LENGTH = 4096
+
+
+def _short(value: Any, limit: int = 80) -> str:
+    """``repr(value)`` cut to one short line: a message stays one line whatever the input."""
+    r = repr(value).replace("\n", " ")
+    return r if len(r) <= limit else r[: limit - 3] + "..."
+
+
 def field_types(cls) -> dict[str, Any]:
     hints = typing.get_type_hints(cls)
     return {f.name: hints[f.name] for f in dataclasses.fields(cls)}
@@ -417,33 +437,50 @@ def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
     """Check ``value`` against type ``tp``; ints are accepted for floats, lists for tuples."""
     if tp is float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
-        value = float(value)
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
+        try:
+            value = float(value)
+        except OverflowError:  # an integer beyond float range
+            raise InputError(source, key, "expected a finite number, got an integer beyond float range") from None
         if value != value or value in (float("inf"), float("-inf")):
             raise InputError(source, key, f"expected a finite number, got {value!r}")
         return value
     if tp is int:
         if isinstance(value, bool) or not isinstance(value, int):
             if isinstance(value, float) and value.is_integer():
-                return int(value)
-            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+                value = int(value)
+            else:
+                raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
+        if not -MAX_INT <= value <= MAX_INT:
+            raise InputError(source, key, f"{value} is out of range; must be within +-{MAX_INT}")
         return value
     if tp is bool:
         if not isinstance(value, bool):
-            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
         return value
     if tp is str:
         if not isinstance(value, str):
-            raise InputError(source, key, f"expected {_type_name(tp)}, got {value!r}")
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
+        if len(value) > MAX_STRING_LENGTH or any(ord(ch) < 32 and ch not in "\t" for ch in value):
+            raise InputError(source, key, f"expected a one-line string of at most {MAX_STRING_LENGTH} characters")
         return value
     if tp is list:
         if (not isinstance(value, (list, tuple)) or not value
                 or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)):
-            raise InputError(source, key, f"expected a non-empty list of numbers, got {value!r}")
-        return tuple(float(v) for v in value)
+            raise InputError(source, key, f"expected a non-empty list of numbers, got {_short(value)}")
+        if len(value) > MAX_LIST_LENGTH:
+            raise InputError(source, key, f"a list of {len(value)} numbers; at most {MAX_LIST_LENGTH}")
+        try:
+            out = tuple(float(v) for v in value)
+        except OverflowError:  # an integer beyond float range
+            raise InputError(source, key, "expected a list of finite numbers, got an integer beyond float range") from None
+        bad = [v for v in out if not math.isfinite(v)]
+        if bad:
+            raise InputError(source, key, f"expected a list of finite numbers, got {bad[0]!r} in it")
+        return out
     if tp is tuple:
         if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
-            raise InputError(source, key, f"expected a list of names, got {value!r}")
+            raise InputError(source, key, f"expected a list of names, got {_short(value)}")
         return tuple(value)
     raise TypeError(tp)
 

@@ -78,15 +78,24 @@ def died_result(case: Case, exitcode: int | None, wall_s: float) -> RunResult:
     return RunResult(case, "error", {}, _nan_timings(wall_s), f"worker process died ({how}) while running the case")
 
 
-def done_hashes(store_path: Path | str, matrix: str) -> set[str]:
-    """Case hashes that already have a row for ``matrix`` in the store (empty when there is no store)."""
+FAILED = ("error", "timeout")
+
+
+def done_hashes(store_path: Path | str, matrix: str, retry_failed: bool = False) -> set[str]:
+    """Case hashes that already have a row for ``matrix`` in the store (empty when there is no store).
+
+    ``retry_failed``: leave out the cases whose newest row is ``error`` or ``timeout``, so they run again.
+    """
     if not Path(store_path).exists():
         return set()
     con = connect(store_path)
     try:
-        return {h for (h,) in con.execute("SELECT case_hash FROM runs WHERE command = 'matrix' AND matrix = ?", (matrix,))}
+        rows = con.execute("SELECT case_hash, status FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id",
+                           (matrix,)).fetchall()
     finally:
         con.close()
+    newest = dict(rows)  # later rows overwrite earlier ones: the newest status of each case
+    return {h for h, st in newest.items() if not (retry_failed and st in FAILED)}
 
 
 # --------------------------------------------------------------------------- local
@@ -203,7 +212,7 @@ def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeou
 
     cluster = None
     if scheduler:
-        client = Client(scheduler)
+        client = Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
     else:
         cluster = LocalCluster(n_workers=max(1, workers), threads_per_worker=1, processes=processes,
                                dashboard_address=None)
@@ -245,13 +254,66 @@ def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeou
             cluster.close()
 
 
+DASK_CONNECT_TIMEOUT_S = 10.0
+DASK_PROBE_TIMEOUT_S = 60.0
+
+
+def probe_worker() -> str:
+    """What a Dask worker runs before the matrix: import the package and register the body models."""
+    from ..core import registry
+    registry.load_all()
+    return ",".join(sorted(registry.BODIES))
+
+
+def check_dask_scheduler(address: str, flag: str = "--scheduler", connect_timeout: float | None = None,
+                         probe_timeout: float | None = None) -> None:
+    """Connect to the scheduler at ``address`` and run :func:`probe_worker` on a worker, each within its timeout.
+
+    ``InputError`` naming ``flag`` when the scheduler cannot be reached, has no worker that runs the probe in
+    time (a worker that cannot import this package never runs it), or the probe raises.  Nothing is written.
+    """
+    import logging
+
+    from dask.distributed import Client
+    from dask.distributed import TimeoutError as DaskTimeout
+
+    from ..core.errors import InputError
+
+    connect_timeout = DASK_CONNECT_TIMEOUT_S if connect_timeout is None else connect_timeout
+    probe_timeout = DASK_PROBE_TIMEOUT_S if probe_timeout is None else probe_timeout
+    log = logging.getLogger("distributed")
+    level = log.level
+    log.setLevel(logging.CRITICAL)  # the one-line message below says it all
+    try:
+        client = Client(address, timeout=connect_timeout)
+    except (OSError, TimeoutError, DaskTimeout, ValueError, TypeError) as exc:
+        raise InputError(flag, None, f"cannot reach a dask scheduler at {address!r} within {connect_timeout:g} s "
+                                     f"({type(exc).__name__}: {exc})") from None
+    finally:
+        log.setLevel(level)
+    try:
+        fut = client.submit(probe_worker, pure=False)
+        try:
+            fut.result(timeout=probe_timeout)
+        except (TimeoutError, DaskTimeout):
+            n = len(client.scheduler_info().get("workers", {}))
+            raise InputError(flag, None, f"no dask worker at {address} ran a test task within {probe_timeout:g} s "
+                                         f"({n} worker(s) connected); the workers must be able to import "
+                                         "bench_myriapoda") from None
+        except Exception as exc:  # the probe raised on the worker (ImportError, a missing dependency)
+            raise InputError(flag, None, f"the dask workers at {address} cannot run cases: "
+                                         f"{type(exc).__name__}: {exc}") from None
+    finally:
+        client.close()
+
+
 # --------------------------------------------------------------------------- entry point
 
 def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | None = None, scheduler: str | None = None,
                timeout_per_case: float | None = None, store_path: Path | str = "results.sqlite",
                on_result: Callable[[RunResult, int, int], None] | None = None, *, matrix: str = "matrix",
                resume: bool = False, dask_processes: bool = True,
-               series_dir: Path | str | None = None) -> list[RunResult]:
+               series_dir: Path | str | None = None, retry_failed: bool = False) -> list[RunResult]:
     """Run ``cases`` and record each result in ``store_path`` as it arrives.
 
     With ``series_dir``, each case's compact recording is saved as ``series_dir/CASE_HASH.npz``
@@ -260,11 +322,12 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
     Returns this call's results in the order they finished.  ``on_result(result,
     done, total)`` is called after each result is stored.  With ``resume``,
     cases already stored for ``matrix`` are skipped (``total`` counts only the
-    cases left).  Duplicate cases (equal hashes) run once.
+    cases left); with ``retry_failed`` too, those stored as ``error`` or ``timeout``
+    run again.  Duplicate cases (equal hashes) run once.
     """
     if executor not in EXECUTORS:
         raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
-    skip = done_hashes(store_path, matrix) if resume else set()
+    skip = done_hashes(store_path, matrix, retry_failed) if resume else set()
     todo, seen = [], set(skip)
     for c in cases:
         h = c.case_hash()

@@ -42,6 +42,7 @@ import dataclasses
 import itertools
 import json
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -135,6 +136,26 @@ def _check_list(src: str, key: str, value: Any, item_type: type | tuple) -> list
     return value
 
 
+SCALARS = (bool, int, float, str)
+MAX_GRID_POINTS = 100_000
+SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
+
+
+def _check_value(src: str, key: str, v: Any) -> None:
+    """A value of ``set`` or ``grid``: what ``--set KEY=VALUE`` can carry (a scalar or a list of numbers)."""
+    ok = isinstance(v, SCALARS) or (isinstance(v, list) and all(isinstance(x, (int, float)) for x in v))
+    if not ok:
+        raise InputError(src, key, f"expected a number, string, true/false or a list of numbers, got {v!r}")
+
+
+def _check_name(src: str, key: str, name: Any) -> str:
+    """A matrix name becomes a folder name (reports/matrix/NAME): one safe path component."""
+    if not isinstance(name, str) or not SAFE_NAME.fullmatch(name) or set(name) == {"."}:
+        raise InputError(src, key, f"{name!r} cannot name an output folder; use 1-100 letters, digits, '_', '.' "
+                                   "or '-', starting with a letter, digit or '_'")
+    return name
+
+
 def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[str, Any]:
     """Types and names of one ``[matrix]`` or ``[[block]]`` table."""
     if not isinstance(table, dict):
@@ -158,14 +179,24 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[s
     for key in ("name", "description"):
         if key in out and not isinstance(out[key], str):
             raise InputError(src, f"{prefix}.{key}", f"expected a string, got {out[key]!r}")
-    if "set" in out and not isinstance(out["set"], dict):
-        raise InputError(src, f"{prefix}.set", "expected a table of dotted keys and values")
+    if "set" in out:
+        if not isinstance(out["set"], dict):
+            raise InputError(src, f"{prefix}.set", "expected a table of dotted keys and values")
+        for k, v in out["set"].items():
+            _check_value(src, f"{prefix}.set.{k}", v)
     if "grid" in out:
         if not isinstance(out["grid"], dict) or not out["grid"]:
             raise InputError(src, f"{prefix}.grid", "expected a table of dotted keys and lists of values")
         for k, v in out["grid"].items():
             if not isinstance(v, list) or not v:
                 raise InputError(src, f"{prefix}.grid.{k}", f"expected a non-empty list of values, got {v!r}")
+            for item in v:
+                _check_value(src, f"{prefix}.grid.{k}", item)
+        points = math.prod(len(v) for v in out["grid"].values())
+        if points > MAX_GRID_POINTS:
+            raise InputError(src, f"{prefix}.grid", f"{points:,} grid points; at most {MAX_GRID_POINTS:,}")
+    if "name" in out:
+        _check_name(src, f"{prefix}.name", out["name"])
     registry.load_all()
     names = {"creatures": creature_names(), "bodies": sorted(registry.BODIES),
              "gaits": sorted(registry.GAITS) + [DEFAULT_GAIT], "scenarios": sorted(scenario_paths())}
@@ -206,11 +237,35 @@ def load_matrix(path: Path | str) -> dict[str, Any]:
         raise InputError(src, "exclude", "expected an array of non-empty tables [[exclude]]")
     axis_names = set(AXIS_KEYS.values()) | {k for b in blocks for k in b.get("grid", {})}
     for i, e in enumerate(excludes):
-        for k in e:
+        for k, want in e.items():
             if k not in axis_names:
                 raise InputError(src, f"exclude[{i}].{k}", f"not an axis of this matrix; axes: {', '.join(sorted(axis_names))}")
-    return {"name": base.get("name", path.stem), "description": base.get("description", ""),
-            "blocks": blocks, "exclude": excludes}
+            _check_exclude_value(src, f"exclude[{i}].{k}", k, want, blocks)
+    name = base.get("name", path.stem)
+    _check_name(src, "matrix.name" if "name" in base else "matrix (file name)", name)
+    return {"name": name, "description": base.get("description", ""), "blocks": blocks, "exclude": excludes}
+
+
+def _check_exclude_value(src: str, key: str, axis: str, want: Any, blocks: list[dict]) -> None:
+    """An [[exclude]] value: of the axis's type (a name, a seed, a grid value), or a non-empty list of them."""
+    options = want if isinstance(want, list) else [want]
+    if not options:
+        raise InputError(src, key, "expected a value or a non-empty list of values, got []")
+    if axis in ("creature", "body", "gait", "scenario"):
+        kind, ok = "a name (string)", all(isinstance(o, str) for o in options)
+    elif axis == "seed":
+        kind, ok = "an integer seed", all(isinstance(o, int) and not isinstance(o, bool) for o in options)
+    else:
+        values = [v for b in blocks for v in b.get("grid", {}).get(axis, [])]
+        types = {type(v) for v in values if not isinstance(v, list)}
+        numeric = types and types <= {int, float}
+        kind = "a number" if numeric else ("a value like " + ", ".join(sorted({repr(v) for v in values})[:3]))
+        ok = all(isinstance(o, SCALARS) and (not numeric or (isinstance(o, (int, float)) and not isinstance(o, bool)))
+                 and (numeric or type(o) in types) for o in options)
+    if ok and any(isinstance(o, float) and not math.isfinite(o) for o in options):
+        kind, ok = "a finite number", False  # NaN matches nothing; inf no grid value
+    if not ok:
+        raise InputError(src, key, f"expected {kind} (or a list of them), got {want!r}")
 
 
 # --------------------------------------------------------------------------- expansion

@@ -23,6 +23,7 @@ class StableDtResult:
     stable_dt_max_s: float          # NaN when even the smallest dt tried was unstable
     unstable_dt_min_s: float        # NaN when no unstable dt was found up to the ceiling
     trials: list[tuple[float, str, float]]  # (dt, status, t_fail_s)
+    error: str = ""  # the message of a trial run that ended with status error (the search stopped there)
 
 
 def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_floor: float = 1e-7,
@@ -32,15 +33,27 @@ def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_flo
     ceiling = dt_ceiling if dt_ceiling is not None else case.duration / 20.0
     trials: list[tuple[float, str, float]] = []
 
+    class _TrialError(Exception):
+        pass
+
     def stable(dt: float) -> bool:
         r = run_case(dataclasses.replace(case, dt=dt))
         trials.append((dt, r.status, r.metrics.get("t_fail_s", float("nan"))))
         if progress is not None:
             progress(dt, r.status)
-        if r.status == "error":
-            raise RuntimeError(f"run at dt={dt:g} failed: {r.message}")
+        if r.status == "error":  # neither stable nor unstable: the search cannot go on
+            raise _TrialError(f"the run at dt = {dt:g} s failed: {r.message}")
         return r.status == "ok"
 
+    try:
+        return _search(case, stable, trials, rel_tol, max_runs, dt_floor, ceiling)
+    except _TrialError as exc:
+        return StableDtResult(math.nan, math.nan, trials, str(exc))
+
+
+def _search(case: Case, stable, trials, rel_tol: float, max_runs: int, dt_floor: float,
+            ceiling: float) -> StableDtResult:
+    """Bracket, then bisect (see the module docstring); ``stable(dt)`` runs one trial."""
     lo, hi = math.nan, math.nan
     dt = min(case.dt, ceiling)
     if stable(dt):

@@ -13,11 +13,13 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import sqlite3
 import time
 from pathlib import Path
 from typing import Any
 
+from ..core.errors import InputError
 from .machine import git_commit, machine_fingerprint
 
 DEFAULT_STORE = Path("reports") / "results.sqlite"
@@ -80,6 +82,113 @@ def connect(path: Path | str = DEFAULT_STORE) -> sqlite3.Connection:
     con.executescript(SCHEMA)
     _add_missing_columns(con)
     return con
+
+
+# The columns a store's tables must have (a store from an older release gains LATER_COLUMNS on open).
+REQUIRED_COLUMNS = {
+    "runs": {"id", "case_hash", "creature", "body", "gait", "scenario", "status", "message", "case_json",
+             "metrics_json", "timings_json", "steps", "steps_per_s", "realtime_factor", "compile_s", "wall_s",
+             "git_commit", "git_dirty", "machine_json", "timestamp"},
+    "metrics": {"run_id", "name", "value"},
+    "regress_history": {"run_id", "entry", "machine_json", "timestamp", "steps_per_rep", "repeats", "steps_per_s",
+                        "spread", "reference_ops_per_s", "reference_spread", "normalized"},
+}
+SQLITE_MAGIC = b"SQLite format 3\x00"
+
+
+def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[str, ...] = ()) -> Path:
+    """Check a results store before anything runs; an ``InputError`` naming ``flag`` if it is unusable.
+
+    The path must be a SQLite database whose tables (those present) have this schema's columns, or
+    not exist yet; with ``write`` it (or, if it does not exist, its nearest existing folder) must be
+    writable.  ``need`` names tables that must exist (a report reading ``runs``).  Nothing is
+    created or changed here: the store is opened read-only.
+    """
+    path = Path(path)
+    if str(path) in ("", "."):
+        raise InputError(flag, None, "empty path; give the path of a SQLite results file")
+    if path.exists() and not path.is_file():
+        raise InputError(flag, None, f"{path} exists and is not a file; give the path of a SQLite results file")
+    if not path.exists():
+        if need:
+            raise InputError(flag, None, f"{path}: no such results store")
+        if write:
+            check_writable_file(path, flag)
+        return path
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(len(SQLITE_MAGIC))
+    except OSError as exc:
+        raise InputError(flag, None, f"{path}: cannot read ({exc.strerror})") from None
+    if head and head != SQLITE_MAGIC:
+        raise InputError(flag, None, f"{path} is not a SQLite database (a results store written by bench-myriapoda)")
+    if write and (not os.access(path, os.W_OK) or _read_only_mount(path)):
+        raise InputError(flag, None, f"{path} is not writable")
+    if not head:  # an empty file: SQLite makes it a database on first write
+        if need:
+            raise InputError(flag, None, f"{path} is an empty file, not a results store")
+        return path
+    try:
+        con = sqlite3.connect(path.resolve().as_uri() + "?mode=ro", uri=True, timeout=60)
+        try:
+            tables = {n for (n,) in con.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+            for table, cols in REQUIRED_COLUMNS.items():
+                if table not in tables:
+                    continue
+                have = {row[1] for row in con.execute(f"PRAGMA table_info({table})")}
+                missing = sorted(cols - have)
+                if missing:
+                    raise InputError(flag, None, f"{path}: table {table} lacks columns {', '.join(missing)}; "
+                                                 "not a results store of this schema")
+        finally:
+            con.close()
+    except sqlite3.DatabaseError as exc:
+        raise InputError(flag, None, f"{path} is not a usable SQLite results store ({exc})") from None
+    for table in need:
+        if table not in tables:
+            raise InputError(flag, None, f"{path} has no {table} table; not a results store of this schema")
+    return path
+
+
+def check_writable_file(path: Path | str, flag: str) -> Path:
+    """An output file path that can be created or replaced: not a directory, in a writable folder.
+
+    Checks without writing anything: the nearest existing ancestor folder must be writable (the
+    missing folders between it and the file are created later, when the file is written).
+    """
+    path = Path(path)
+    if str(path) in ("", "."):
+        raise InputError(flag, None, "empty path; give a file name")
+    if path.is_dir():
+        raise InputError(flag, None, f"{path} is a directory; give a file name")
+    if path.exists() and (not os.access(path, os.W_OK) or _read_only_mount(path)):
+        raise InputError(flag, None, f"{path} is not writable")
+    check_writable_dir(path.parent, flag, what=f"the folder of {path}")
+    return path
+
+
+def check_writable_dir(path: Path | str, flag: str, what: str | None = None) -> Path:
+    """A directory that exists and is writable, or can be created (its nearest existing ancestor is)."""
+    path = Path(path)
+    what = what or str(path)
+    probe = path
+    while not probe.exists():
+        if probe.parent == probe:
+            break
+        probe = probe.parent
+    if probe.exists() and not probe.is_dir():
+        raise InputError(flag, None, f"{what}: {probe} exists and is not a directory")
+    if not os.access(probe, os.W_OK | os.X_OK) or _read_only_mount(probe):
+        raise InputError(flag, None, f"{what}: {probe} is not writable")
+    return path
+
+
+def _read_only_mount(path: Path) -> bool:
+    """True on a read-only file system (where os.access still says yes to root)."""
+    try:
+        return bool(os.statvfs(path).f_flag & os.ST_RDONLY)
+    except OSError:
+        return False
 
 
 # Columns added after the first release of the store; an older database gets them on open.

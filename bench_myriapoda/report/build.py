@@ -147,7 +147,9 @@ def build_report(directory: Path | str, baseline: Path | str | None = None, hist
     res = load_matrix_dir(directory, "DIR")
     base = load_matrix_dir(baseline, "--baseline") if baseline is not None else None
     d = res.directory
-    tmp = Path(tempfile.mkdtemp(prefix=".report-", dir=d))
+    check_report_outputs(d)
+    clean_stale_temporaries(d)
+    tmp = Path(tempfile.mkdtemp(prefix=f"{TMP_PREFIX}{os.getpid()}-", dir=d))
     try:
         with report_style():
             return _build(res, base, history_store, threshold, d, tmp)
@@ -182,7 +184,7 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     (tmp / "summary.md").write_text(f"# {title}\n" + "\n".join(page.md), encoding="utf-8")
     # move into place: figures first (the old page keeps working until index.html is replaced)
     final_fig = d / "figures"
-    old = d / f".figures-old-{os.getpid()}"
+    old = d / f"{OLD_FIGURES_PREFIX}{os.getpid()}"
     if final_fig.exists():
         final_fig.rename(old)
     (tmp / "figures").rename(final_fig)
@@ -191,6 +193,48 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     shutil.rmtree(old, ignore_errors=True)
     figures = [final_fig / p.name for p in page.figures]
     return ReportSummary(d / "index.html", d / "summary.md", figures, regressions)
+
+
+TMP_PREFIX = ".report-"  # DIR/.report-PID-XXXX: the report being built by process PID
+OLD_FIGURES_PREFIX = ".figures-old-"  # DIR/.figures-old-PID: the previous figures while PID swaps them
+
+
+def check_report_outputs(d: Path) -> None:
+    """Before anything is written: DIR is writable and index.html, summary.md are files (or absent),
+    figures/ a directory (or absent).  An ``InputError`` naming DIR otherwise."""
+    from ..core.errors import InputError
+    from ..harness.store import check_writable_dir
+
+    check_writable_dir(d, "DIR")
+    for name in ("index.html", "summary.md"):
+        p = d / name
+        if p.exists() and not p.is_file():
+            raise InputError("DIR", None, f"{p} exists and is not a file; move it away so the report can be written")
+    if (d / "figures").exists() and not (d / "figures").is_dir():
+        raise InputError("DIR", None, f"{d / 'figures'} exists and is not a directory; move it away")
+
+
+def clean_stale_temporaries(d: Path) -> list[Path]:
+    """Remove what an interrupted report left in DIR: ``.report-PID-*`` build directories and
+    ``.figures-old-PID`` of processes that no longer run (a report killed mid-write).  Also
+    ``.report-*`` of the older naming without a PID.  Returns what was removed."""
+    removed = []
+    for p in list(d.glob(f"{TMP_PREFIX}*")) + list(d.glob(f"{OLD_FIGURES_PREFIX}*")):
+        rest = p.name[len(TMP_PREFIX):] if p.name.startswith(TMP_PREFIX) else p.name[len(OLD_FIGURES_PREFIX):]
+        pid = rest.split("-", 1)[0]
+        if pid.isdigit() and _alive(int(pid)) and int(pid) != os.getpid():
+            continue  # another report is being built right now
+        shutil.rmtree(p, ignore_errors=True)
+        removed.append(p)
+    return removed
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
 
 
 # --------------------------------------------------------------------------- sections
@@ -443,7 +487,7 @@ def _history(page: _Page, store: Path | None) -> None:
 
     try:
         hist = load_history(store)
-    except sqlite3.Error as exc:
+    except (sqlite3.Error, pd.errors.DatabaseError) as exc:
         page.p(f"Could not read the regress history in {store}: {exc}", "note")
         return
     if hist.empty:

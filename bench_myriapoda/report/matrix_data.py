@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import sqlite3
+import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -52,8 +53,18 @@ class MatrixResults:
         return json.loads(self.df.loc[self.df.case_hash == case_hash, "case_json"].iloc[0])
 
 
+RECORDING_KEYS = ("t", "com", "head", "tail", "segment_centers", "energy")
+
+
 def load_matrix_dir(directory: Path | str, flag: str = "DIR") -> MatrixResults:
-    """Read a matrix output directory; an ``InputError`` naming ``flag`` if it is not one."""
+    """Read a matrix output directory; an ``InputError`` naming ``flag`` (or the bad file) if it is not one.
+
+    Everything the report will read is checked here, before it writes anything: the store is a
+    SQLite database with a ``runs`` table, ``matrix.json`` has the manifest's shape, every row's JSON
+    parses, and every case's recording is a readable ``.npz`` with the series a report draws.
+    """
+    from ..harness.store import check_store
+
     d = Path(directory)
     store, manifest = d / "results.sqlite", d / MANIFEST
     if not d.is_dir():
@@ -62,36 +73,90 @@ def load_matrix_dir(directory: Path | str, flag: str = "DIR") -> MatrixResults:
         if not f.is_file():
             raise InputError(flag, None, f"{d} is not a matrix output directory: {f.name} is missing "
                                          f"(run `bench-myriapoda matrix FILE --out {d}`)")
+    meta = _read_manifest(manifest)
+    cases = meta["cases"]
+    check_store(store, str(store), write=False, need=("runs",))
     try:
-        meta = json.loads(manifest.read_text())
-        cases = meta["cases"]
-    except (ValueError, KeyError) as exc:
-        raise InputError(str(manifest), None, f"unreadable matrix manifest: {exc}") from None
-    con = sqlite3.connect(store)
-    try:
-        rows = pd.read_sql("SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", con,
-                           params=(meta["name"],))
-    finally:
-        con.close()
+        con = sqlite3.connect(store.resolve().as_uri() + "?mode=ro", uri=True)
+        try:
+            rows = pd.read_sql("SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", con,
+                               params=(meta["name"],))
+        finally:
+            con.close()
+    except (sqlite3.Error, pd.errors.DatabaseError) as exc:
+        raise InputError(str(store), None, f"unreadable results store: {exc}") from None
     rows = rows.drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(cases)]
     table = []
     for _, r in rows.iterrows():
         info = cases[r.case_hash]
-        case = json.loads(r.case_json)
-        metrics = json.loads(r.metrics_json)
-        timings = json.loads(r.timings_json)
+        try:
+            case = json.loads(r.case_json)
+            metrics = json.loads(r.metrics_json)
+            timings = json.loads(r.timings_json)
+            json.loads(r.labels_json or "{}")
+            dt, duration = float(case["dt"]), float(case["duration"])
+            if not (isinstance(metrics, dict) and isinstance(timings, dict)):
+                raise TypeError("metrics_json and timings_json must be JSON objects")
+            metrics = {k: (np.nan if v is None else v) for k, v in metrics.items()}
+            if any(isinstance(v, (dict, list)) for v in metrics.values()):
+                raise TypeError("a metric is not a number")
+            timings = {k: (np.nan if timings.get(k) is None else float(timings.get(k)))
+                       for k in ("steps_per_s", "realtime_factor", "compile_s", "wall_s")}
+        except (ValueError, TypeError, KeyError) as exc:
+            raise InputError(str(store), f"runs.id={r.id}", f"unreadable row ({type(exc).__name__}: {exc}); "
+                                                          "not written by bench-myriapoda matrix") from None
+        _check_recording(d, r.case_hash)
         axes = {k: v for k, v in info["axes"].items() if k in AXES}
         grid = {f"grid.{k}": v for k, v in info["axes"].items() if k not in AXES}
         row = {"case_hash": r.case_hash, "label": info["label"], **axes, **grid, "status": r.status,
-               "message": r.message or "", "dt": case["dt"], "duration": case["duration"],
+               "message": r.message or "", "dt": dt, "duration": duration,
                "case_json": r.case_json, "labels_json": r.labels_json,
-               **{f"metric.{k}": (np.nan if v is None else v) for k, v in metrics.items()},
-               **{k: (np.nan if timings.get(k) is None else timings.get(k))
-                  for k in ("steps_per_s", "realtime_factor", "compile_s", "wall_s")}}
+               **{f"metric.{k}": v for k, v in metrics.items()}, **timings}
         table.append(row)
     df = pd.DataFrame(table)
     if df.empty:
         df = pd.DataFrame(columns=["case_hash", "label", *AXES, "status", "message", "dt", "duration"])
     return MatrixResults(d, meta["name"], meta.get("description", ""), list(meta.get("grid_keys", [])), df,
                          list(meta.get("unsupported", [])))
+
+
+def _read_manifest(manifest: Path) -> dict:
+    """``matrix.json`` with the shape :func:`~..harness.matrix.write_matrix_manifest` writes, or InputError."""
+    src = str(manifest)
+    try:
+        meta = json.loads(manifest.read_text(encoding="utf-8"))
+    except (ValueError, OSError) as exc:
+        raise InputError(src, None, f"unreadable matrix manifest: {exc}") from None
+    if not isinstance(meta, dict):
+        raise InputError(src, None, f"expected a JSON object, got {type(meta).__name__}")
+    for key, tp in (("name", str), ("cases", dict)):
+        if not isinstance(meta.get(key), tp):
+            raise InputError(src, key, f"expected {'a string' if tp is str else 'an object'}, got {meta.get(key)!r:.80}")
+    for key, tp in (("description", str), ("grid_keys", list), ("unsupported", list)):
+        if key in meta and not isinstance(meta[key], tp):
+            raise InputError(src, key, f"expected {'a string' if tp is str else 'a list'}, got {meta[key]!r:.80}")
+    for h, info in meta["cases"].items():
+        if not (isinstance(info, dict) and isinstance(info.get("label"), str) and isinstance(info.get("axes"), dict)):
+            raise InputError(src, f"cases.{h}", "expected an object with a string 'label' and an object 'axes'")
+    return meta
+
+
+def _check_recording(d: Path, case_hash: str) -> None:
+    """A case's recording, if there is one, loads and has the series the report draws."""
+    path = d / "series" / f"{case_hash}.npz"
+    if not path.exists():
+        return
+    try:
+        rec = load_recording(path)
+        missing = [k for k in RECORDING_KEYS if k not in rec]
+        if missing:
+            raise ValueError(f"no {', '.join(missing)}")
+        n = len(rec["t"])
+        if any(len(rec[k]) != n for k in RECORDING_KEYS) or ("leg_t" in rec) != ("leg_states" in rec):
+            raise ValueError("series of different lengths")
+        if "leg_t" in rec and len(rec["leg_t"]) != len(rec["leg_states"]):
+            raise ValueError("leg_t and leg_states of different lengths")
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile, TypeError) as exc:
+        raise InputError(str(path), None, f"unreadable recording ({type(exc).__name__}: {exc}); delete it or "
+                                          "rerun the case") from None
