@@ -235,6 +235,8 @@ def _alive(pid: int) -> bool:
     except ProcessLookupError:
         return False
     except PermissionError:
+        return True
+    return True
 
 
 # --------------------------------------------------------------------------- sections
