@@ -314,8 +314,6 @@ def test_unwritable_matrix_out_is_refused_before_any_case_runs(fresh, capsys, mo
     assert not ran
 
 
-@pytest.mark.xfail(reason="closed-stdout (BrokenPipe) handling in cli.main is helper i14a's part of the CLI; "
-                          "passes once that lands", strict=False)
 def test_a_closed_stdout_is_no_traceback(tmp_path):
     """The reader of stdout goes away (``bench-myriapoda list | head -0``): no traceback."""
     proc = subprocess.Popen([sys.executable, "-m", "bench_myriapoda.cli", "list"], cwd=ROOT, stdout=subprocess.PIPE,
