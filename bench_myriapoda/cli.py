@@ -32,7 +32,7 @@ QUICK_MATRIX = "quick"
 QUICK_OUT = Path("reports") / "quick"
 
 TABLE_METRICS = ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg", "slip_ratio",
-                 "path_following_error_bl", "contact_fraction", "t_fail_s")
+                 "path_following_error_bl", "contact_fraction", "t_fail_s", "posture_fault")
 
 
 class _Parser(argparse.ArgumentParser):

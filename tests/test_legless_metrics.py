@@ -178,3 +178,20 @@ def test_path_following_error_is_small_when_segments_follow_the_head():
     s = Series(t=t, com=cs.mean(axis=1), head=head, tail=cs[:, -1], segment_centers=cs,
                energy=np.zeros((k, 3)), nodes=None)
     assert path_following_error(s, 0, k - 1, 1.0) < 1e-9
+
+
+@pytest.mark.parametrize("fault, expected", [(1.0, 1), (0.0, 0)])
+def test_strict_run_fails_on_posture_fault(monkeypatch, capsys, fault, expected):
+    # the run itself is replaced: this checks the CLI's exit rule, the metric is tested above
+    from bench_myriapoda.cli import main
+    from bench_myriapoda.harness import runner
+    from bench_myriapoda.harness.runner import RunResult
+
+    def fake_run_case(case, **kw):
+        return RunResult(case, "ok", {"posture_fault": fault, "speed_bl_per_cycle": 0.0}, {"steps": 1})
+    monkeypatch.setattr(runner, "run_case", fake_run_case)
+    code = main(["run", "--creature", "snake", "--body", "massspring", "--scenario", "flat",
+                 "--duration", "0.01", "--no-store", "--json", "--strict"])
+    assert code == expected
+    if fault:
+        assert "posture fault" in capsys.readouterr().err
