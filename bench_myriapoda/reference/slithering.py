@@ -29,7 +29,8 @@ come out in body lengths per cycle and do not depend on T, g or the size of the 
 only on A, lambda and the ratios mu_b / mu_f and mu_t / mu_f.
 
 Units: lengths in body lengths (BL), time in gait periods, angles in radians.
-Frame: x along the mean body axis toward the head, y to the body's left (seen from above);
+Frame: x along the mean body axis toward the head (the mean over the cycle of the unit vector
+from tail to head, as ``metrics.locomotion`` takes it), y to the body's left (seen from above);
 ``lateral_speed_bl_per_cycle`` is positive to the body's right (as ``metrics.locomotion``'s
 ``lateral_speed_m_per_s``), ``angular_velocity_rad_per_cycle`` positive for a turn to the left
 (counter-clockwise seen from above).
@@ -48,7 +49,8 @@ from scipy.special import j0
 class SlitheringResult:
     """Steady slithering of the kinematic model (all per gait period T, lengths in body lengths).
 
-    speed_bl_per_cycle: displacement of the centre of mass along the mean body axis per cycle.
+    speed_bl_per_cycle: displacement of the centre of mass along the mean body axis per cycle (the
+        mean over the cycle of the unit tail-to-head vector, as metrics.locomotion measures it).
     lateral_speed_bl_per_cycle: displacement to the body's right per cycle.
     angular_velocity_rad_per_cycle: rotation of the body frame per cycle (+ = to the left).
     travel_angle_deg: atan2(lateral, forward), as metrics.locomotion's travel_angle_deg.
@@ -185,13 +187,15 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
             sx, cx = math.sin(turn) / turn, (1.0 - math.cos(turn)) / turn
             disp = np.array([sx * V[0] - cx * V[1], cx * V[0] + sx * V[1]])
         max_res = res / scale
+        psis = turn * phases
     else:
         pos = np.zeros(2)
         psi = 0.0
         x = np.zeros(3)
         max_res = 0.0
         h = 1.0 / n_time
-        for sh in shapes:
+        psis = np.zeros(n_time)
+        for i, sh in enumerate(shapes):
             x, res = _solve(lambda y: _balance(y, *sh, mus, delta), x)
             max_res = max(max_res, res / scale)
             V, om = x[:2], x[2]
@@ -204,8 +208,20 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
             d = h * np.array([sx * V[0] - cx * V[1], cx * V[0] + sx * V[1]])
             c, s_ = math.cos(psi), math.sin(psi)
             pos += np.array([c * d[0] - s_ * d[1], s_ * d[0] + c * d[1]])
+            psis[i] = psi + 0.5 * th
             psi += th
         disp, turn = pos, psi
+    # forward and lateral along the mean body axis over the cycle, as metrics.locomotion measures
+    # them: the mean of the unit tail-to-head vectors (the head-tail line swings within a cycle)
+    axes = []
+    for (X, _, _, _), p in zip(shapes, psis):
+        ht = X[0] - X[-1]
+        ht = ht / np.linalg.norm(ht)
+        c, s_ = math.cos(p), math.sin(p)
+        axes.append([c * ht[0] - s_ * ht[1], s_ * ht[0] + c * ht[1]])
+    ax = np.mean(axes, axis=0)
+    ax = ax / np.linalg.norm(ax)
+    disp = np.array([disp @ ax, ax[0] * disp[1] - ax[1] * disp[0]])
     forward, lateral = float(disp[0]), float(-disp[1])
     no_slip = wavelength_bl * float(j0(curvature_amplitude * wavelength_bl / (2.0 * math.pi)))
     return SlitheringResult(
