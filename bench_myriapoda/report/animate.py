@@ -41,6 +41,10 @@ from matplotlib.patches import Circle, Polygon, Rectangle  # noqa: E402
 
 from ..bodies import scene as SC  # noqa: E402
 from ..bodies.scene import Scene  # noqa: E402
+from .scene_style import (  # noqa: E402,F401  (re-exported: the tests and callers name them here)
+    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, GROUND_EDGE, KIND_COLORS, SLAB_COLOR,
+    add_leg_state_legend, surface_height,
+)
 from ..metrics.gait import STATE_COLORS, STATE_NAMES  # noqa: E402
 from ..world.terrain_kernels import (  # noqa: E402
     H_NOBST, OBST_CYLINDER, SLAB, obstacle_records, terrain_phi_numpy,
@@ -53,11 +57,7 @@ TICK_TOL_S = 1e-6  # a frame interval this close to whole ticks counts as whole 
 MIN_GIF_TICKS = 2  # browsers play GIF frames shorter than 2 cs as 10 cs
 SUFFIXES = (".gif", ".mp4")
 
-KIND_COLORS = {SC.RIGID_BOX: "#b08850", SC.FEM_SURFACE: "#7fb3d5", SC.FEM_BLOCK_SURFACE: "#b08850",
-               SC.LATTICE_SURFACE: "#e39c9c"}
-DEFAULT_COLOR = "#aaaaaa"
 EDGE_RGBA = (0.0, 0.0, 0.0, 0.35)
-GROUND_COLOR, GROUND_EDGE, SLAB_COLOR = "#ece2cf", "#8c7a5b", "#d2bf99"
 OBSTACLE_COLOR = "#6e6e6e"
 # directions toward the viewer: the top view looks down -y, the side view looks down -z
 VIEWS = {"top": (np.array([0.0, 1.0, 0.0]), (0, 2)), "side": (np.array([0.0, 0.0, 1.0]), (0, 1))}
@@ -214,8 +214,6 @@ def _leg_segments(scene: Scene, view: str, side: int | None = None) -> tuple[np.
     return seg, cols + cols
 
 
-ANTENNA_COLOR = (0.35, 0.2, 0.05, 1.0)
-ANTENNA_CONTACT_COLOR = (0.85, 0.1, 0.1, 1.0)
 
 
 def _antenna_segments(scene: Scene, view: str) -> tuple[list, list]:
@@ -237,32 +235,7 @@ def _spring_segments(scene: Scene, view: str) -> np.ndarray:
 
 # --------------------------------------------------------------------------- terrain
 
-def surface_height(kind: int, f: np.ndarray, x: np.ndarray, z: float = 0.0) -> np.ndarray:
-    """Height y [m] of the terrain surface (phi = 0) above each x (n,) [m] on the line z [m].
 
-    Vectorised bisection on ``terrain_phi_numpy``: phi grows with y along every
-    vertical line of a height-field terrain (plane, slope, slab), so the surface
-    is where it changes sign.  Bracketed by widening a search interval around
-    f[0]; NaN where no sign change is found (no ground below that x).
-    """
-    x = np.asarray(x, dtype=float)
-
-    def phi(y):
-        return terrain_phi_numpy(kind, f, np.column_stack([x, y, np.full_like(x, z)]))
-
-    lo, hi = np.full_like(x, f[0] - 1.0), np.full_like(x, f[0] + 1.0)
-    for _ in range(40):  # widen until phi(lo) <= 0 <= phi(hi) everywhere (or give up: a 1e12 m interval)
-        below, above = phi(lo) > 0, phi(hi) < 0
-        if not (below.any() or above.any()):
-            break
-        lo = np.where(below, lo - 2.0 * (hi - lo), lo)
-        hi = np.where(above, hi + 2.0 * (hi - lo), hi)
-    found = (phi(lo) <= 0) & (phi(hi) >= 0)
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        up = phi(mid) > 0
-        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
-    return np.where(found, 0.5 * (lo + hi), np.nan)
 
 
 def _draw_terrain(ax_top, ax_side, terrain, xlim, ylim, zlim) -> None:
@@ -440,11 +413,7 @@ def _static_figure(xlim, ylim, zlim, terrain, has_legs: bool, dpi: float, size_i
     return fig, [ax.get_position().bounds for ax in axes]
 
 
-def add_leg_state_legend(fig) -> None:
-    """The leg-state colours (``metrics.gait.STATE_COLORS``) as one legend row at the bottom of ``fig``."""
-    handles = [Line2D([0], [0], color=c, lw=2.5, label=n) for c, n in zip(STATE_COLORS, STATE_NAMES)]
-    fig.legend(handles=handles, loc="lower center", ncol=len(handles) + 1, fontsize=9, frameon=False,
-               title="leg state:", title_fontsize=9, alignment="left", borderaxespad=0.2)
+
 
 
 def _figure_2d(frames: Sequence[Scene], terrain, title: str, dpi: float, size_in, water):

@@ -36,7 +36,7 @@ from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noq
 
 from ..bodies.scene import Scene  # noqa: E402
 from ..world.terrain_kernels import H_NOBST, OBST_CYLINDER, SLAB, obstacle_records  # noqa: E402
-from .animate import (  # noqa: E402
+from .scene_style import (  # noqa: E402
     ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, KIND_COLORS,
     add_leg_state_legend, surface_height,
 )
