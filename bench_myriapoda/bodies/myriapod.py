@@ -152,6 +152,7 @@ class BodyMyriapod:
         out["touch_fraction_at_walk"] = c.touch_fraction_at_walk
         out["tracking_error_mean_m"] = c.tracking_sq_sum / c.tracking_n if c.tracking_n else float("nan")
         out["brain_mode_final"] = float(c.brain)
+        out.update(c.leg_metrics())
         out.update(self.behaviour_metrics())
         return out
 

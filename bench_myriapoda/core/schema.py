@@ -129,6 +129,9 @@ class LegsConfig:
     root_y_m: float = rng(0.0, doc="root height in the segment frame [m]")
     root_z_m: float = rng(0.5, gt=0.0, doc="root distance from the midline [m]")
     contact_distance_m: float = rng(0.01, ge=0.0, doc="a tip this close to the surface touches it [m]")
+    collide: bool = rng(True, doc="a swinging leg's tip or knee stops at the terrain and obstacle surfaces, a "
+                                  "STANCE leg whose knee enters one lifts (issue 16); false: the paper's legs, "
+                                  "which pass through obstacles")
 
 
 @dataclass(frozen=True)

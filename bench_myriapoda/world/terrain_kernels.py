@@ -116,19 +116,25 @@ Obstacle grid: ``with_obstacles`` appends, right after the records, a uniform
 grid over the x-z plane built once per terrain, so that a query examines the
 obstacles near p and not all of them (``obstacles_below``).  Each record has
 an x-z footprint square (a cylinder: centre +- radius; a box: centre +-
-sqrt(half_x^2 + half_z^2), the square its yaw can sweep); each cell lists the
-records whose square overlaps it.  A query visits rings of cells around p's
-cell (p projected onto the grid when outside it) and stops when the ring's
-Chebyshev distance from p exceeds the nearest obstacle found (or the base
-terrain's phi) -- a lower bound of every obstacle not yet visited.  The answer
+sqrt(half_x^2 + half_z^2), the square its yaw can sweep); each cell has two
+lists: the records whose square overlaps it, and those whose square widened
+by the reach D = GRID_REACH_CELLS cells overlaps it.  A query inside the grid
+whose cutoff (the base terrain's phi) is at most D -- a body or leg point
+within D of the ground, the common case -- reads the widened list of p's own
+cell and nothing else: every record nearer than the cutoff is on it.
+Otherwise it visits the plain lists of rings of cells around p's cell (p
+projected onto the grid when outside it) and stops when the ring's Chebyshev
+distance from p exceeds the nearest obstacle found -- a lower bound of every
+obstacle not yet visited.  The answer
 is the brute-force loop's to the bit (``obstacles_below_brute``; ties go to
 the lowest record, as the loop's strict ``<`` does).  Block at
 g = f[6] + OBST_STRIDE * f[7] (absolute offsets)::
 
     g+0  cell size h [m]   g+1  1/h   g+2, g+3  grid origin (x0, z0) [m]
-    g+4, g+5  cells (nx, nz)   g+6  cells table offset (GRID_CELL_STRIDE = 2 per cell,
-    cell (i, k) at i*nz + k: first list entry, record count)   g+7  list offset
-    (the first f-index of every listed record, cell after cell)
+    g+4, g+5  cells (nx, nz)   g+6  cells table offset (GRID_CELL_STRIDE = 4 per cell,
+    cell (i, k) at i*nz + k: first list entry and record count of the plain list, then of
+    the widened list)   g+7  list offset
+    (the first f-index of every listed record, cell after cell)   g+8  reach D [m]   g+9  reserved
 """
 from __future__ import annotations
 
@@ -155,8 +161,9 @@ HF_STRIDE = 5
 OBST_STRIDE = 10
 OBST_CYLINDER = 1
 OBST_BOX = 2
-GRID_HDR = 8
-GRID_CELL_STRIDE = 2
+GRID_HDR = 10
+GRID_REACH_CELLS = 1.5       # a cell also lists the records within this many cells of it (module docstring)
+GRID_CELL_STRIDE = 4
 GRID_CELL_DIAMETERS = 1.0    # cell size = this x the mean footprint width (each record overlaps ~4 cells)
 GRID_MAX_CELLS_PER_RECORD = 16  # coarser cells when the obstacles are so sparse that the grid would be larger
 GRID_MIN_CELLS = 64
@@ -381,6 +388,7 @@ def obstacles_below_counted(f, x, y, z, best):
     h, invh, x0, z0 = f[g], f[g + 1], f[g + 2], f[g + 3]
     nx, nz = int(f[g + 4]), int(f[g + 5])
     cells, lst = int(f[g + 6]), int(f[g + 7])
+    reach = f[g + 8]
     arg = -1
     examined = 0
     # p in cell units, projected onto the grid (a per-axis clamp: it brings p no farther from any
@@ -394,10 +402,16 @@ def obstacles_below_counted(f, x, y, z, best):
     qv = min(max(v, 0.0), float(nz))
     out = max(max(u - qu, qu - u), max(v - qv, qv - v)) * h  # Chebyshev distance of p from the grid [m]
     slack = GRID_SLACK_CELLS * h
-    if out > 0.0 and out - slack > best:  # (inside the grid, p may be inside an obstacle: best < 0)
+    # outside the grid, every footprint is at least out + reach away (the grid holds the widened squares);
+    # inside it, p may be inside an obstacle (best < 0)
+    if out > 0.0 and out + reach - slack > best:
         return best, -1, 0
     ci = min(int(qu), nx - 1)
     ck = min(int(qv), nz - 1)
+    if out == 0.0 and best <= reach - slack:
+        # every record with a bound below best has its footprint within reach of p: listed in p's cell
+        best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (ci * nz + ck) + 2, lst, x, y, z, best, arg)
+        return best, arg, m
     kmax = max(max(ci, nx - 1 - ci), max(ck, nz - 1 - ck))
     for ring in range(kmax + 1):
         if ring > 0:
@@ -991,34 +1005,41 @@ def obstacle_grid(rec: np.ndarray, start: int, cell_m: float | None = None) -> n
 
     The record at row r sits at f-index ``start - OBST_STRIDE * (n - r)`` (the records
     precede the grid).  Cells of ``cell_m`` [m], by default GRID_CELL_DIAMETERS x the
-    mean footprint width, coarsened so that the grid has at most
-    max(GRID_MIN_CELLS, GRID_MAX_CELLS_PER_RECORD x n) cells.
+    mean footprint width, coarsened so that the footprints' bounding square holds at most
+    max(GRID_MIN_CELLS, GRID_MAX_CELLS_PER_RECORD x n) cells; the grid covers that square
+    widened by the reach.
     """
     n = len(rec)
     fp = obstacle_footprints(rec)
-    lo = np.array([np.min(fp[:, 0] - fp[:, 2]), np.min(fp[:, 1] - fp[:, 2])])
-    hi = np.array([np.max(fp[:, 0] + fp[:, 2]), np.max(fp[:, 1] + fp[:, 2])])
-    span = np.maximum(hi - lo, 1e-9)
+    lo0 = np.array([np.min(fp[:, 0] - fp[:, 2]), np.min(fp[:, 1] - fp[:, 2])])
+    hi0 = np.array([np.max(fp[:, 0] + fp[:, 2]), np.max(fp[:, 1] + fp[:, 2])])
+    span0 = np.maximum(hi0 - lo0, 1e-9)
     h = float(cell_m) if cell_m is not None else GRID_CELL_DIAMETERS * 2.0 * float(fp[:, 2].mean())
     cap = max(GRID_MIN_CELLS, GRID_MAX_CELLS_PER_RECORD * n)
-    h = max(h, float(np.sqrt(span[0] * span[1] / cap)), float(span.max()) / cap)
-    nx, nz = (int(v) for v in np.maximum(np.ceil(span / h), 1))
+    h = max(h, float(np.sqrt(span0[0] * span0[1] / cap)), float(span0.max()) / cap)
+    reach = GRID_REACH_CELLS * h
+    lo, hi = lo0 - reach, hi0 + reach  # the grid holds the widened squares
+    nx, nz = (int(v) for v in np.maximum(np.ceil((hi - lo) / h), 1))
     first = start - OBST_STRIDE * n
-    lists: list[list[int]] = [[] for _ in range(nx * nz)]
-    for r in range(n):
-        cx, cz, w = fp[r]
-        i0 = max(int(np.floor((cx - w - lo[0]) / h - GRID_SLACK_CELLS)), 0)
-        i1 = min(int(np.floor((cx + w - lo[0]) / h + GRID_SLACK_CELLS)), nx - 1)
-        k0 = max(int(np.floor((cz - w - lo[1]) / h - GRID_SLACK_CELLS)), 0)
-        k1 = min(int(np.floor((cz + w - lo[1]) / h + GRID_SLACK_CELLS)), nz - 1)
-        for i in range(i0, i1 + 1):
-            for k in range(k0, k1 + 1):
-                lists[i * nz + k].append(first + OBST_STRIDE * r)
-    counts = np.array([len(c) for c in lists], dtype=float)
+    plain: list[list[int]] = [[] for _ in range(nx * nz)]
+    wide: list[list[int]] = [[] for _ in range(nx * nz)]
+    for lists, grow in ((plain, 0.0), (wide, reach)):
+        for r in range(n):
+            cx, cz, w = fp[r]
+            w += grow
+            i0 = max(int(np.floor((cx - w - lo[0]) / h - GRID_SLACK_CELLS)), 0)
+            i1 = min(int(np.floor((cx + w - lo[0]) / h + GRID_SLACK_CELLS)), nx - 1)
+            k0 = max(int(np.floor((cz - w - lo[1]) / h - GRID_SLACK_CELLS)), 0)
+            k1 = min(int(np.floor((cz + w - lo[1]) / h + GRID_SLACK_CELLS)), nz - 1)
+            for i in range(i0, i1 + 1):
+                for k in range(k0, k1 + 1):
+                    lists[i * nz + k].append(first + OBST_STRIDE * r)
+    seq = [c for pair in zip(plain, wide) for c in pair]  # cell by cell: plain, widened
+    counts = np.array([len(c) for c in seq], dtype=float)
     firsts = np.concatenate([[0.0], np.cumsum(counts)[:-1]])
     cells = np.column_stack([firsts, counts]).reshape(-1)
-    flat = np.array([j for c in lists for j in c], dtype=float)
-    hdr = np.array([h, 1.0 / h, lo[0], lo[1], nx, nz, start + GRID_HDR, start + GRID_HDR + len(cells)])
+    flat = np.array([j for c in seq for j in c], dtype=float)
+    hdr = np.array([h, 1.0 / h, lo[0], lo[1], nx, nz, start + GRID_HDR, start + GRID_HDR + len(cells), reach, 0.0])
     return np.concatenate([hdr, cells, flat])
 
 

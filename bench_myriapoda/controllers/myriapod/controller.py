@@ -38,6 +38,7 @@ from ...bodies import legs as L
 from ...world import terrain_kernels as TK
 from ...world.food import FoodField
 from ...world.terrain import base_height, terrain_from_scenario
+from . import leg_collision as LC
 from . import switcher as SW
 from . import targeter as TG
 from .antennae import LEFT, RIGHT, Antennae
@@ -196,6 +197,13 @@ class MyriapodController:
         self.heading_err_sum = 0.0
         self.heading_err_n = 0
         self.timeline_centers: list[np.ndarray] = []
+        # legs against the terrain and obstacles (issue 16, leg_collision.py)
+        self.collide = lg.collide
+        self._prev_angles = np.zeros((self.n_legs, 3))
+        self._stopped = np.zeros(self.n_legs, dtype=bool)
+        self.leg_stops = 0              # swing moves cut at a surface, summed over legs and steps
+        self.leg_stuck = 0              # leg-steps left inside with no way out (see stop_swinging_legs)
+        self.leg_penetration_max = 0.0  # deepest knee or tip inside the terrain over the run [m]
 
     # ------------------------------------------------------------------ the head (Sec. 4.3)
     def _sense(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
@@ -302,8 +310,12 @@ class MyriapodController:
                          self.height_target, speed, rate, turn_dir, dt, self.c_T, self.R_T)
         body.set_support(self.kinematic, self.c_T, self.R_T, dt)
         # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
+        if self.collide:
+            self._prev_angles[:] = self.angles
         SW.switcher_step(self.states, self.angles, self.airborne, self.touching, self.ik_failed, self.sw_params,
                          dt, self.entered)
+        if self.collide:
+            self._stop_legs_at_surfaces()
         SW.fix_stance_tips(self.entered, self.c_T, self.R_T, self.geom, self.angles, self.tips)
         SW.stance_inverse_kinematics(self.states, self.c_T, self.R_T, self.geom, self.tips, self.angles,
                                      self.ik_failed)
@@ -314,6 +326,7 @@ class MyriapodController:
         L.legs_forward_kinematics(self.c_T, self.R_T, self.geom, self.angles, self._O, self._M, self.tips)
         in_stance = self.states == SW.STANCE
         self.tips[in_stance] = stance_tips[in_stance]  # a planted tip stays where it touched down
+        self._legs_after_kinematics()
         if self._step % self.record_every == 0:
             self.timeline_t.append(t)
             self.timeline_states.append(self.states.astype(np.int8))
@@ -323,6 +336,25 @@ class MyriapodController:
                                          else np.zeros(2, dtype=bool))
             self.timeline_centers.append(c.copy())
         self._step += 1
+
+    # ------------------------------------------------------------------ legs and obstacles (issue 16)
+    def _stop_legs_at_surfaces(self) -> None:
+        """Cut this step's swing moves where a tip or knee meets the terrain (``leg_collision``)."""
+        self.leg_stuck += LC.stop_swinging_legs(self.states, self._prev_angles, self.angles, self.c_T, self.R_T,
+                                                self.geom, self.terr_kind, self.terr, self._stopped)
+        self.leg_stops += int(self._stopped.sum())
+
+    def _legs_after_kinematics(self) -> None:
+        """Deepest knee or tip inside the terrain so far; STANCE knees inside lift their legs next step."""
+        if self.collide:
+            LC.stance_knees_inside(self.states, self._M, self.terr_kind, self.terr, self.ik_failed)
+        self.leg_penetration_max = max(self.leg_penetration_max,
+                                       LC.legs_penetration(self.terr_kind, self.terr, self._M, self.tips))
+
+    def leg_metrics(self) -> dict[str, float]:
+        """``leg_penetration_max_m`` [m], ``leg_stops`` and ``leg_stuck`` (leg-steps) of the run so far."""
+        return {"leg_penetration_max_m": self.leg_penetration_max, "leg_stops": float(self.leg_stops),
+                "leg_stuck": float(self.leg_stuck)}
 
     def record_tracking(self, c: np.ndarray) -> None:
         """Accumulate the squared distance of supported segments from their targets after the body's step."""
