@@ -19,7 +19,11 @@ tucked pose (theta, pi/2, pi - gamma) -- femur straight up, tibia straight down,
 the tip just below the root, inside the body's own clearance -- and stops at
 the first outside pose of that path.
 
-A STANCE leg's tip is fixed where it touched down, outside; its IK knee can be
+A tip touches down where the Switcher saw it within the contact distance,
+at the previous step's pose; on this step's pose it may have moved inside
+(a segment left to the dynamics can move more than its target did): such a
+tip is put back on the surface along the normal before it is fixed
+(``surface_touchdown_tips``).  A STANCE leg's tip is fixed where it touched down, outside; its IK knee can be
 carried into an obstacle by the body's motion: that leg is reported as an IK
 failure, so rule 3 lifts it on the next step (App. B's "cannot resolve").
 
@@ -35,11 +39,12 @@ from numba import njit
 from bench_myriapoda.bodies.legs import ALPHA, BETA, FEMUR, GAMMA, ROOT_X, ROOT_Y, ROOT_Z, THETA, TIBIA, \
     leg_plane_points, side_sign
 from bench_myriapoda.bodies.rigid_kernels import _matvec
-from bench_myriapoda.world.terrain_kernels import signed_distance
+from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
 
 from .switcher import STANCE
 
 BISECTION_STEPS = 40   # 2^-40 of one step's angle change: the stopped tip is on the surface to ~1e-12 m
+PROJECTION_STEPS = 4   # p -= phi n: exact in one step on planes, cylinder sides and tops, box faces
 
 
 @njit(cache=True)
@@ -113,6 +118,26 @@ def stop_swinging_legs(states, prev_angles, angles, seg_c, seg_R, geom, kind, f,
         angles[k, ALPHA] = a[1] + s * (b[1] - a[1])
         angles[k, BETA] = a[2] + s * (b[2] - a[2])
     return stuck
+
+
+@njit(cache=True)
+def surface_touchdown_tips(entered, tips, kind, f):
+    """Tips (n_legs, 3) [m] of the legs that touched down (entered (n_legs,) bool) moved out onto the surface.
+
+    A tip inside (phi < 0) moves by -phi along the surface normal, up to PROJECTION_STEPS
+    times, until phi >= 0.  Call after ``switcher.fix_stance_tips``, before the IK.
+    """
+    for k in range(entered.shape[0]):
+        if not entered[k]:
+            continue
+        for _ in range(PROJECTION_STEPS):
+            d = signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
+            if d >= 0.0:
+                break
+            nx, ny, nz = surface_normal(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
+            tips[k, 0] -= d * nx
+            tips[k, 1] -= d * ny
+            tips[k, 2] -= d * nz
 
 
 @njit(cache=True)
