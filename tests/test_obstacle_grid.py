@@ -99,3 +99,18 @@ def test_grid_of_a_single_obstacle_and_of_far_apart_obstacles_stays_small():
     # the footprints' square in at most GRID_MIN_CELLS cells, plus the reach around it
     assert f[g + 4] * f[g + 5] <= (math.sqrt(TK.GRID_MIN_CELLS) + 2 * TK.GRID_REACH_CELLS + 1) ** 2
     assert TK.obstacles_below(f, 1e4, 0.5, 1e4 + 0.6, 1.0) == TK.obstacles_below_brute(f, 1e4, 0.5, 1e4 + 0.6, 1.0)
+
+
+@pytest.mark.parametrize("n", [1, 30, 300])
+def test_obstacles_within_a_radius_equal_the_loop_in_record_order(n):
+    """The antennae's near list (``obstacles_within``) through the grid: the loop's set, in record order."""
+    f = random_obstacles(n, 10.0, seed=7 + n)
+    off = int(f[TK.H_OBST])
+    rng = np.random.default_rng(n)
+    out = np.empty(n, dtype=np.int64)
+    for x, y, z in np.column_stack([rng.uniform(-15, 15, 500), rng.uniform(-1, 4, 500), rng.uniform(-15, 15, 500)]):
+        for radius in (0.0, 0.5, 3.0, 12.0):
+            want = [off + TK.OBST_STRIDE * k for k in range(n)
+                    if TK._obstacle_phi(f, off + TK.OBST_STRIDE * k, x, y, z) < radius]
+            m = TK.obstacles_within(f, x, y, z, radius, out)
+            assert list(out[:m]) == want

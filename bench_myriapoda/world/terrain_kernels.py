@@ -437,6 +437,52 @@ def obstacles_below_counted(f, x, y, z, best):
 
 
 @njit(cache=True, error_model="numpy")
+def obstacles_within(f, x, y, z, radius, out):
+    """Record indices j (f-index, ascending) of the obstacles with phi_j(p) < radius, written to out; how many.
+
+    The set and order of the loop ``for j in records: if phi_j < radius`` (the antennae's
+    near list), through the grid: only the plain lists of the cells within radius of p
+    (Chebyshev, in x-z) are read, since phi_j >= the footprint's Chebyshev distance.
+    out: (>= number of obstacles,) int64.
+    """
+    off = int(f[H_OBST])
+    n = int(f[H_NOBST])
+    if n == 0:
+        return 0
+    g = off + OBST_STRIDE * n
+    h, invh, x0, z0 = f[g], f[g + 1], f[g + 2], f[g + 3]
+    nx, nz = int(f[g + 4]), int(f[g + 5])
+    cells, lst = int(f[g + 6]), int(f[g + 7])
+    r = radius + GRID_SLACK_CELLS * h
+    i0 = max(int(math.floor((x - r - x0) * invh)), 0)
+    i1 = min(int(math.floor((x + r - x0) * invh)), nx - 1)
+    k0 = max(int(math.floor((z - r - z0) * invh)), 0)
+    k1 = min(int(math.floor((z + r - z0) * invh)), nz - 1)
+    m = 0
+    for i in range(i0, i1 + 1):
+        for k in range(k0, k1 + 1):
+            c = cells + GRID_CELL_STRIDE * (i * nz + k)
+            s0 = int(f[c])
+            for e in range(s0, s0 + int(f[c + 1])):
+                j = int(f[lst + e])
+                seen = False
+                for q in range(m):
+                    if out[q] == j:
+                        seen = True
+                        break
+                if seen or not _obstacle_phi(f, j, x, y, z) < radius:
+                    continue
+                # insert in ascending order: the loop's order
+                q = m
+                while q > 0 and out[q - 1] > j:
+                    out[q] = out[q - 1]
+                    q -= 1
+                out[q] = j
+                m += 1
+    return m
+
+
+@njit(cache=True, error_model="numpy")
 def obstacles_below_brute(f, x, y, z, best):
     """The reference of ``obstacles_below``: every obstacle, in record order.
 
