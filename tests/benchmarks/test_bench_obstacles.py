@@ -57,7 +57,7 @@ def test_bench_walk_flat_vs_cylinders(benchmark, ground):
         t[0] += done * case.dt
         assert status == 0
 
-    benchmark.pedantic(chunk, rounds=8, iterations=1, warmup_rounds=1)
+    benchmark.pedantic(chunk, rounds=16, iterations=1, warmup_rounds=1)
     benchmark.extra_info["ground"] = ground
     if benchmark.stats is not None:
         benchmark.extra_info["us_per_step"] = benchmark.stats.stats.median / STEPS_PER_CALL * 1e6
