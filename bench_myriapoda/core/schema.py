@@ -137,6 +137,9 @@ class LegsConfig:
     root_y_m: float = rng(0.0, doc="root height in the segment frame [m]")
     root_z_m: float = rng(0.5, gt=0.0, doc="root distance from the midline [m]")
     contact_distance_m: float = rng(0.01, ge=0.0, doc="a tip this close to the surface touches it [m]")
+    collide: bool = rng(True, doc="a swinging leg's tip or knee stops at the terrain and obstacle surfaces, a "
+                                  "STANCE leg whose knee enters one lifts (issue 16); false: the paper's legs, "
+                                  "which pass through obstacles")
 
 
 @dataclass(frozen=True)
@@ -184,6 +187,11 @@ class ControllerConfig:
                                         doc="TROPHOTROPISM: largest turn rate toward the stronger food signal [deg/s]")
     forage_gain: float = rng(4.0, gt=0.0, doc="TROPHOTROPISM: turn rate = forage_turn_rate * min(1, gain * "
                                               "|S_left - S_right| / (S_left + S_right))")
+    body_wave_amplitude: float = rng(0.0, ge=0.0, le=1.0,
+                                     doc="lateral body wave (beyond the paper, Scolopendra): amplitude of the yaw "
+                                         "offset of the supported segments' targets [rad]; 0: no wave")
+    body_wave_phase_rad: float = rng(2.5, doc="body wave: phase offset from the leg wave of the head's legs [rad]")
+    body_wave_number: float = rng(1.6, ge=0.0, doc="body wave: waves along the body (Scolopendra: about 1.6)")
 
 
 @dataclass(frozen=True)

@@ -112,6 +112,7 @@ class LeggedMonitor:
         out["touch_fraction_at_walk"] = c.touch_fraction_at_walk
         out["tracking_error_mean_m"] = c.tracking_sq_sum / c.tracking_n if c.tracking_n else float("nan")
         out["brain_mode_final"] = float(c.brain)
+        out.update(c.leg_metrics())
         out.update(self.behaviour.metrics())
         out.update(c.food.metrics())
         out["obstacle_contacts"] = float(c.antennae.contact_events) if c.antennae is not None else 0.0

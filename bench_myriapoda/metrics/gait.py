@@ -88,6 +88,7 @@ FLOAT_METRICS: tuple[str, ...] = (
     "duty_factor_mean", "duty_factor_std", "stride_frequency_hz", "phase_lag_mean", "phase_lag_cv",
     "legs_per_wave", "lr_phase_diff", "stance_fraction_min", "stance_fraction_mean",
     "stride_length_bl", "foot_slip_mean_m", "stepping_leg_fraction", "walking_cycle_leg_fraction",
+    "speed_bl_per_stride",
 )
 LABEL_METRICS: tuple[str, ...] = ("wave_direction",)
 RETROGRADE, DIRECT, SYNCHRONOUS, UNDEFINED = "retrograde", "direct", "synchronous", "undefined"
@@ -399,6 +400,26 @@ def stride_length(t, com, stride_frequency_hz: float, t_start: float) -> float:
     return float(np.linalg.norm(np.diff(pts, axis=0), axis=1).sum() / k)
 
 
+def speed_per_stride(t, com, stride_frequency_hz: float, t_start: float) -> float:
+    """Net COM speed over the window divided by the stride frequency [m per stride].
+
+    v = |com(t[-1]) - com(t_start)| / (t[-1] - t_start) (COM linearly interpolated
+    at t_start), over f: how far the body gets per leg cycle -- the "speed per
+    cycle" of centipede studies (divide by the body length for body lengths per
+    stride).  Unlike ``stride_length`` it counts net progress, so sway and turning
+    lower it.  NaN if f is not positive and finite or the window is empty.
+    """
+    t = np.asarray(t, dtype=float)
+    com = np.asarray(com, dtype=float)
+    if com.shape != (len(t), 3):
+        raise ValueError(f"com must be (T, 3) = {(len(t), 3)}, got {com.shape}")
+    if not (math.isfinite(stride_frequency_hz) and stride_frequency_hz > 0) or not t[-1] > t_start:
+        return math.nan
+    start = np.array([np.interp(t_start, t, com[:, j]) for j in range(3)])
+    v = float(np.linalg.norm(com[-1] - start)) / (t[-1] - t_start)
+    return float(v / stride_frequency_hz)
+
+
 # --- State sequences (paper Fig. 10) --------------------------------------------------------
 class StateRuns(NamedTuple):
     """Run-length encoding of one leg's states: each (n_runs,).
@@ -574,6 +595,7 @@ def gait_metrics(t, states, tips=None, com=None, body_length: float = math.nan,
     stance_fraction_min, stance_fraction_mean: ``stance_fraction`` over the
         window samples: its minimum, and its time-weighted mean.
     stride_length_bl: ``stride_length`` at the mean stride frequency / body_length.
+    speed_bl_per_stride: ``speed_per_stride`` at the mean stride frequency / body_length.
     foot_slip_mean_m: ``foot_slip_mean``.
     walking_cycle_leg_fraction: fraction of legs whose state sequence over the
         whole window passes ``walking_cycle_check`` (paper Fig. 10 D).
@@ -603,6 +625,8 @@ def gait_metrics(t, states, tips=None, com=None, body_length: float = math.nan,
 
     if com is not None and body_length > 0:
         metrics["stride_length_bl"] = stride_length(t, com, metrics["stride_frequency_hz"], t[i0]) / body_length
+        metrics["speed_bl_per_stride"] = (speed_per_stride(t, com, metrics["stride_frequency_hz"], t[i0])
+                                          / body_length)
     if tips is not None:
         metrics["foot_slip_mean_m"] = foot_slip_mean(t, states, tips, warmup_s)
     metrics["walking_cycle_leg_fraction"] = walking_cycle_leg_fraction(t[i0:], states[i0:], last_fraction=1.0)

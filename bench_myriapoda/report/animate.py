@@ -46,6 +46,7 @@ from .scene_style import (  # noqa: E402,F401  (re-exported: the tests and calle
     add_leg_state_legend, surface_height,
 )
 from ..metrics.gait import STATE_COLORS, STATE_NAMES  # noqa: E402
+from .terrain_drawing import draw_terrain_shape  # noqa: E402
 from ..world.terrain_kernels import (  # noqa: E402
     H_NOBST, OBST_CYLINDER, SLAB, obstacle_records, terrain_phi_numpy,
 )
@@ -246,6 +247,7 @@ def _draw_terrain(ax_top, ax_side, terrain, xlim, ylim, zlim) -> None:
     ax_side.plot(xs, h, color=GROUND_EDGE, lw=1.2, zorder=0.5)
     ax_top.add_patch(Rectangle((xlim[0], zlim[0]), xlim[1] - xlim[0], zlim[1] - zlim[0], color=GROUND_COLOR,
                                zorder=0, lw=0))
+    draw_terrain_shape(ax_top, ax_side, kind, f, xlim, ylim, zlim)  # height field / mesh as they are
     if kind == SLAB and f[2] > xlim[0]:  # Miller's book occupies x <= f[2]
         ax_top.add_patch(Rectangle((xlim[0], zlim[0]), min(f[2], xlim[1]) - xlim[0], zlim[1] - zlim[0],
                                    color=SLAB_COLOR, zorder=0.1, lw=0))

@@ -36,7 +36,7 @@ from pathlib import Path
 import pandas as pd
 
 from ..harness.recorder import series_from_recording
-from . import sweeps
+from . import body_wave, sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
@@ -170,6 +170,8 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     _trajectories(page, res, main)
     _stability(page, res)
     _scaling(page, res)
+    if not res.df.empty and body_wave.has_body_wave_sweep(res.df, res.grid_keys):
+        body_wave.report_section(page, res)
     _energy(page, res, main)
     _paper(page, res, main)
     _history(page, Path(history_store) if history_store else None)

@@ -32,7 +32,8 @@ from .figure_files import LABEL_PT, save_figure  # noqa: E402
 STIFFNESS_KEYS = ("body.stiffness", "body.youngs_modulus_pa", "body.link_stiffness_n_m")
 # problem size: number of segments, mesh resolution per segment edge
 SIZE_KEYS = ("creature.segments", "body.resolution")
-SWEEP_KEYS = ("dt",) + STIFFNESS_KEYS + SIZE_KEYS
+# the body wave's phase offset (report/body_wave.py) has its own section too
+SWEEP_KEYS = ("dt",) + STIFFNESS_KEYS + SIZE_KEYS + ("controller.body_wave_phase_rad",)
 
 
 def _has(df: pd.DataFrame, key: str) -> pd.Series:

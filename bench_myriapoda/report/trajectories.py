@@ -21,7 +21,7 @@ from .figure_files import WIDE_IN, save_figure  # noqa: E402
 
 def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
     """The scenario's world seen from above (x right, z down): slab edge, slope direction, height-field
-    contours, mesh outline, obstacles (cylinders as discs, boxes as rectangles) and food (green dots).
+    contours, mesh silhouette, obstacles (cylinders as discs, boxes as rectangles) and food (green dots).
 
     scenario, food: the stored case's sections (``Case.to_dict()["scenario"]``, ``["food"]``).
     """
@@ -31,6 +31,7 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
     from ..world.food import food_sources
     from ..world.terrain import terrain_description
     from .series_plots import scenario_config, stored_section
+    from .terrain_drawing import draw_terrain_shape
 
     kind = scenario.get("terrain", "plane")
     xlim, ylim = ax.get_xlim(), ax.get_ylim()
@@ -46,14 +47,7 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None) -> None:
                 fontsize=9, color="saddlebrown")
     sc = scenario_config(scenario)
     desc = terrain_description(sc)
-    if desc.height is not None and kind == "heightfield":
-        xs, zs = np.linspace(*xlim, 120), np.linspace(min(ylim), max(ylim), 120)
-        X, Z = np.meshgrid(xs, zs)
-        ax.contour(X, Z, desc.height(X, Z), levels=8, colors="saddlebrown", linewidths=0.4, alpha=0.6)
-    if desc.mesh is not None:
-        v = np.asarray(desc.mesh[0])
-        ax.fill_between([v[:, 0].min(), v[:, 0].max()], v[:, 2].min(), v[:, 2].max(), color="0.85", zorder=0,
-                        label="mesh (bounding box)")
+    draw_terrain_shape(ax, None, desc.kind, desc.f, xlim, None, ylim)  # height field / mesh as they are
     for c in desc.cylinders:
         ax.add_patch(Circle((c["x"], c["z"]), c["radius"], color="dimgray", alpha=0.8, zorder=1))
     for b in desc.boxes:

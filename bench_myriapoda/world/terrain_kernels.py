@@ -111,6 +111,30 @@ outside the union of solids.  Block at f[6], f[7] records of OBST_STRIDE = 10::
 
 The box's local x axis is (cos yaw, 0, -sin yaw) in the world (a rotation by
 yaw about +y).
+
+Obstacle grid: ``with_obstacles`` appends, right after the records, a uniform
+grid over the x-z plane built once per terrain, so that a query examines the
+obstacles near p and not all of them (``obstacles_below``).  Each record has
+an x-z footprint square (a cylinder: centre +- radius; a box: centre +-
+sqrt(half_x^2 + half_z^2), the square its yaw can sweep); each cell has two
+lists: the records whose square overlaps it, and those whose square widened
+by the reach D = GRID_REACH_CELLS cells overlaps it.  A query inside the grid
+whose cutoff (the base terrain's phi) is at most D -- a body or leg point
+within D of the ground, the common case -- reads the widened list of p's own
+cell and nothing else: every record nearer than the cutoff is on it.
+Otherwise it visits the plain lists of rings of cells around p's cell (p
+projected onto the grid when outside it) and stops when the ring's Chebyshev
+distance from p exceeds the nearest obstacle found -- a lower bound of every
+obstacle not yet visited.  The answer
+is the brute-force loop's to the bit (``obstacles_below_brute``; ties go to
+the lowest record, as the loop's strict ``<`` does).  Block at
+g = f[6] + OBST_STRIDE * f[7] (absolute offsets)::
+
+    g+0  cell size h [m]   g+1  1/h   g+2, g+3  grid origin (x0, z0) [m]
+    g+4, g+5  cells (nx, nz)   g+6  cells table offset (GRID_CELL_STRIDE = 4 per cell,
+    cell (i, k) at i*nz + k: first list entry and record count of the plain list, then of
+    the widened list)   g+7  list offset
+    (the first f-index of every listed record, cell after cell)   g+8  reach D [m]   g+9  reserved
 """
 from __future__ import annotations
 
@@ -137,6 +161,15 @@ HF_STRIDE = 5
 OBST_STRIDE = 10
 OBST_CYLINDER = 1
 OBST_BOX = 2
+GRID_HDR = 10
+GRID_REACH_CELLS = 1.5       # a cell also lists the records within this many cells of it (module docstring)
+GRID_CELL_STRIDE = 4
+GRID_CELL_DIAMETERS = 1.0    # cell size = this x the mean footprint width (each record overlaps ~4 cells)
+GRID_MAX_CELLS_PER_RECORD = 16  # coarser cells when the obstacles are so sparse that the grid would be larger
+GRID_MIN_CELLS = 64
+# the ring bound and the footprint rasterisation are computed in float64: both are given this slack
+# [in cells] so that rounding can only make the search visit more, never fewer, cells than needed
+GRID_SLACK_CELLS = 1e-7
 
 # mesh block header (relative to the block start)
 MB_H, MB_INVH, MB_ORIGIN, MB_DIMS, MB_BAND, MB_NTRI, MB_NVERT = 0, 1, 2, 5, 8, 9, 10
@@ -304,9 +337,154 @@ def obstacles_phi(f, x, y, z):
     return obstacles_below(f, x, y, z, np.inf)
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _obstacle_bound(f, j, x, y, z):
+    """Cheap lower bound of obstacle j's phi at p: per axis against its footprint square and y range."""
+    if f[j] == OBST_CYLINDER:
+        return max(max(abs(x - f[j + 1]), abs(z - f[j + 2])) - f[j + 3], max(f[j + 4] - y, y - f[j + 5]))
+    return max(max(abs(x - f[j + 1]), abs(z - f[j + 3])) - math.sqrt(f[j + 4] ** 2 + f[j + 6] ** 2),
+               abs(y - f[j + 2]) - f[j + 5])
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _scan_cell(f, c, lst, x, y, z, best, arg):
+    """(best, arg, records examined) after the records of the grid cell at f-index c."""
+    s0 = int(f[c])
+    m = int(f[c + 1])
+    for e in range(s0, s0 + m):
+        j = int(f[lst + e])
+        lb = _obstacle_bound(f, j, x, y, z)
+        # skip as the loop would, except that an equal bound may still tie with a lower record
+        if lb > best or (lb == best and (arg < 0 or j >= arg)):
+            continue
+        d = _obstacle_phi(f, j, x, y, z)
+        if d < best or (d == best and arg >= 0 and j < arg):
+            best = d
+            arg = j
+    return best, arg, m
+
+
 @njit(cache=True, error_model="numpy")
 def obstacles_below(f, x, y, z, best):
     """(phi, record index) of the nearest obstacle if it is nearer than ``best``, else (best, -1).
+
+    Through the obstacle grid (module docstring); the result equals
+    ``obstacles_below_brute``'s bit for bit.
+    """
+    d, j, _ = obstacles_below_counted(f, x, y, z, best)
+    return d, j
+
+
+@njit(cache=True, error_model="numpy")
+def obstacles_below_counted(f, x, y, z, best):
+    """``obstacles_below`` plus the number of obstacle records it examined (grid entries visited).
+
+    The count is the query's cost, independent of the machine: tests assert that it
+    does not grow with the number of obstacles of a scene of a given density.
+    """
+    off = int(f[H_OBST])
+    n = int(f[H_NOBST])
+    g = off + OBST_STRIDE * n
+    h, invh, x0, z0 = f[g], f[g + 1], f[g + 2], f[g + 3]
+    nx, nz = int(f[g + 4]), int(f[g + 5])
+    cells, lst = int(f[g + 6]), int(f[g + 7])
+    reach = f[g + 8]
+    arg = -1
+    examined = 0
+    # p in cell units, projected onto the grid (a per-axis clamp: it brings p no farther from any
+    # point of the grid, so distances from the projection are lower bounds of distances from p)
+    u = (x - x0) * invh
+    v = (z - z0) * invh
+    if not (u == u and v == v):  # nan: no answer the loop would trust either
+        d, j = obstacles_below_brute(f, x, y, z, best)
+        return d, j, n
+    qu = min(max(u, 0.0), float(nx))
+    qv = min(max(v, 0.0), float(nz))
+    out = max(max(u - qu, qu - u), max(v - qv, qv - v)) * h  # Chebyshev distance of p from the grid [m]
+    slack = GRID_SLACK_CELLS * h
+    # outside the grid, every footprint is at least out + reach away (the grid holds the widened squares);
+    # inside it, p may be inside an obstacle (best < 0)
+    if out > 0.0 and out + reach - slack > best:
+        return best, -1, 0
+    ci = min(int(qu), nx - 1)
+    ck = min(int(qv), nz - 1)
+    if out == 0.0 and best <= reach - slack:
+        # every record with a bound below best has its footprint within reach of p: listed in p's cell
+        best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (ci * nz + ck) + 2, lst, x, y, z, best, arg)
+        return best, arg, m
+    kmax = max(max(ci, nx - 1 - ci), max(ck, nz - 1 - ck))
+    for ring in range(kmax + 1):
+        if ring > 0:
+            # every record not yet listed lies outside the (2 ring - 1)^2 cells around (ci, ck)
+            side = min(min(qu - (ci - ring + 1), (ci + ring) - qu), min(qv - (ck - ring + 1), (ck + ring) - qv))
+            if max(side * h, out) - slack > best:
+                break
+        for i in range(max(ci - ring, 0), min(ci + ring, nx - 1) + 1):
+            if i == ci - ring or i == ci + ring:  # a whole column of the ring
+                for k in range(max(ck - ring, 0), min(ck + ring, nz - 1) + 1):
+                    best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (i * nz + k), lst, x, y, z, best, arg)
+                    examined += m
+            else:  # the ring's two ends of this column
+                if ck - ring >= 0:
+                    best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (i * nz + ck - ring), lst, x, y, z,
+                                              best, arg)
+                    examined += m
+                if ring > 0 and ck + ring <= nz - 1:
+                    best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (i * nz + ck + ring), lst, x, y, z,
+                                              best, arg)
+                    examined += m
+    return best, arg, examined
+
+
+@njit(cache=True, error_model="numpy")
+def obstacles_within(f, x, y, z, radius, out):
+    """Record indices j (f-index, ascending) of the obstacles with phi_j(p) < radius, written to out; how many.
+
+    The set and order of the loop ``for j in records: if phi_j < radius`` (the antennae's
+    near list), through the grid: only the plain lists of the cells within radius of p
+    (Chebyshev, in x-z) are read, since phi_j >= the footprint's Chebyshev distance.
+    out: (>= number of obstacles,) int64.
+    """
+    off = int(f[H_OBST])
+    n = int(f[H_NOBST])
+    if n == 0:
+        return 0
+    g = off + OBST_STRIDE * n
+    h, invh, x0, z0 = f[g], f[g + 1], f[g + 2], f[g + 3]
+    nx, nz = int(f[g + 4]), int(f[g + 5])
+    cells, lst = int(f[g + 6]), int(f[g + 7])
+    r = radius + GRID_SLACK_CELLS * h
+    i0 = max(int(math.floor((x - r - x0) * invh)), 0)
+    i1 = min(int(math.floor((x + r - x0) * invh)), nx - 1)
+    k0 = max(int(math.floor((z - r - z0) * invh)), 0)
+    k1 = min(int(math.floor((z + r - z0) * invh)), nz - 1)
+    m = 0
+    for i in range(i0, i1 + 1):
+        for k in range(k0, k1 + 1):
+            c = cells + GRID_CELL_STRIDE * (i * nz + k)
+            s0 = int(f[c])
+            for e in range(s0, s0 + int(f[c + 1])):
+                j = int(f[lst + e])
+                seen = False
+                for q in range(m):
+                    if out[q] == j:
+                        seen = True
+                        break
+                if seen or not _obstacle_phi(f, j, x, y, z) < radius:
+                    continue
+                # insert in ascending order: the loop's order
+                q = m
+                while q > 0 and out[q - 1] > j:
+                    out[q] = out[q - 1]
+                    q -= 1
+                out[q] = j
+                m += 1
+    return m
+
+
+@njit(cache=True, error_model="numpy")
+def obstacles_below_brute(f, x, y, z, best):
+    """The reference of ``obstacles_below``: every obstacle, in record order.
 
     An obstacle whose cheap lower bound (per axis, against its bounding box)
     is not below the best so far is skipped: near the ground (best = the base
@@ -317,11 +495,7 @@ def obstacles_below(f, x, y, z, best):
     arg = -1
     for k in range(n):
         j = off + OBST_STRIDE * k
-        if f[j] == OBST_CYLINDER:
-            lb = max(max(abs(x - f[j + 1]), abs(z - f[j + 2])) - f[j + 3], max(f[j + 4] - y, y - f[j + 5]))
-        else:
-            lb = max(max(abs(x - f[j + 1]), abs(z - f[j + 3])) - math.sqrt(f[j + 4] ** 2 + f[j + 6] ** 2),
-                     abs(y - f[j + 2]) - f[j + 5])
+        lb = _obstacle_bound(f, j, x, y, z)
         if lb >= best:
             continue
         d = _obstacle_phi(f, j, x, y, z)
@@ -842,7 +1016,7 @@ def box_record(cx: float, cy: float, cz: float, hx: float, hy: float, hz: float,
 
 
 def with_obstacles(f: np.ndarray, records) -> np.ndarray:
-    """f with an obstacle block of ``records`` (rows of OBST_STRIDE) appended; replaces none."""
+    """f with an obstacle block of ``records`` (rows of OBST_STRIDE) and its grid appended; replaces none."""
     f = np.asarray(f, dtype=float)
     if len(f) < N_TERRAIN_PARAMS:
         f = np.concatenate([f, np.zeros(N_TERRAIN_PARAMS - len(f))])
@@ -851,10 +1025,68 @@ def with_obstacles(f: np.ndarray, records) -> np.ndarray:
     rec = np.asarray(records, dtype=float).reshape(-1, OBST_STRIDE)
     if len(rec) == 0:
         return f.copy()
-    out = np.concatenate([f, rec.reshape(-1)])
-    out[H_OBST] = len(f)
+    off = len(f)
+    grid = obstacle_grid(rec, off + OBST_STRIDE * len(rec))
+    out = np.concatenate([f, rec.reshape(-1), grid])
+    out[H_OBST] = off
     out[H_NOBST] = len(rec)
     return out
+
+
+def obstacle_footprints(rec: np.ndarray) -> np.ndarray:
+    """(n, 3) x-z footprint squares (cx, cz, half width) [m] of obstacle records (n, OBST_STRIDE).
+
+    The squares ``_obstacle_bound`` measures against: a cylinder's radius, a box's
+    sqrt(half_x^2 + half_z^2) (any yaw stays inside it).
+    """
+    cyl = rec[:, 0] == OBST_CYLINDER
+    cx = rec[:, 1]
+    cz = np.where(cyl, rec[:, 2], rec[:, 3])
+    w = np.where(cyl, rec[:, 3], np.sqrt(rec[:, 4] ** 2 + rec[:, 6] ** 2))
+    return np.column_stack([cx, cz, w])
+
+
+def obstacle_grid(rec: np.ndarray, start: int, cell_m: float | None = None) -> np.ndarray:
+    """The obstacle grid block (module docstring) of records ``rec`` for a block placed at f-index ``start``.
+
+    The record at row r sits at f-index ``start - OBST_STRIDE * (n - r)`` (the records
+    precede the grid).  Cells of ``cell_m`` [m], by default GRID_CELL_DIAMETERS x the
+    mean footprint width, coarsened so that the footprints' bounding square holds at most
+    max(GRID_MIN_CELLS, GRID_MAX_CELLS_PER_RECORD x n) cells; the grid covers that square
+    widened by the reach.
+    """
+    n = len(rec)
+    fp = obstacle_footprints(rec)
+    lo0 = np.array([np.min(fp[:, 0] - fp[:, 2]), np.min(fp[:, 1] - fp[:, 2])])
+    hi0 = np.array([np.max(fp[:, 0] + fp[:, 2]), np.max(fp[:, 1] + fp[:, 2])])
+    span0 = np.maximum(hi0 - lo0, 1e-9)
+    h = float(cell_m) if cell_m is not None else GRID_CELL_DIAMETERS * 2.0 * float(fp[:, 2].mean())
+    cap = max(GRID_MIN_CELLS, GRID_MAX_CELLS_PER_RECORD * n)
+    h = max(h, float(np.sqrt(span0[0] * span0[1] / cap)), float(span0.max()) / cap)
+    reach = GRID_REACH_CELLS * h
+    lo, hi = lo0 - reach, hi0 + reach  # the grid holds the widened squares
+    nx, nz = (int(v) for v in np.maximum(np.ceil((hi - lo) / h), 1))
+    first = start - OBST_STRIDE * n
+    plain: list[list[int]] = [[] for _ in range(nx * nz)]
+    wide: list[list[int]] = [[] for _ in range(nx * nz)]
+    for lists, grow in ((plain, 0.0), (wide, reach)):
+        for r in range(n):
+            cx, cz, w = fp[r]
+            w += grow
+            i0 = max(int(np.floor((cx - w - lo[0]) / h - GRID_SLACK_CELLS)), 0)
+            i1 = min(int(np.floor((cx + w - lo[0]) / h + GRID_SLACK_CELLS)), nx - 1)
+            k0 = max(int(np.floor((cz - w - lo[1]) / h - GRID_SLACK_CELLS)), 0)
+            k1 = min(int(np.floor((cz + w - lo[1]) / h + GRID_SLACK_CELLS)), nz - 1)
+            for i in range(i0, i1 + 1):
+                for k in range(k0, k1 + 1):
+                    lists[i * nz + k].append(first + OBST_STRIDE * r)
+    seq = [c for pair in zip(plain, wide) for c in pair]  # cell by cell: plain, widened
+    counts = np.array([len(c) for c in seq], dtype=float)
+    firsts = np.concatenate([[0.0], np.cumsum(counts)[:-1]])
+    cells = np.column_stack([firsts, counts]).reshape(-1)
+    flat = np.array([j for c in seq for j in c], dtype=float)
+    hdr = np.array([h, 1.0 / h, lo[0], lo[1], nx, nz, start + GRID_HDR, start + GRID_HDR + len(cells), reach, 0.0])
+    return np.concatenate([hdr, cells, flat])
 
 
 def obstacle_records(f: np.ndarray) -> np.ndarray:

@@ -63,10 +63,9 @@ from numba import njit
 
 from ...world.terrain_kernels import (
     H_NOBST,
-    H_OBST,
-    OBST_STRIDE,
     _obstacle_normal,
     _obstacle_phi,
+    obstacles_within,
 )
 
 LEFT, RIGHT = 0, 1
@@ -165,15 +164,12 @@ def _root_toward_target(ang, target, omega, dt):
 
 @njit(cache=True)
 def _near_obstacles(f, x, y, z, radius, out):
-    """Record indices (into f) of the obstacles closer than ``radius`` to (x, y, z), written to out; how many."""
-    off = int(f[H_OBST])
-    m = 0
-    for k in range(int(f[H_NOBST])):
-        j = off + OBST_STRIDE * k
-        if _obstacle_phi(f, j, x, y, z) < radius:
-            out[m] = j
-            m += 1
-    return m
+    """Record indices (into f) of the obstacles closer than ``radius`` to (x, y, z), written to out; how many.
+
+    Through the terrain's obstacle grid (``terrain_kernels.obstacles_within``): the cells
+    near the root, in record order, as a loop over every obstacle would give them.
+    """
+    return obstacles_within(f, x, y, z, radius, out)
 
 
 @njit(cache=True)

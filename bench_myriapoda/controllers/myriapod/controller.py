@@ -45,6 +45,7 @@ from ...kinematics import legs as L
 from ...world import terrain_kernels as TK
 from ...world.food import FoodField
 from ...world.terrain import base_height, terrain_from_scenario
+from . import leg_collision as LC
 from . import switcher as SW
 from . import targeter as TG
 from .antennae import LEFT, RIGHT, Antennae
@@ -223,6 +224,19 @@ class MyriapodController:
         self.heading_err_sum = 0.0
         self.heading_err_n = 0
         self.timeline_centers: list[np.ndarray] = []
+        # legs against the terrain and obstacles (issue 16, leg_collision.py)
+        self.collide = lg.collide
+        self._prev_angles = np.zeros((self.n_legs, 3))
+        self._stopped = np.zeros(self.n_legs, dtype=bool)
+        self.leg_stops = 0              # swing moves cut at a surface, summed over legs and steps
+        self.leg_stuck = 0              # leg-steps left inside with no way out (see stop_swinging_legs)
+        self.leg_penetration_max = 0.0  # deepest knee or tip inside the terrain over the run [m]
+        # lateral body wave phase-locked to the leg wave (beyond the paper; see _apply_body_wave)
+        self.wave_amp = ct.body_wave_amplitude
+        self.wave_offset = ct.body_wave_phase_rad
+        # phase lag [rad] of segment i behind the head: body_wave_number waves over the n segments
+        self.wave_lag = 2.0 * math.pi * ct.body_wave_number * np.arange(n_segments) / n_segments
+        self._wave_yaw = np.zeros(n_segments)   # yaw offset [rad] each segment's pose carries now
 
     # ------------------------------------------------------------------ the head (Sec. 4.3)
     def _sense(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
@@ -327,16 +341,25 @@ class MyriapodController:
         TG.segments_supported(self.states, self.min_stance, self.supported)
         self.kinematic[:] = self.supported
         self.kinematic[0] = self.brain != ADJUSTMENT
-        TG.targeter_step(c, R, self.kinematic, self.terr_kind, self.terr_walk, self.tg_params, self.link_rest,
-                         self.height_target, speed, rate, turn_dir, dt, self.c_T, self.R_T)
+        TG.targeter_step(c, self._without_body_wave(R), self.kinematic, self.terr_kind, self.terr_walk,
+                         self.tg_params, self.link_rest, self.height_target, speed, rate, turn_dir, dt, self.c_T,
+                         self.R_T)
+        if self.wave_amp > 0.0:
+            self._apply_body_wave(R)
         act.support_kinematic[:] = self.kinematic
         act.support_c[:] = self.c_T
         act.support_R[:] = self.R_T
         act.support_new = True
         # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
+        if self.collide:
+            self._prev_angles[:] = self.angles
         SW.switcher_step(self.states, self.angles, self.airborne, self.touching, self.ik_failed, self.sw_params,
                          dt, self.entered)
+        if self.collide:
+            self._stop_legs_at_surfaces()
         SW.fix_stance_tips(self.entered, self.c_T, self.R_T, self.geom, self.angles, self.tips)
+        if self.collide:
+            LC.surface_touchdown_tips(self.entered, self.tips, self.terr_kind, self.terr)
         SW.stance_inverse_kinematics(self.states, self.c_T, self.R_T, self.geom, self.tips, self.angles,
                                      self.ik_failed)
         # App. B's "cannot resolve" includes the leg's joint range: a STANCE leg swept behind its
@@ -346,6 +369,7 @@ class MyriapodController:
         L.legs_forward_kinematics(self.c_T, self.R_T, self.geom, self.angles, self._O, self._M, self.tips)
         in_stance = self.states == SW.STANCE
         self.tips[in_stance] = stance_tips[in_stance]  # a planted tip stays where it touched down
+        self._legs_after_kinematics()
         self.recorded = self._step % self.record_every == 0
         if self.recorded:
             self.timeline_t.append(t)
@@ -356,6 +380,80 @@ class MyriapodController:
                                          else np.zeros(2, dtype=bool))
             self.timeline_centers.append(c.copy())
         self._step += 1
+
+    # ------------------------------------------------------------------ body wave (beyond the paper)
+    def head_leg_phase(self) -> float:
+        """Phase [rad] of the head's legs in their cycle: 0 at the AEP, pi at the PEP, 2 pi back at the AEP.
+
+        A leg's phase from its swing angle theta between the PEP (theta_m) and the AEP
+        (theta_M): in STANCE pi (theta_M - theta) / (theta_M - theta_m), swinging
+        pi + pi (theta - theta_m) / (theta_M - theta_m).  The two head legs' circular mean.
+        """
+        hi, lo = self.sw_params[SW.THETA_AEP], self.sw_params[SW.THETA_PEP]
+        sx = sy = 0.0
+        for k in (0, 1):
+            u = min(max((self.angles[k, 0] - lo) / (hi - lo), 0.0), 1.0)
+            ph = math.pi * (1.0 - u) if self.states[k] == SW.STANCE else math.pi * (1.0 + u)
+            sx += math.cos(ph)
+            sy += math.sin(ph)
+        return math.atan2(sy, sx)
+
+    def _without_body_wave(self, R: np.ndarray) -> np.ndarray:
+        """R (n, 3, 3) with each segment's body-wave yaw taken off (R itself without a wave).
+
+        The Targeter then balances and follows the wave-free frames, and the wave is put
+        back on its targets (``_apply_body_wave``): the offset does not accumulate and
+        the Follower does not fight it.
+        """
+        if self.wave_amp <= 0.0:
+            return R
+        Rf = R.copy()
+        for i in np.flatnonzero(self._wave_yaw):
+            TG.rotate_about_own_axis(Rf[i], 1, -self._wave_yaw[i])
+        return Rf
+
+    def _apply_body_wave(self, R: np.ndarray) -> None:
+        """Yaw the supported segments' targets toward A sin(psi_head - lag_i + offset) about their own y axes.
+
+        A lateral body wave travelling head to tail like the retrograde leg wave, locked
+        to the head legs' phase psi_head (``head_leg_phase``): the Scolopendra body
+        wave (about 1.6 waves on the body, best offset near 2.5 rad)
+        as a kinematic yaw of the targets, so it works on every body.  Segments
+        left to the dynamics keep their current pose (and the yaw it carries).
+        """
+        psi = self.head_leg_phase()
+        goal = self.wave_amp * np.sin(psi - self.wave_lag + self.wave_offset)
+        if self.brain == ADJUSTMENT:
+            goal[:] = 0.0  # no wave until the creature walks
+        # the yaw moves toward the wave at most at the Follower's turn rate: a segment that becomes
+        # supported (or the wave that starts) must not snap its body by the whole amplitude in one step
+        step = self.tg_params[TG.OMEGA_FOLLOW] * self.dt
+        for i in range(self.n_seg):
+            if self.kinematic[i]:
+                yaw = self._wave_yaw[i] + min(max(goal[i] - self._wave_yaw[i], -step), step)
+                TG.rotate_about_own_axis(self.R_T[i], 1, float(yaw))
+                self._wave_yaw[i] = yaw
+            else:
+                self.R_T[i] = R[i]
+
+    # ------------------------------------------------------------------ legs and obstacles (issue 16)
+    def _stop_legs_at_surfaces(self) -> None:
+        """Cut this step's swing moves where a tip or knee meets the terrain (``leg_collision``)."""
+        self.leg_stuck += LC.stop_swinging_legs(self.states, self._prev_angles, self.angles, self.c_T, self.R_T,
+                                                self.geom, self.terr_kind, self.terr, self._stopped)
+        self.leg_stops += int(self._stopped.sum())
+
+    def _legs_after_kinematics(self) -> None:
+        """Deepest knee or tip inside the terrain so far; STANCE knees inside lift their legs next step."""
+        if self.collide:
+            LC.stance_knees_inside(self.states, self._M, self.terr_kind, self.terr, self.ik_failed)
+        self.leg_penetration_max = max(self.leg_penetration_max,
+                                       LC.legs_penetration(self.terr_kind, self.terr, self._M, self.tips))
+
+    def leg_metrics(self) -> dict[str, float]:
+        """``leg_penetration_max_m`` [m], ``leg_stops`` and ``leg_stuck`` (leg-steps) of the run so far."""
+        return {"leg_penetration_max_m": self.leg_penetration_max, "leg_stops": float(self.leg_stops),
+                "leg_stuck": float(self.leg_stuck)}
 
     def record_tracking(self, c: np.ndarray) -> None:
         """Accumulate the squared distance of supported segments from their targets after the body's step."""
