@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from bench_myriapoda.bodies import legs as L
+from bench_myriapoda.kinematics import legs as L
 from bench_myriapoda.controllers.myriapod import leg_collision as LC
 from bench_myriapoda.controllers.myriapod import switcher as SW
 from bench_myriapoda.core.config import resolve_case

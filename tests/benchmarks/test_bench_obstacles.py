@@ -35,12 +35,11 @@ CYLINDERS_120 = ["scenario.obstacle_cylinders=120", "scenario.obstacle_radius_m=
 
 
 def walker(overrides):
-    from bench_myriapoda.core import registry
     from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.harness.runner import Creature
 
-    registry.load_all()
     case = resolve_case("centipede", "hybrid", "walk", overrides=overrides)
-    b = registry.BODIES["hybrid"].factory(case)
+    b = Creature(case)  # the hybrid body with its leg controller
     b.compile()
     done, status = b.advance(0.0, WALK_IN_STEPS)
     assert status == 0, b.status_text(status)

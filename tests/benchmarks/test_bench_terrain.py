@@ -124,12 +124,11 @@ def closed_slab_file(tmp_path_factory):
 
 
 def walker(overrides, scenario="walk"):
-    from bench_myriapoda.core import registry
     from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.harness.runner import Creature
 
-    registry.load_all()
     case = resolve_case("centipede", "hybrid", scenario, overrides=["creature.segments=18", *overrides])
-    b = registry.BODIES["hybrid"].factory(case)
+    b = Creature(case)  # the hybrid body with its leg controller
     b.compile()
     done, status = b.advance(0.0, WALK_IN_STEPS)
     assert status == 0, b.status_text(status)
