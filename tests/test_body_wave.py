@@ -27,6 +27,12 @@ sys.path.insert(0, str(GOLDEN))
 from capture_myriapod_golden import GOLDEN_CASES, run_arrays  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
+# Metrics whose definition changed on purpose after the goldens were captured (the arrays above stay
+# bitwise): the path-following fix of issue 11 (segments against the head's travelled path only), and two
+# of issue 10's controller layer: the leg controller's tracking error is measured at its next tick, so the
+# run's last step is not counted, and body_undulation_amp_bl uses the segment poses the controller
+# observed, before the legs moved the supported segments (the old code read them through an alias after).
+REDEFINED = {"path_following_error_bl": None, "tracking_error_mean_m": 1e-3, "body_undulation_amp_bl": 5e-3}
 # the wave's phase and wave number set to other values: with amplitude 0 they must not matter
 WAVE_OFF = ["legs.collide=false", "controller.body_wave_amplitude=0", "controller.body_wave_phase_rad=1.0",
             "controller.body_wave_number=3.0"]
@@ -40,6 +46,10 @@ def test_wave_off_and_collision_off_equal_the_golden_bit_for_bit(name, body, sce
     for key in golden.files:
         assert np.array_equal(arrays[key], golden[key], equal_nan=True), key
     for key, v in json.loads((GOLDEN / f"{name}.json").read_text()).items():
+        if key in REDEFINED:
+            if REDEFINED[key] is not None and v is not None:
+                assert metrics[key] == pytest.approx(v, rel=REDEFINED[key]), key
+            continue
         assert (v is None and not math.isfinite(metrics[key])) or metrics[key] == v, key
 
 
