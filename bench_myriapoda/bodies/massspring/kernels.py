@@ -20,8 +20,9 @@
    inside the terrain than a limit.
 
 Layout of the step loop.  The springs are run by family (``lattice.spring_families``): all
-springs joining corner a of face t to corner b of face t + shift.  Node positions, velocities
-and forces are mirrored in a corner-major layout (3, 4, n_faces) at every step, so a family
+springs joining corner a of face t to corner b of face t + shift.  Within one ``advance`` call
+node positions, velocities and forces live in a corner-major layout (3, 4, n_faces) (copied in
+at the start of the call and back at its end or on a blow-up), so a family
 reads and writes contiguous rows and its loop vectorises (sqrt and divisions in SIMD lanes);
 indexed gathers of the (n_nodes, 3) state cost more than the arithmetic.  Per spring the
 arithmetic is that of ``spring_forces``; only the order in which a node's spring forces are
@@ -151,6 +152,43 @@ def spine_vectors(x, n_faces, out):
             out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
 
 
+@njit(cache=True)
+def spine_vectors_c(xc, out):
+    """``spine_vectors`` from corner-major positions xc (3, 4, n_faces): the same sums in the same order."""
+    n_faces = xc.shape[2]
+    for j in range(n_faces):
+        a = j - 1 if j > 0 else 0
+        b = j + 1 if j < n_faces - 1 else n_faces - 1
+        sx = sy = sz = 0.0
+        for c in range(4):
+            sx += xc[0, c, a] - xc[0, c, b]
+            sy += xc[1, c, a] - xc[1, c, b]
+            sz += xc[2, c, a] - xc[2, c, b]
+        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+        if nrm > 0.0:
+            out[j, 0], out[j, 1], out[j, 2] = sx / nrm, sy / nrm, sz / nrm
+        else:
+            out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
+
+
+@njit(cache=True)
+def _corner_major(a, ac):
+    """Copy a (n_nodes, 3) into ac (3, 4, n_faces) (node 4 f + c at [:, c, f])."""
+    for f in range(ac.shape[2]):
+        for c in range(4):
+            for d in range(3):
+                ac[d, c, f] = a[4 * f + c, d]
+
+
+@njit(cache=True)
+def _node_major(ac, a):
+    """Copy ac (3, 4, n_faces) back into a (n_nodes, 3)."""
+    for f in range(ac.shape[2]):
+        for c in range(4):
+            for d in range(3):
+                a[4 * f + c, d] = ac[d, c, f]
+
+
 @njit(cache=True, error_model="numpy")
 def family_rest_lengths(act, volume_conserving, fam, params, stretch, face_scale, rest):
     """Overwrite ``rest`` (n_fam, n_faces) with the rest length [m] of every family spring.
@@ -273,61 +311,62 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
     act[:, :] = act_buf[min(n_steps, n_rows - 1)]
+    _corner_major(x, xc)
+    _corner_major(v, vc)
     for step in range(n_steps):
         family_rest_lengths(act_buf[min(step, n_rows - 1)], volume, fam, params, stretch, face_scale, rest)
+        fc[:, :, :] = 0.0
+        family_spring_forces(xc, vc, fam, params, rest, dfs, fc)
+        spine_vectors_c(xc, spine)
+        n_contact = 0
+        status = OK
         for f in range(n_faces):
             for c in range(4):
                 n = 4 * f + c
-                for d in range(3):
-                    xc[d, c, f] = x[n, d]
-                    vc[d, c, f] = v[n, d]
-                    fc[d, c, f] = 0.0
-        family_spring_forces(xc, vc, fam, params, rest, dfs, fc)
-        spine_vectors(x, n_faces, spine)
-        n_contact = 0
-        status = OK
-        for n in range(n_nodes):
-            im = inv_mass[n]
-            if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
-                continue
-            f = n // 4
-            c = n - 4 * f
-            vx = v[n, 0] + dt * fc[0, c, f] * im
-            vy = v[n, 1] + dt * (fc[1, c, f] * im - g)
-            vz = v[n, 2] + dt * fc[2, c, f] * im
-            # The other backends call contact_kernels.advance_point for this block; here it stays
-            # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
-            px, py, pz = x[n, 0], x[n, 1], x[n, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[f, 0], spine[f, 1], spine[f, 2])
-            if euler:
-                qx = px + 0.5 * dt * (v[n, 0] + vx)
-                qy = py + 0.5 * dt * (v[n, 1] + vy)
-                qz = pz + 0.5 * dt * (v[n, 2] + vz)
-            else:
-                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > phys[MAX_PEN]:
-                    status = DEEP_PENETRATION
-            x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
-            v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
-            # Blow-up checks (status codes, never an exception); the step still finishes.
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = NONFINITE
-            elif vx * vx + vy * vy + vz * vz > max_speed2:
-                status = RUNAWAY_SPEED
+                im = inv_mass[n]
+                if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
+                    continue
+                ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
+                vx = ox + dt * fc[0, c, f] * im
+                vy = oy + dt * (fc[1, c, f] * im - g)
+                vz = oz + dt * fc[2, c, f] * im
+                # The other backends call contact_kernels.advance_point for this block; here it stays
+                # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
+                px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
+                phi = signed_distance(terr_kind, terr, px, py, pz)
+                if phi < contact_dist:
+                    n_contact += 1
+                    vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                                  spine[f, 0], spine[f, 1], spine[f, 2])
+                if euler:
+                    qx = px + 0.5 * dt * (ox + vx)
+                    qy = py + 0.5 * dt * (oy + vy)
+                    qz = pz + 0.5 * dt * (oz + vz)
+                else:
+                    qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi_q < 0.0:
+                    qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                               qx, qy, qz, phi_q, vx, vy, vz)
+                    if pen > acc[ACC_MAX_PEN]:
+                        acc[ACC_MAX_PEN] = pen
+                    if pen > phys[MAX_PEN]:
+                        status = DEEP_PENETRATION
+                xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
+                vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
+                # Blow-up checks (status codes, never an exception); the step still finishes.
+                if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                    status = NONFINITE
+                elif vx * vx + vy * vy + vz * vz > max_speed2:
+                    status = RUNAWAY_SPEED
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:
+            _node_major(xc, x)
+            _node_major(vc, v)
             return step + 1, status
+    _node_major(xc, x)
+    _node_major(vc, v)
     return n_steps, OK
 
 
