@@ -47,6 +47,11 @@ ELASTICA_ELEMENTS = 50
 OURS_SETTLE_STEPS = 3000
 
 
+# peer entry -> our entry it is compared with (same scene size, ``ratios`` and the report's history)
+PEER_PAIRS = {f"peer:mujoco-flex-{n}": f"ours:fem-chain-{n}" for n in (48 * FLEX_BLOCKS, 162 * FLEX_BLOCKS)}
+PEER_PAIRS["peer:pyelastica-snake"] = "ours:massspring-snake"
+
+
 def missing_packages() -> list[str]:
     """pip names of the ``[peers]`` packages that are not importable."""
     return [pip for mod, pip in PEER_PACKAGES.items() if importlib.util.find_spec(mod) is None]
