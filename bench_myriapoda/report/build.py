@@ -384,7 +384,7 @@ def _history(page: _Page, store: Path | None) -> None:
     from .regress_history import peer_ratio_history
     peers = peer_ratio_history(hist)
     if not peers.empty:
-        page.p("Ours against the peers (`bench-myriapoda peers`, one process and one sitting per run): "
+        page.p("Ours against the peers (bench-myriapoda peers, one process and one sitting per run): "
                "speed-up = our steps/s / the peer's steps/s on the matched scene.")
         page.table(peers.pivot_table(index=["run_id", "commit_short"], columns="pair", values="speedup").round(2)
                    .reset_index())
