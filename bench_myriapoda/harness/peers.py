@@ -5,7 +5,7 @@ timing thread, the REFERENCE kernel before every repetition), so the figures and
 from the same machine state.  Entries (names as stored in ``regress_history``):
 
 - ``peer:mujoco-flex-816`` / ``peer:mujoco-flex-2754``: MuJoCo's flex soft body (``flexcomp``
-  ``type="grid" dim="3"``, linear-elastic tets with the flex elasticity plugin-free passive
+  ``type="grid" dim="3"``, linear-elastic tets whose elasticity MuJoCo applies as passive
   forces), 17 separate blocks of 1 x 1 x 1 m resting on a plane: 3 x 3 x 3 vertices per block
   (48 tets, 816 in all) or 4 x 4 x 4 (162 tets, 2,754 in all).  No self-collision, and blocks
   never collide with each other (contype/conaffinity), only with the plane; dt = 1/3000 s, one
