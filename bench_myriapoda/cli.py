@@ -8,6 +8,7 @@
     bench-myriapoda report DIR [--baseline DIR2]   index.html and summary.md of a matrix run
     bench-myriapoda regress [--baseline COMMIT_OR_RUN] [...]   throughput suite vs. the stored history
     bench-myriapoda keys [SECTION] [--json]   every configuration key --set accepts, described
+    bench-myriapoda peers [--repeats N] [--store PATH] [--json]   MuJoCo flex and PyElastica side by side (extra [peers])
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -134,6 +135,10 @@ def build_parser() -> argparse.ArgumentParser:
                     help="run only these entries of the suite (default: all)")
 
     _keys_parser(sub)
+    pe = sub.add_parser("peers", help="time MuJoCo flex and PyElastica's snake side by side with ours (extra [peers])")
+    pe.add_argument("--repeats", type=int, metavar="N", default=5, help="timed repetitions per entry (default 5)")
+    pe.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    pe.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     return p
 
 
@@ -699,6 +704,39 @@ def _check_matrix_outputs(args, out: Path, store: Path) -> None:
     if args.report:
         from .report.build import check_report_outputs
         check_report_outputs(out)
+def cmd_peers(args) -> int:
+    """Time the peers (MuJoCo flex, PyElastica's snake) and ours in one sitting; store and print the ratios.
+
+    Exit 2 (one line, nothing timed or written) when the ``[peers]`` packages are missing."""
+    from .harness import peers as P
+    from .harness import regress as R
+    from .harness.store import DEFAULT_STORE, record_regress_run
+
+    missing = P.missing_packages()
+    if missing:
+        raise InputError("peers", None, f"needs the optional packages {', '.join(missing)}: "
+                                        f"pip install {' '.join(missing)} (or the extra bench-myriapoda[peers])")
+    repeats = R.check_repeats(args.repeats)
+    store = Path(args.store) if args.store else DEFAULT_STORE
+    if store.exists() and not store.is_file():
+        raise InputError("--store", None, f"{store} exists and is not a file")
+    entries = P.peer_entries()
+    tty = not args.json and sys.stderr.isatty()
+    try:
+        results = R.run_suite(list(entries), repeats, suite={k: e.entry for k, e in entries.items()},
+                              progress=(lambda m: print(f"peers: {m}", file=sys.stderr)) if tty else None)
+    except RuntimeError as exc:
+        print(f"bench-myriapoda: peers failed: {exc}", file=sys.stderr)
+        return EXIT_FAIL
+    run_id = record_regress_run(store, [r.row() for r in results])
+    rows = P.ratios(entries, results)
+    if args.json:
+        print(json.dumps({"run_id": run_id, "store": str(store), "repeats": repeats, "entries": rows}))
+    else:
+        for line in P.format_rows(rows):
+            print(line)
+        print(f"one process, one sitting, CPU time of the timing thread; stored as regress run {run_id} in {store}")
+    return EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -709,7 +747,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command is None:
             args = parser.parse_args(["quick", *argv])
         code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
-                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys}[args.command](args)
+                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
+                "peers": cmd_peers}[args.command](args)
         sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
         return code
     except BrokenPipeError:

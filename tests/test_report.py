@@ -347,3 +347,18 @@ def test_report_in_chromium_at_1400_px_shows_every_section_and_images_at_least_8
     for src, shown, natural, complete in data["imgs"]:
         assert complete and natural >= 800, f"{src}: {natural} px wide"
         assert shown >= 800, f"{src} drawn {shown} px wide"
+
+
+def test_report_history_lists_the_peer_speedups(matrix_dir, tmp_path):
+    from bench_myriapoda.harness.store import record_regress_run
+
+    store = tmp_path / "history.sqlite"
+    for ours in (2e4, 3e4):  # two peers runs: ours gets faster, MuJoCo stays at 1,000 steps/s
+        record_regress_run(store, [{"entry": e, "steps_per_rep": 100, "repeats": 3, "steps_per_s": sps,
+                                    "spread": 0.01, "reference_ops_per_s": 1e8, "reference_spread": 0.01,
+                                    "normalized": sps / 1e8, "samples_json": "[]"}
+                                   for e, sps in (("peer:mujoco-flex-816", 1e3), ("ours:fem-chain-816", ours))])
+    assert main(["report", str(matrix_dir), "--history-store", str(store)]) == 0
+    section = (matrix_dir / "index.html").read_text().split('<section id="history">', 1)[1].split("</section>", 1)[0]
+    assert "ours:fem-chain-816 vs peer:mujoco-flex-816" in section
+    assert "<td>20</td>" in section and "<td>30</td>" in section

@@ -5,7 +5,12 @@ store from this (the parent) process only, one transaction per case, tagged
 ``command = 'matrix'`` and ``matrix = NAME``.  Workers never touch the store.
 
 ``local``: ``workers`` long-lived ``spawn`` processes, each fed one case at a
-time over a pipe.  A case that outruns ``timeout_per_case`` (measured from the
+time over a pipe.  Compile once, not once per worker: cases are grouped by the
+kernels they compile (``compile_group``); the first case of every group goes out
+first, and the other cases of a group wait until that one has finished, by when
+its kernels are in numba's on-disk cache and the other workers load them instead
+of compiling them again.  With fewer groups than workers the idle workers start
+on the next group's first case, so different kernels compile in parallel.  A case that outruns ``timeout_per_case`` (measured from the
 moment it is handed to a worker) is recorded with status ``timeout``; its worker
 is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
 recorded as ``error`` with its exit code and replaced.  A case that raises is
@@ -156,15 +161,52 @@ def _start_slot(ctx) -> _Slot:
     return _Slot(proc, parent)
 
 
+def compile_group(case: Case) -> tuple:
+    """The key of the set of JIT kernels a case compiles: body model, legged or not, water or not.
+    (Terrain kinds, gaits and sizes are run-time arguments of the same kernels.)"""
+    from ..world.water_coupling import has_water
+
+    return (case.body.name, case.creature.legs_per_segment > 0, has_water(case.scenario))
+
+
+def compile_first_order(cases: Sequence[Case]) -> list[tuple[int, Case]]:
+    """(index, case) with the first case of every compile group first, the rest in their order."""
+    seen: set = set()
+    first, rest = [], []
+    for i, c in enumerate(cases):
+        g = compile_group(c)
+        (rest if g in seen else first).append((i, c))
+        seen.add(g)
+    return first + rest
+
+
 def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None]) -> None:
     ctx = mp.get_context("spawn")
-    pending = deque(enumerate(cases))
+    pending = deque(compile_first_order(cases))
+    groups = [compile_group(c) for c in cases]
+    compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
+    warm: set = set()  # groups with a finished case
+
+    def next_job():
+        """The first pending case whose group is warm or not compiling anywhere (None: wait)."""
+        for k, (i, _c) in enumerate(pending):
+            g = groups[i]
+            if g in warm or g not in compiling:
+                job = pending[k]
+                del pending[k]
+                if g not in warm:
+                    compiling.add(g)
+                return job
+        return None
+
     slots = [_start_slot(ctx) for _ in range(max(1, min(workers, len(cases))))]
     try:
         while pending or any(s.job for s in slots):
             for s in slots:
                 if s.job is None and pending:
-                    s.job = pending.popleft()
+                    s.job = next_job()
+                    if s.job is None:
+                        continue
                     s.started, s.running = time.monotonic(), False
                     s.conn.send(s.job)
             busy = [s for s in slots if s.job]
@@ -197,6 +239,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     s.stop(kill=True)
                     slots[i] = _start_slot(ctx)
                 if result is not None:
+                    warm.add(groups[s.job[0]])
+                    compiling.discard(groups[s.job[0]])
                     slots[i].job = None
                     emit(result)
     finally:

@@ -104,15 +104,19 @@ def check_threshold(threshold: float) -> float:
 # --------------------------------------------------------------------------- running the suite
 
 def run_suite(names: Sequence[str], repeats: int = DEFAULT_REPEATS,
-              progress: Callable[[str], None] | None = None) -> list[EntryResult]:
-    """Time every named entry ``repeats`` times, the reference kernel before each repetition."""
+              progress: Callable[[str], None] | None = None, suite: dict | None = None) -> list[EntryResult]:
+    """Time every named entry ``repeats`` times, the reference kernel before each repetition.
+
+    ``suite``: name -> ``SuiteEntry`` to take the entries from (default ``throughput_suite.SUITE``;
+    ``peers`` passes its own)."""
     from . import throughput_suite as TS
 
+    suite = TS.SUITE if suite is None else suite
     clock, wall = time.thread_time, time.perf_counter
     TS.reference_ops(100)  # compile (or load) the reference kernel
     results = []
     for name in names:
-        entry = TS.SUITE[name]
+        entry = suite[name]
         if progress:
             progress(f"{name}: setup (compile or cache load)")
         step, steps = entry.setup()

@@ -154,6 +154,63 @@ def rigid_scene():
     return boxes
 
 
+# --------------------------------------------------------------------------- cost against size
+
+SCALING_SEGMENTS = (6, 12, 25, 50, 100, 200)
+SCALING_KINDS = ("snake", "centipede")
+SCALING_SETTLE_STEPS = {"snake": 3000, "centipede": 900}  # the gait / leg wave has started
+
+
+def scaling_scene(kind: str, segments: int):
+    """A compiled creature of ``segments`` segments for the cost-against-size fit, settled; returns (case, creature, t).
+
+    ``snake``: Miller's snake on the mass-spring body; ``centipede``: the walking hybrid centipede."""
+    from ..core.config import resolve_case
+    from .runner import Creature
+
+    if kind == "snake":
+        case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
+    elif kind == "centipede":
+        case = resolve_case("centipede", "hybrid", "walk", overrides=[f"creature.segments={segments}"])
+    else:
+        raise ValueError(f"unknown scaling kind {kind!r}; known: {', '.join(SCALING_KINDS)}")
+    body = Creature(case)
+    body.compile()
+    n = SCALING_SETTLE_STEPS[kind]
+    done, status = advance_in_chunks(body, 0.0, n)
+    if status != 0:
+        raise RuntimeError(f"{kind} with {segments} segments stopped after {done} steps: {body.status_text(status)}")
+    return case, body, n * case.dt
+
+
+def time_per_step(kind: str, segments: int, steps: int, repeats: int = 3) -> float:
+    """CPU seconds per step (the fastest of ``repeats`` runs of ``steps`` steps, each from the same state)."""
+    import time
+
+    case, body, t0 = scaling_scene(kind, segments)
+    fields = [body.x, body.v, body.acc] if kind == "snake" else []
+    start = [a.copy() for a in fields]
+    best = math.inf
+    t = t0
+    for _ in range(repeats):
+        for dst, src in zip(fields, start):
+            dst[...] = src
+        if kind == "snake":
+            t = t0
+        c0 = time.thread_time()
+        done, status = advance_in_chunks(body, t, steps)
+        best = min(best, time.thread_time() - c0)
+        _check(f"scaling {kind} {segments}", steps, done, status)
+        t += steps * case.dt
+    return best / steps
+
+
+def fit_exponent(segments, seconds_per_step) -> float:
+    """Slope p of log(time per step) = p log(segments) + c (least squares)."""
+    p, _c = np.polyfit(np.log(np.asarray(segments, float)), np.log(np.asarray(seconds_per_step, float)), 1)
+    return float(p)
+
+
 # --------------------------------------------------------------------------- the suite
 
 Step = Callable[[int], None]

@@ -500,6 +500,13 @@ def _history(page: _Page, store: Path | None) -> None:
     path = plot_regress_history(hist, page.fig_dir / "regress_history.png")
     page.figure(path, "Normalized throughput (steps/s divided by the reference kernel's rate, timed in the same run) "
                       "per suite entry and regress run.")
+    from .regress_history import peer_ratio_history
+    peers = peer_ratio_history(hist)
+    if not peers.empty:
+        page.p("Ours against the peers (bench-myriapoda peers, one process and one sitting per run): "
+               "speed-up = our steps/s / the peer's steps/s on the matched scene.")
+        page.table(peers.pivot_table(index=["run_id", "commit_short"], columns="pair", values="speedup").round(2)
+                   .reset_index())
 
 
 def _baseline(page: _Page, res: MatrixResults, base: MatrixResults | None, threshold: float) -> int:

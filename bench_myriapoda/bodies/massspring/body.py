@@ -24,7 +24,7 @@ from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
-from .lattice import build_lattice
+from .lattice import build_lattice, spring_families
 
 
 # Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
@@ -126,13 +126,19 @@ class BodyMassSpring(NodeSegments):
         self.x = place_points(lat.rest_nodes, case)
         self.v = np.zeros_like(self.x)
         # work arrays and accumulators for the kernel
-        self._force = np.zeros_like(self.x)
         self._act = np.zeros((cre.segments, 3))
         self._rest = lat.rest_length.copy()
         self._face_scale = np.ones(cre.segments + 1)
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
+        # the step kernel's spring families and corner-major work arrays (kernels module docstring)
+        n_faces = cre.segments + 1
+        self.families = spring_families(lat, self.stiffness, self.damping)
+        self._xc, self._vc, self._fc = (np.zeros((3, 4, n_faces)) for _ in range(3))
+        self._dfs = np.zeros((3, n_faces))
+        self._rest_fam = np.zeros((self.families.index.shape[0], n_faces))
+        self._stretch_c = np.ones((4, cre.segments))
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -141,12 +147,11 @@ class BodyMassSpring(NodeSegments):
         Without ``act`` the muscles are at rest (a passive body)."""
         if act is None:
             act = self._rest_actuation
-        lat = self.lattice
-        return K.advance(self.x, self.v, self.inv_mass, lat.springs, self.stiffness, self.damping, lat.kind, lat.seg,
-                         lat.corner_a, lat.corner_b, lat.L0, lat.Lc, act.muscle, self.fric_model,
+        fam = self.families
+        return K.advance(self.x, self.v, self.inv_mass, fam.index, fam.params, act.muscle, self.fric_model,
                          self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                         self._force, self._act, self._rest, self._face_scale, self._stretch, self._spine,
-                         self.acc)
+                         self._xc, self._vc, self._fc, self._dfs, self._rest_fam, self._act, self._face_scale,
+                         self._stretch_c, self._spine, self.acc)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""

@@ -4,8 +4,10 @@
 
 1. the step's muscle activation: row k of the actuation buffer written by the
    controller (``core.protocols.Actuation``; the kernel knows no gait);
-2. spring rest lengths from the activation (``lattice_rest_lengths``);
-3. spring forces f = k (L - l) - D dl/dt along each spring (Miller Sec. 3), plus gravity;
+2. spring rest lengths from the activation (``family_rest_lengths``, the rules of
+   ``lattice_rest_lengths``);
+3. spring forces f = k (L - l) - D dl/dt along each spring (Miller Sec. 3), plus gravity
+   (``family_spring_forces``);
 4. velocity update, then ground friction for masses within the contact
    distance (``friction_kernels.ground_friction``);
 5. position update: semi-implicit (symplectic) Euler x += dt v_new, or
@@ -16,6 +18,17 @@
    surface is reflected with r_n along the normal and kept with r_t along the tangent;
 7. blow-up checks: non-finite values, a mass faster than a limit, a mass deeper
    inside the terrain than a limit.
+
+Layout of the step loop.  The springs are run by family (``lattice.spring_families``): all
+springs joining corner a of face t to corner b of face t + shift.  Within one ``advance`` call
+node positions, velocities and forces live in a corner-major layout (3, 4, n_faces) (copied in
+at the start of the call and back at its end or on a blow-up), so a family
+reads and writes contiguous rows and its loop vectorises (sqrt and divisions in SIMD lanes);
+indexed gathers of the (n_nodes, 3) state cost more than the arithmetic.  Per spring the
+arithmetic is that of ``spring_forces``; only the order in which a node's spring forces are
+summed differs (by family, not by spring index), so results agree to round-off (~1e-16
+relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
+references (and serve the energy and the legged chain).
 """
 from __future__ import annotations
 
@@ -28,7 +41,8 @@ from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
-from .lattice import AXIAL, CROSS
+from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, PAR_D, PAR_K, PAR_L0,
+                      PAR_LC)
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
@@ -138,16 +152,150 @@ def spine_vectors(x, n_faces, out):
             out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
 
 
+@njit(cache=True)
+def spine_vectors_c(xc, out):
+    """``spine_vectors`` from corner-major positions xc (3, 4, n_faces): the same sums in the same order."""
+    n_faces = xc.shape[2]
+    for j in range(n_faces):
+        a = j - 1 if j > 0 else 0
+        b = j + 1 if j < n_faces - 1 else n_faces - 1
+        sx = sy = sz = 0.0
+        for c in range(4):
+            sx += xc[0, c, a] - xc[0, c, b]
+            sy += xc[1, c, a] - xc[1, c, b]
+            sz += xc[2, c, a] - xc[2, c, b]
+        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+        if nrm > 0.0:
+            out[j, 0], out[j, 1], out[j, 2] = sx / nrm, sy / nrm, sz / nrm
+        else:
+            out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
+
+
+@njit(cache=True)
+def _corner_major(a, ac):
+    """Copy a (n_nodes, 3) into ac (3, 4, n_faces) (node 4 f + c at [:, c, f])."""
+    for f in range(ac.shape[2]):
+        for c in range(4):
+            for d in range(3):
+                ac[d, c, f] = a[4 * f + c, d]
+
+
+@njit(cache=True)
+def _node_major(ac, a):
+    """Copy ac (3, 4, n_faces) back into a (n_nodes, 3)."""
+    for f in range(ac.shape[2]):
+        for c in range(4):
+            for d in range(3):
+                a[4 * f + c, d] = ac[d, c, f]
+
+
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, Lc, act_buf,
+def family_rest_lengths(act, volume_conserving, fam, params, stretch, face_scale, rest):
+    """Overwrite ``rest`` (n_fam, n_faces) with the rest length [m] of every family spring.
+
+    act (n_seg, 3): the step's muscle strains; fam, params: ``lattice.SpringFamilies``
+    index and params.  stretch (4, n_seg) and face_scale (n_faces,) are overwritten with
+    the fibre stretches (corner-major) and the faces' circumferential scales.  Same
+    arithmetic as ``lattice_rest_lengths`` (bitwise the same rest lengths).
+    """
+    n_seg = act.shape[0]
+    for c in range(4):
+        for i in range(n_seg):
+            stretch[c, i] = fibre_stretch(act, i, c)
+    for j in range(n_seg + 1):
+        if volume_conserving:
+            tot = 0.0
+            cnt = 0
+            if j > 0:
+                tot += max(1.0 + act[j - 1, 0], MIN_STRETCH)
+                cnt += 1
+            if j < n_seg:
+                tot += max(1.0 + act[j, 0], MIN_STRETCH)
+                cnt += 1
+            face_scale[j] = 1.0 / math.sqrt(tot / cnt)
+        else:
+            face_scale[j] = 1.0
+    for q in range(fam.shape[0]):
+        kind = fam[q, FAM_KIND]
+        count = n_seg + 1 - fam[q, FAM_SHIFT]
+        out = rest[q]
+        L0 = params[PAR_L0, q]
+        Lc = params[PAR_LC, q]
+        if kind == AXIAL:
+            sa = stretch[fam[q, FAM_CA]]
+            for t in range(count):
+                out[t] = L0[t] * sa[t]
+        elif kind == CROSS:
+            for t in range(count):
+                out[t] = Lc[t] * face_scale[t]
+        else:
+            sa = stretch[fam[q, FAM_CA]]
+            sb = stretch[fam[q, FAM_CB]]
+            for t in range(count):
+                axial = L0[t] * 0.5 * (sa[t] + sb[t])
+                cross = Lc[t] * 0.5 * (face_scale[t] + face_scale[t + 1])
+                out[t] = math.sqrt(axial * axial + cross * cross)
+
+
+@njit(cache=True, error_model="numpy")
+def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
+    """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``fc`` (3, 4, n_faces).
+
+    xc, vc: (3, 4, n_faces) corner-major positions [m] and velocities [m/s] (node 4 t + c at
+    [:, c, t]); fam, params: ``lattice.SpringFamilies``; rest (n_fam, n_faces) [m]; dfs
+    (3, n_faces) scratch.  Per spring the arithmetic of ``spring_forces`` (a spring shorter
+    than 1e-12 m pulls nothing), written as selects so the loop vectorises.
+    """
+    n_faces = xc.shape[2]
+    for q in range(fam.shape[0]):
+        a = fam[q, FAM_A]
+        b = fam[q, FAM_B]
+        s = fam[q, FAM_SHIFT]
+        count = n_faces - s
+        k = params[PAR_K, q]
+        d = params[PAR_D, q]
+        r = rest[q]
+        xa0, xa1, xa2 = xc[0, a], xc[1, a], xc[2, a]
+        xb0, xb1, xb2 = xc[0, b, s:], xc[1, b, s:], xc[2, b, s:]
+        va0, va1, va2 = vc[0, a], vc[1, a], vc[2, a]
+        vb0, vb1, vb2 = vc[0, b, s:], vc[1, b, s:], vc[2, b, s:]
+        g0, g1, g2 = dfs[0], dfs[1], dfs[2]
+        for t in range(count):
+            dx = xb0[t] - xa0[t]
+            dy = xb1[t] - xa1[t]
+            dz = xb2[t] - xa2[t]
+            length = math.sqrt(dx * dx + dy * dy + dz * dz)
+            ux, uy, uz = dx / length, dy / length, dz / length
+            ldot = (vb0[t] - va0[t]) * ux + (vb1[t] - va1[t]) * uy + (vb2[t] - va2[t]) * uz
+            f = k[t] * (r[t] - length) - d[t] * ldot
+            live = length >= 1e-12
+            g0[t] = f * ux if live else 0.0
+            g1[t] = f * uy if live else 0.0
+            g2[t] = f * uz if live else 0.0
+        for c in range(3):
+            fa = fc[c, a]
+            g = dfs[c]
+            for t in range(count):
+                fa[t] -= g[t]
+        for c in range(3):
+            fb = fc[c, b, s:]
+            g = dfs[c]
+            for t in range(count):
+                fb[t] += g[t]
+
+
+@njit(cache=True, error_model="numpy")
+def advance(x, v, inv_mass, fam, params, act_buf,
             fric_model, fric, terr_kind, terr, phys, n_steps,
-            force, act, rest, face_scale, stretch, spine, acc):
+            xc, vc, fc, dfs, rest, act, face_scale, stretch, spine, acc):
     """Advance the lattice ``n_steps`` steps; return (steps done, status).
 
-    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  act_buf (n_rows, n_seg, 3):
-    the muscle strains of step k in row k (rows past the last repeat it).  ``act`` (n_seg, 3)
-    is overwritten with row n_steps (the actuation at the end time, which ``energy`` uses), or
-    the last row.  ``force``, ``rest``, ``face_scale``, ``stretch``, ``spine`` are work arrays.
+    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  fam, params: the lattice's
+    ``SpringFamilies`` (index, params).  act_buf (n_rows, n_seg, 3): the muscle strains of
+    step k in row k (rows past the last repeat it).  ``act`` (n_seg, 3) is overwritten with
+    row n_steps (the actuation at the end time, which ``energy`` uses), or the last row.
+    Work arrays: xc, vc, fc (3, 4, n_faces); dfs (3, n_faces); rest (n_fam, n_faces);
+    face_scale (n_faces,); stretch (4, n_seg); spine (n_faces, 3).
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
@@ -158,59 +306,67 @@ def advance(x, v, inv_mass, springs, stiffness, damping, kind, seg, ca, cb, L0, 
     r_n = phys[R_N]
     r_t = phys[R_T]
     euler = phys[INTEGRATOR] == EULER
+    volume = phys[VOLUME] != 0.0
     contact_dist = fric[CONTACT_DISTANCE]
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
     act[:, :] = act_buf[min(n_steps, n_rows - 1)]
+    _corner_major(x, xc)
+    _corner_major(v, vc)
     for step in range(n_steps):
-        row = act_buf[min(step, n_rows - 1)]
-        lattice_rest_lengths(row, phys[VOLUME] != 0.0, kind, seg, ca, cb, L0, Lc, face_scale, stretch, rest)
-        force[:, :] = 0.0
-        spring_forces(x, v, springs, stiffness, damping, rest, force)
-        spine_vectors(x, n_faces, spine)
+        family_rest_lengths(act_buf[min(step, n_rows - 1)], volume, fam, params, stretch, face_scale, rest)
+        fc[:, :, :] = 0.0
+        family_spring_forces(xc, vc, fam, params, rest, dfs, fc)
+        spine_vectors_c(xc, spine)
         n_contact = 0
         status = OK
-        max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
-        for n in range(n_nodes):
-            im = inv_mass[n]
-            if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
-                continue
-            vx = v[n, 0] + dt * force[n, 0] * im
-            vy = v[n, 1] + dt * (force[n, 1] * im - g)
-            vz = v[n, 2] + dt * force[n, 2] * im
-            # The other backends call contact_kernels.advance_point for this block; here it stays
-            # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
-            px, py, pz = x[n, 0], x[n, 1], x[n, 2]
-            phi = signed_distance(terr_kind, terr, px, py, pz)
-            if phi < contact_dist:
-                n_contact += 1
-                f = n // 4
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[f, 0], spine[f, 1], spine[f, 2])
-            if euler:
-                qx = px + 0.5 * dt * (v[n, 0] + vx)
-                qy = py + 0.5 * dt * (v[n, 1] + vy)
-                qz = pz + 0.5 * dt * (v[n, 2] + vz)
-            else:
-                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-            if phi_q < 0.0:
-                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                           qx, qy, qz, phi_q, vx, vy, vz)
-                if pen > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = pen
-                if pen > phys[MAX_PEN]:
-                    status = DEEP_PENETRATION
-            x[n, 0], x[n, 1], x[n, 2] = qx, qy, qz
-            v[n, 0], v[n, 1], v[n, 2] = vx, vy, vz
-            # Blow-up checks (status codes, never an exception); the step still finishes.
-            if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                status = NONFINITE
-            elif vx * vx + vy * vy + vz * vz > max_speed2:
-                status = RUNAWAY_SPEED
+        for f in range(n_faces):
+            for c in range(4):
+                n = 4 * f + c
+                im = inv_mass[n]
+                if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
+                    continue
+                ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
+                vx = ox + dt * fc[0, c, f] * im
+                vy = oy + dt * (fc[1, c, f] * im - g)
+                vz = oz + dt * fc[2, c, f] * im
+                # The other backends call contact_kernels.advance_point for this block; here it stays
+                # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
+                px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
+                phi = signed_distance(terr_kind, terr, px, py, pz)
+                if phi < contact_dist:
+                    n_contact += 1
+                    vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                                  spine[f, 0], spine[f, 1], spine[f, 2])
+                if euler:
+                    qx = px + 0.5 * dt * (ox + vx)
+                    qy = py + 0.5 * dt * (oy + vy)
+                    qz = pz + 0.5 * dt * (oz + vz)
+                else:
+                    qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi_q < 0.0:
+                    qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                               qx, qy, qz, phi_q, vx, vy, vz)
+                    if pen > acc[ACC_MAX_PEN]:
+                        acc[ACC_MAX_PEN] = pen
+                    if pen > phys[MAX_PEN]:
+                        status = DEEP_PENETRATION
+                xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
+                vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
+                # Blow-up checks (status codes, never an exception); the step still finishes.
+                if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                    status = NONFINITE
+                elif vx * vx + vy * vy + vz * vz > max_speed2:
+                    status = RUNAWAY_SPEED
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:
+            _node_major(xc, x)
+            _node_major(vc, v)
             return step + 1, status
+    _node_major(xc, x)
+    _node_major(vc, v)
     return n_steps, OK
 
 
