@@ -92,11 +92,16 @@ class GaitConfig:
     The wave on a channel is ``amplitude * sin(d * 2 pi s / wavelength - 2 pi f t + phase)``
     with s the rest arc length of a segment centre from the head and d = +1
     for a wave travelling head to tail, -1 tail to head.  Amplitudes are
-    strains of the muscle fibres (dimensionless).
+    strains of the muscle fibres (dimensionless), unless ``curvature_amplitude`` commands the shape
+    of a bending wave instead (the same body shape on every body model).
     """
 
     name: str = rng("", doc="gait (controller) name")
     amplitude: float = rng(0.2, ge=0.0, lt=0.95, doc="main channel strain amplitude")
+    curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
+                                     doc="lateral undulation, sidewinding: commanded peak curvature x body length "
+                                         "[-]; each body turns it into its own strain (bodies/curvature_calibration.py); "
+                                         "0: use the raw strain 'amplitude'")
     wavelength_bl: float = rng(0.5, gt=0.0, doc="wavelength in body lengths (undeformed)")
     frequency_hz: float = rng(1.0, gt=0.0, doc="wave frequency [Hz]")
     phase_deg: float = rng(0.0, doc="phase offset of the main wave [deg]")
