@@ -119,6 +119,8 @@ class HybridConfig:
     resolution: int = rng(3, ge=2, le=64, doc="mesh resolution of a link per edge, in resolution_unit")
     resolution_unit: str = rng("nodes", choices=RESOLUTION_UNITS, doc="'nodes': 3 = 3x3x3 nodes (2x2x2 cells); 'cells'")
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tets per hexahedral cell: 6 (Kuhn) or 5")
+    mirror_split: bool = rng(True, doc="6 tets per cell: mirror the Kuhn split across the sagittal plane so the links "
+                                       "bend alike to the left and to the right (false: the plain Kuhn split)")
     rigid_restitution: float = rng(0.0, ge=0.0, le=1.0, doc="restitution of box-terrain impacts")
     rigid_friction_mu: float = rng(DERIVED, ge=0.0, doc="Coulomb coefficient of the boxes; default friction.mu_transverse")
     dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
@@ -172,7 +174,7 @@ class HybridMesh:
     rigid_centres: np.ndarray
 
 
-def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
+def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6, mirror: bool = False) -> HybridMesh:
     """Links between consecutive boxes: link k spans x in [-(k+1) P, -k P - L_rigid] (P the pitch)."""
     nx, ny, nz = lay.cells
     per_layer = (ny + 1) * (nz + 1)
@@ -182,7 +184,8 @@ def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
     for k in range(lay.n_rigid - 1):
         x0 = -(k + 1) * P
         nd, tt = box_grid((lay.link_length, lay.link_height, lay.link_width), (nx, ny, nz),
-                          origin=(x0, -0.5 * lay.link_height, -0.5 * lay.link_width), tets_per_cell=tets_per_cell)
+                          origin=(x0, -0.5 * lay.link_height, -0.5 * lay.link_width), tets_per_cell=tets_per_cell,
+                          mirror_z=0.0 if mirror else None)
         layer = np.arange(len(nd)) // per_layer  # node (i, j, k) has index i * per_layer + ...
         back, front = layer == 0, layer == nx
         body = np.full(len(nd), -1, dtype=np.int64)
@@ -220,7 +223,7 @@ class BodyHybrid(SupportedSegments):
         # links take muscle strains; the boxes can be carried by legs (when the creature has them)
         self.capabilities = frozenset({MUSCLES, SEGMENTS} | ({LEGS} if cre.legs_per_segment else set()))
         self.layout = lay = hybrid_layout(cfg, cre)
-        mesh = build_mesh(lay, cfg.tets_per_cell)
+        mesh = build_mesh(lay, cfg.tets_per_cell, cfg.mirror_split)
         self.mesh = mesh
         self.dt = float(case.dt)
         self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
