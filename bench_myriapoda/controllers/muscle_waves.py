@@ -26,6 +26,7 @@ kernel reads row k at step k, knowing nothing of gait names or wave tables.
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 from numba import njit
@@ -151,8 +152,11 @@ class MuscleWaveController:
         if gait.name in CURVATURE_GAITS and gait.curvature_amplitude > 0.0:
             gain = body_info.get("strain_per_curvature")
             if gain is None:
-                raise ValueError("gait.curvature_amplitude needs the body's strain_per_curvature in body_info "
-                                 "(harness.calibration.calibrated_body_info)")
+                # a reset outside the runner (a bare core.protocols.body_info): the raw strain amplitude
+                warnings.warn("gait.curvature_amplitude without the body's strain_per_curvature in body_info "
+                              "(harness.calibration.calibrated_body_info): using the raw strain amplitude",
+                              stacklevel=2)
+                return
             self.waves = wave_table(gait, case.creature.body_length_m, passive=case.scenario.passive,
                                     strain_per_curvature=float(gain))
 
