@@ -189,7 +189,9 @@ class FrictionConfig:
 
     * ``miller``  -- Miller's rule (Sec. 4): within ``contact_distance_m`` of the
       ground, the backward component of a mass's velocity along the local spine
-      vector is removed.  No coefficients.
+      vector is removed.  Forward and sideways sliding are resisted only by Coulomb friction
+      of coefficient ``miller_mu_slide`` (0: free, Miller's rule alone): a physical coefficient
+      whose effect does not depend on the time step, unlike a per-step ``collision.r_t``.
     * ``coulomb`` -- anisotropic Coulomb friction with forward, backward and
       transverse coefficients, static and kinetic (after Hu et al., PNAS 2009).
       A static coefficient of -1 means "same as kinetic".
@@ -211,6 +213,8 @@ class FrictionConfig:
     mu_static_forward: float = rng(-1.0, ge=-1.0)
     mu_static_backward: float = rng(-1.0, ge=-1.0)
     mu_static_transverse: float = rng(-1.0, ge=-1.0)
+    miller_mu_slide: float = rng(0.0, ge=0.0, doc="miller model: Coulomb coefficient against the sliding Miller's "
+                                                  "rule leaves free (forward and sideways); 0 = free")
     froude: float = rng(0.0, ge=0.0, doc="Froude number L / (T^2 g mu_f); > 0 sets mu_f from it, keeping the "
                                           "other coefficients' ratios to mu_f (0: coefficients as given)")
 
