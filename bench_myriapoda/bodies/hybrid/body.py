@@ -28,13 +28,14 @@ Defaults and why
 * Resolution: 3 nodes per edge ("3 x 3 x 3", Sec. 6, read as nodes as in
   ``fem.mesh.segment_cells``; ``resolution_unit = "cells"`` gives the other
   reading), 6 tets per cell (Kuhn split): 48 tets per link.
-* Rigid contact: isotropic Coulomb friction (``rigid_kernels``) with the
-  scenario's *transverse* kinetic coefficient ``friction.mu_transverse``: a box
-  has no spine-relative direction of its own to pick the forward or backward
-  coefficient, and the transverse one is the coefficient of the anisotropic
-  model that does not depend on the sliding direction along the body.  For the
-  "miller" and "stick" node rules, which have no coefficient, the boxes use the
-  same number.  ``rigid_friction_mu`` overrides it.  Restitution 0 (Miller's
+* Rigid contact: the belly scales act on the boxes as on the nodes (``box_friction``): a box's
+  x axis is its forward direction, so "coulomb" gives it the anisotropic forward, backward and
+  transverse coefficients and "miller" stops its backward sliding (forward and sideways
+  ``miller_mu_slide``).  With isotropic friction of ``mu_transverse`` on the boxes, which carry
+  most of the mass, a hybrid snake slithered at half the lattice's speed at the same body shape
+  and the hybrid worm fell 35 % short of eps * Lambda (issue 11).  The "stick" rule, or an
+  explicit ``rigid_friction_mu``, keeps isotropic Coulomb friction of that coefficient
+  (``friction.mu_transverse`` by default).  Restitution 0 (Miller's
   inelastic r_n = 0 default).
 * FEM nodes touch the ground through the suite's shared point-mass contact
   (``contact_kernels``: the scenario's friction model, then Miller's path
@@ -174,6 +175,26 @@ class HybridMesh:
     rigid_centres: np.ndarray
 
 
+MILLER_BACKWARD_MU = 1.0e3  # Miller's rule on a box: backward sliding all but impossible
+
+
+def box_friction(friction, rigid_friction_mu: float) -> np.ndarray:
+    """The boxes' anisotropic friction (``rigid_kernels`` aniso layout: on, mu_f, mu_b, mu_t) for the
+    scenario's friction model: a box has a forward axis (its x axis, toward the head) as the
+    nodes' spine, so the belly scales act on it as on the nodes.  ``coulomb``: its three kinetic
+    coefficients; ``miller``: backward sliding stopped (coefficient ``MILLER_BACKWARD_MU``),
+    forward and sideways ``miller_mu_slide``.  Off (isotropic ``rigid_friction_mu``) for ``stick``
+    or when ``rigid_friction_mu`` is given explicitly."""
+    out = np.zeros(rk.N_ANISO)
+    if rigid_friction_mu != DERIVED or friction.model == "stick":
+        return out
+    if friction.model == "coulomb":
+        out[:] = (1.0, friction.mu_forward, friction.mu_backward, friction.mu_transverse)
+    else:  # miller
+        out[:] = (1.0, friction.miller_mu_slide, MILLER_BACKWARD_MU, friction.miller_mu_slide)
+    return out
+
+
 def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6, mirror: bool = False) -> HybridMesh:
     """Links between consecutive boxes: link k spans x in [-(k+1) P, -k P - L_rigid] (P the pitch)."""
     nx, ny, nz = lay.cells
@@ -297,6 +318,7 @@ class BodyHybrid(SupportedSegments):
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
+        phys[K.RIGID_ANISO:K.RIGID_ANISO + rk.N_ANISO] = box_friction(case.friction, cfg.rigid_friction_mu)
         self.phys = phys
         n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
