@@ -57,7 +57,9 @@ def circle_curvature(points_xz: np.ndarray) -> float:
     p = np.asarray(points_xz, float)
     A = np.column_stack([p[:, 0], p[:, 1], np.ones(len(p))])
     b = -(p[:, 0] ** 2 + p[:, 1] ** 2)
-    sol, *_ = np.linalg.lstsq(A, b, rcond=None)
+    sol, _, rank, _ = np.linalg.lstsq(A, b, rcond=None)
+    if rank < 3:  # collinear points: a straight line
+        return 0.0
     D, E, F = sol
     r2 = 0.25 * (D * D + E * E) - F
     if not np.isfinite(r2) or r2 <= 0.0:
