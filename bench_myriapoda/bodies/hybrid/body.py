@@ -178,15 +178,16 @@ class HybridMesh:
 MILLER_BACKWARD_MU = 1.0e3  # Miller's rule on a box: backward sliding all but impossible
 
 
-def box_friction(friction, rigid_friction_mu: float) -> np.ndarray:
+def box_friction(friction, rigid_friction_mu: float, scaled: bool = True) -> np.ndarray:
     """The boxes' anisotropic friction (``rigid_kernels`` aniso layout: on, mu_f, mu_b, mu_t) for the
     scenario's friction model: a box has a forward axis (its x axis, toward the head) as the
     nodes' spine, so the belly scales act on it as on the nodes.  ``coulomb``: its three kinetic
     coefficients; ``miller``: backward sliding stopped (coefficient ``MILLER_BACKWARD_MU``),
     forward and sideways ``miller_mu_slide``.  Off (isotropic ``rigid_friction_mu``) for ``stick``
-    or when ``rigid_friction_mu`` is given explicitly."""
+    or when ``rigid_friction_mu`` is given explicitly, and for a body without belly scales
+    (``scaled`` False: a creature with legs, or the passive Fig. 4 chain: plain boxes)."""
     out = np.zeros(rk.N_ANISO)
-    if rigid_friction_mu != DERIVED or friction.model == "stick":
+    if not scaled or rigid_friction_mu != DERIVED or friction.model == "stick":
         return out
     if friction.model == "coulomb":
         out[:] = (1.0, friction.mu_forward, friction.mu_backward, friction.mu_transverse)
@@ -318,7 +319,9 @@ class BodyHybrid(SupportedSegments):
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
-        phys[K.RIGID_ANISO:K.RIGID_ANISO + rk.N_ANISO] = box_friction(case.friction, cfg.rigid_friction_mu)
+        phys[K.RIGID_ANISO:K.RIGID_ANISO + rk.N_ANISO] = box_friction(
+            case.friction, cfg.rigid_friction_mu,
+            scaled=not case.creature.legs_per_segment and case.gait.name != "passive")
         self.phys = phys
         n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
