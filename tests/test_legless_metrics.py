@@ -195,3 +195,13 @@ def test_strict_run_fails_on_posture_fault(monkeypatch, capsys, fault, expected)
     assert code == expected
     if fault:
         assert "posture fault" in capsys.readouterr().err
+
+
+def test_runner_reports_the_legless_metrics():
+    from bench_myriapoda.harness.runner import run_case
+    res = run_case(resolve_case("worm", "massspring", "flat", duration=1.0))
+    assert res.status == "ok"
+    for name in ("curvature_amplitude", "body_wavelength_bl", "heading_drift_deg_per_cycle", "roll_max_deg",
+                 "segment_contact_fraction", "lift_max_m", "airborne_max_s", "posture_fault"):
+        assert name in res.metrics, name
+    assert res.metrics["posture_fault"] == 0.0 and res.metrics["segment_contact_fraction"] > 0.9
