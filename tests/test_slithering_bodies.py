@@ -12,7 +12,7 @@ mu_f = 0.64) and the runs stay short: half a period of ramp, one period of warm-
   sits in the links, and alternating box and link centres make the discrete curvature uneven).
 * Forward speed [BL/cycle] within 15 % of ``reference.slithering.steady_slithering`` for
   mu_t / mu_f = 1.5, 2, 3, 5, 10 and below 0.03 at ratio 1; the three bodies within 10 % of each
-  other.  Measured at this commit (BL/cycle; reference 0.085, 0.144, 0.241, 0.372, 0.517):
+  other.  Measured at this commit (BL/cycle; reference 0.094, 0.159, 0.257, 0.384, 0.522):
   massspring 0.114, 0.178, 0.273, 0.397, 0.539 (ratio 1: 0.018); fem 0.129, 0.203, 0.313, 0.467,
   0.644 (ratio 1: 0.005); hybrid -0.042, 0.003, 0.455, 0.621, 0.702 (ratio 1: -0.037).  Measured
   curvature at ratio 3: all three within 10 % of 7 (massspring 6.89, fem 7.11, hybrid boxes pass).
@@ -51,7 +51,7 @@ SETTINGS = ("creature.segments=20", "creature.mass_kg=0.4", "gait.wavelength_bl=
 DURATION_S = 12.0  # 3 periods: ramp within the first, warm-up, two measured
 
 # Measured at this commit beyond the tolerances (body, ratio) -> speed [BL/cycle]
-SPEED_KNOWN_OFF = {("massspring", 1.5): 0.114, ("massspring", 2.0): 0.178,
+SPEED_KNOWN_OFF = {("massspring", 1.5): 0.114,
                    ("fem", 1.5): 0.129, ("fem", 2.0): 0.203, ("fem", 3.0): 0.313, ("fem", 5.0): 0.467,
                    ("fem", 10.0): 0.644, ("hybrid", 1.5): -0.042, ("hybrid", 2.0): 0.003,
                    ("hybrid", 3.0): 0.455, ("hybrid", 5.0): 0.621, ("hybrid", 10.0): 0.702}
