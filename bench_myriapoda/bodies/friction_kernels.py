@@ -5,7 +5,10 @@ level (an impulse per unit mass), after the other forces of the step:
 
 * ``MILLER`` (Miller 1988 Sec. 4, read as in PAPER-NOTES.md): with s the
   unit spine vector pointing toward the head, if s.v < 0 then v -= s (s.v).
-  Backward sliding is removed, forward and sideways sliding are free.
+  Backward sliding is removed; the forward and sideways sliding left is
+  resisted by Coulomb friction of coefficient ``MU_SLIDE`` (the impulse
+  mu J_n opposes the remaining tangential velocity, down to rest; 0: free).
+  J_n grows with dt, so the braking per unit time does not depend on dt.
 * ``COULOMB``: anisotropic Coulomb friction after Hu et al. (PNAS 2009): the
   friction impulse opposes each tangential component u_a of the unit sliding
   direction with mu_a * J_n * |u_a|, where a is forward / backward (along the
@@ -30,7 +33,7 @@ MILLER, COULOMB, STICK = 0, 1, 2
 FRICTION_MODELS = {"miller": MILLER, "coulomb": COULOMB, "stick": STICK}
 
 # friction parameter vector layout
-CONTACT_DISTANCE, MU_F, MU_B, MU_T, MUS_F, MUS_B, MUS_T = range(7)
+CONTACT_DISTANCE, MU_F, MU_B, MU_T, MUS_F, MUS_B, MUS_T, MU_SLIDE = range(8)
 N_FRICTION_PARAMS = 8
 
 
@@ -42,6 +45,7 @@ def friction_params(cfg) -> tuple[int, np.ndarray]:
     p[MUS_F] = cfg.mu_forward if cfg.mu_static_forward < 0 else cfg.mu_static_forward
     p[MUS_B] = cfg.mu_backward if cfg.mu_static_backward < 0 else cfg.mu_static_backward
     p[MUS_T] = cfg.mu_transverse if cfg.mu_static_transverse < 0 else cfg.mu_static_transverse
+    p[MU_SLIDE] = getattr(cfg, "miller_mu_slide", 0.0)
     return FRICTION_MODELS[cfg.model], p
 
 
@@ -55,7 +59,16 @@ def ground_friction(model, p, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn):
     if model == MILLER:
         sv = sx * vx + sy * vy + sz * vz
         if sv < 0.0:
-            return vx - sx * sv, vy - sy * sv, vz - sz * sv
+            vx, vy, vz = vx - sx * sv, vy - sy * sv, vz - sz * sv
+        mu = p[MU_SLIDE]
+        if mu > 0.0 and jn > 0.0:
+            vn = vx * nx + vy * ny + vz * nz
+            tx, ty, tz = vx - vn * nx, vy - vn * ny, vz - vn * nz
+            speed = math.sqrt(tx * tx + ty * ty + tz * tz)
+            if speed <= mu * jn:
+                return vn * nx, vn * ny, vn * nz
+            k = 1.0 - mu * jn / speed
+            return vn * nx + k * tx, vn * ny + k * ty, vn * nz + k * tz
         return vx, vy, vz
     vn = vx * nx + vy * ny + vz * nz
     tx, ty, tz = vx - vn * nx, vy - vn * ny, vz - vn * nz
@@ -103,7 +116,15 @@ def ground_friction_numpy(model, p, v, n, s, jn):
     v, n, s = (np.asarray(a, float) for a in (v, n, s))
     if model == MILLER:
         sv = s @ v
-        return v - s * sv if sv < 0 else v.copy()
+        v = v - s * sv if sv < 0 else v.copy()
+        mu = p[MU_SLIDE]
+        if mu > 0 and jn > 0:
+            vt = v - (v @ n) * n
+            speed = np.linalg.norm(vt)
+            if speed <= mu * jn:
+                return (v @ n) * n
+            return (v @ n) * n + vt * (1.0 - mu * jn / speed)
+        return v
     vn = v @ n
     vt = v - vn * n
     if jn <= 0:

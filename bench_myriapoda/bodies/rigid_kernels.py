@@ -65,6 +65,13 @@ STATUS_NONFINITE = 1
 STATUS_RUNAWAY = 2
 
 N_CORNERS = 8
+# Anisotropic box friction (``_solve_contacts``'s ``aniso``): [on, mu_forward, mu_backward,
+# mu_transverse] along the box's own x axis (forward, toward the head) and across it.  Off: the
+# isotropic ``mu``.  NO_ANISO is the all-zero vector of the plain rigid bodies.
+ANISO_ON, ANISO_MU_F, ANISO_MU_B, ANISO_MU_T = range(4)
+N_ANISO = 4
+NO_ANISO = np.zeros(N_ANISO)
+_MU_FLOOR = 1e-9  # a zero coefficient in the scaled disk problem: no friction along that axis
 
 # Below this rotation angle [rad] sin(a/2)/a is replaced by its Taylor series
 # 1/2 - a^2/48; the neglected a^4/3840 term is far below round-off there.
@@ -431,7 +438,7 @@ def _coulomb_friction_impulse(a, b, d, ia, ib, id_, u1, u2, limit):
 @njit(cache=True)
 def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
                     bounce_threshold, n_iterations, tolerance, impulse_cache, corner_of,
-                    lin, ang, resp, kn, kt, target, lam):
+                    lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
     """Velocity-level contact of body i's 8 corners with the terrain; updates v[i], w[i].
 
     Contacts are the corners with phi < 0.  Each gets a normal impulse lam_n >= 0
@@ -445,6 +452,13 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
     velocity u the contact would have without its own friction impulse: static
     when the impulse that stops the slip is inside the disk, kinetic (on the
     rim, opposing the resulting slip) otherwise.
+
+    Anisotropic friction (``aniso[ANISO_ON]`` set: a body segment with scales, Hu et al. 2009):
+    the tangent basis is the box's x axis (forward) projected on the surface and its normal
+    cross product, and the friction set is the ellipse |l_1 / mu_1|^2 + |l_2 / mu_2|^2 <=
+    lam_n^2 with mu_1 = mu_f or mu_b by the sign of the forward slip and mu_2 = mu_t.  With
+    l = M l', M = diag(mu_1, mu_2), the maximum-dissipation problem becomes the disk problem of
+    ``_coulomb_friction_impulse`` for K' = M K M and u' = M u, solved as for isotropic friction.
 
     Projected Gauss-Seidel over the contacts on accumulated impulses
     (sequential impulses; Catto 2005), warm-started with the impulses the same
@@ -464,6 +478,7 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
     inverse; lam (8, 3) accumulated impulses.  Returns the contact count.
     """
     inv_m = 1.0 / mass[i]
+    aniso_on = aniso[ANISO_ON] != 0.0
     hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
     vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
     wx, wy, wz = w[i, 0], w[i, 1], w[i, 2]
@@ -478,6 +493,15 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
             continue
         nx, ny, nz = surface_normal(kind, f, px, py, pz)
         t1x, t1y, t1z, t2x, t2y, t2z = _tangent_basis(nx, ny, nz)
+        if aniso_on:
+            # the box's forward axis (first column of R) on the tangent plane
+            ex, ey, ez = R[0, 0], R[1, 0], R[2, 0]
+            dn = ex * nx + ey * ny + ez * nz
+            ex, ey, ez = ex - dn * nx, ey - dn * ny, ez - dn * nz
+            el = math.sqrt(ex * ex + ey * ey + ez * ez)
+            if el > 1e-9:
+                t1x, t1y, t1z = ex / el, ey / el, ez / el
+                t2x, t2y, t2z = _cross(nx, ny, nz, t1x, t1y, t1z)
         lin[nc, 0, 0], lin[nc, 0, 1], lin[nc, 0, 2] = nx, ny, nz
         lin[nc, 1, 0], lin[nc, 1, 1], lin[nc, 1, 2] = t1x, t1y, t1z
         lin[nc, 2, 0], lin[nc, 2, 1], lin[nc, 2, 2] = t2x, t2y, t2z
@@ -533,8 +557,16 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
                   + ang[j, 2, 0] * wx + ang[j, 2, 1] * wy + ang[j, 2, 2] * wz)
             u1 = v1 - (kt[j, 0] * lam[j, 1] + kt[j, 1] * lam[j, 2])
             u2 = v2 - (kt[j, 1] * lam[j, 1] + kt[j, 2] * lam[j, 2])
-            l1, l2 = _coulomb_friction_impulse(kt[j, 0], kt[j, 1], kt[j, 2], kt[j, 3],
-                                               kt[j, 4], kt[j, 5], u1, u2, mu * lam[j, 0])
+            if aniso_on:
+                m1 = max(aniso[ANISO_MU_F] if u1 > 0.0 else aniso[ANISO_MU_B], _MU_FLOOR)
+                m2 = max(aniso[ANISO_MU_T], _MU_FLOOR)
+                s1, s2 = _coulomb_friction_impulse(m1 * m1 * kt[j, 0], m1 * m2 * kt[j, 1], m2 * m2 * kt[j, 2],
+                                                   kt[j, 3] / (m1 * m1), kt[j, 4] / (m1 * m2),
+                                                   kt[j, 5] / (m2 * m2), m1 * u1, m2 * u2, lam[j, 0])
+                l1, l2 = m1 * s1, m2 * s2
+            else:
+                l1, l2 = _coulomb_friction_impulse(kt[j, 0], kt[j, 1], kt[j, 2], kt[j, 3],
+                                                   kt[j, 4], kt[j, 5], u1, u2, mu * lam[j, 0])
             p1 = l1 - lam[j, 1]
             p2 = l2 - lam[j, 2]
             lam[j, 1] = l1
@@ -610,8 +642,9 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
 def _step_body(i, c, q, v, w, mass, inertia_body, half_extents, force, torque,
                impulse_cache, dt, gravity, kind, f, mu, restitution, bounce_threshold,
                n_velocity_iterations, velocity_tolerance, n_position_iterations, beta,
-               slop, R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam):
-    """Advance dynamic body i by one step dt (kick, contact, drift, projection)."""
+               slop, R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
+    """Advance dynamic body i by one step dt (kick, contact, drift, projection); ``aniso``: see
+    ``_solve_contacts``."""
     m = mass[i]
     i0, i1, i2 = inertia_body[i, 0], inertia_body[i, 1], inertia_body[i, 2]
     _rotation_matrix(q[i, 0], q[i, 1], q[i, 2], q[i, 3], R)
@@ -628,7 +661,7 @@ def _step_body(i, c, q, v, w, mass, inertia_body, half_extents, force, torque,
 
     _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
                     bounce_threshold, n_velocity_iterations, velocity_tolerance,
-                    impulse_cache, corner_of, lin, ang, resp, kn, kt, target, lam)
+                    impulse_cache, corner_of, lin, ang, resp, kn, kt, target, lam, aniso)
 
     # Drift: position with the new velocity; orientation by the torque-free flow
     # at the post-contact angular momentum L = R I_body R^T w.

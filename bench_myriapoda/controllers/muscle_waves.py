@@ -26,6 +26,7 @@ kernel reads row k at step k, knowing nothing of gait names or wave tables.
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 from numba import njit
@@ -49,8 +50,18 @@ GAIT_DESCRIPTIONS = {
 }
 
 
-def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) -> np.ndarray:
-    """The (3, 5) wave table [amplitude, wavenumber rad/m, omega rad/s, phase rad, profile] of a gait."""
+CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
+
+
+def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False,
+               strain_per_curvature: float | None = None) -> np.ndarray:
+    """The (3, 5) wave table [amplitude, wavenumber rad/m, omega rad/s, phase rad, profile] of a gait.
+
+    A bending gait with ``gait.curvature_amplitude`` > 0 commands its shape: the LATERAL amplitude
+    is curvature_amplitude x ``strain_per_curvature`` (the body's own gain, strain per unit of
+    curvature x body length, measured by the body and passed in ``body_info``); without the gain
+    the raw strain ``amplitude`` is used (a table built before the body is known).
+    """
     table = np.zeros((N_CHANNELS, 5))
     if passive or gait.name == "passive":
         return table
@@ -62,7 +73,10 @@ def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False) ->
     main = {"rectilinear": AXIAL, "lateral-undulation": LATERAL, "sidewinding": LATERAL, "arching": DORSAL}.get(gait.name)
     if main is None:  # a gait without muscles (legs, or none at all)
         return table
-    table[main] = (gait.amplitude, k, omega, phase, profile)
+    amplitude = gait.amplitude
+    if gait.name in CURVATURE_GAITS and gait.curvature_amplitude > 0.0 and strain_per_curvature is not None:
+        amplitude = gait.curvature_amplitude * strain_per_curvature
+    table[main] = (amplitude, k, omega, phase, profile)
     if gait.name == "sidewinding":
         table[DORSAL] = (gait.vertical_amplitude, k, omega, phase + math.radians(gait.vertical_phase_deg), PROFILE_SINE)
     if gait.name == "arching":
@@ -134,6 +148,17 @@ class MuscleWaveController:
 
     def reset(self, case, body_info, rng=None) -> None:
         self.s_seg = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
+        gait = case.gait
+        if gait.name in CURVATURE_GAITS and gait.curvature_amplitude > 0.0:
+            gain = body_info.get("strain_per_curvature")
+            if gain is None:
+                # a reset outside the runner (a bare core.protocols.body_info): the raw strain amplitude
+                warnings.warn("gait.curvature_amplitude without the body's strain_per_curvature in body_info "
+                              "(harness.calibration.calibrated_body_info): using the raw strain amplitude",
+                              stacklevel=2)
+                return
+            self.waves = wave_table(gait, case.creature.body_length_m, passive=case.scenario.passive,
+                                    strain_per_curvature=float(gain))
 
     def fill(self, t0: float, dt: float, n_steps: int, act: Actuation) -> None:
         act.ensure_rows(n_steps)

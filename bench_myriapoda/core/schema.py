@@ -99,11 +99,16 @@ class GaitConfig:
     The wave on a channel is ``amplitude * sin(d * 2 pi s / wavelength - 2 pi f t + phase)``
     with s the rest arc length of a segment centre from the head and d = +1
     for a wave travelling head to tail, -1 tail to head.  Amplitudes are
-    strains of the muscle fibres (dimensionless).
+    strains of the muscle fibres (dimensionless), unless ``curvature_amplitude`` commands the shape
+    of a bending wave instead (the same body shape on every body model).
     """
 
     name: str = rng("", doc="gait (controller) name")
     amplitude: float = rng(0.2, ge=0.0, lt=0.95, doc="main channel strain amplitude")
+    curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
+                                     doc="lateral undulation, sidewinding: commanded peak curvature x body length "
+                                         "[-]; each body turns it into its own strain (bodies/curvature_calibration.py); "
+                                         "0: use the raw strain 'amplitude'")
     wavelength_bl: float = rng(0.5, gt=0.0, doc="wavelength in body lengths (undeformed)")
     frequency_hz: float = rng(1.0, gt=0.0, doc="wave frequency [Hz]")
     phase_deg: float = rng(0.0, doc="phase offset of the main wave [deg]")
@@ -200,7 +205,9 @@ class FrictionConfig:
 
     * ``miller``  -- Miller's rule (Sec. 4): within ``contact_distance_m`` of the
       ground, the backward component of a mass's velocity along the local spine
-      vector is removed.  No coefficients.
+      vector is removed.  Forward and sideways sliding are resisted only by Coulomb friction
+      of coefficient ``miller_mu_slide`` (0: free, Miller's rule alone): a physical coefficient
+      whose effect does not depend on the time step, unlike a per-step ``collision.r_t``.
     * ``coulomb`` -- anisotropic Coulomb friction with forward, backward and
       transverse coefficients, static and kinetic (after Hu et al., PNAS 2009).
       A static coefficient of -1 means "same as kinetic".
@@ -225,6 +232,8 @@ class FrictionConfig:
     mu_static_backward: float = rng(-1.0, ge=-1.0, doc="coulomb: static coefficient tail-first; -1: same as mu_backward")
     mu_static_transverse: float = rng(-1.0, ge=-1.0,
                                       doc="coulomb: static coefficient sideways; -1: same as mu_transverse")
+    miller_mu_slide: float = rng(0.0, ge=0.0, doc="miller model: Coulomb coefficient against the sliding Miller's "
+                                                  "rule leaves free (forward and sideways); 0 = free")
     froude: float = rng(0.0, ge=0.0, doc="Froude number L / (T^2 g mu_f); > 0 sets mu_f from it, keeping the "
                                           "other coefficients' ratios to mu_f (0: coefficients as given)")
 

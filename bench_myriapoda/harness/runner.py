@@ -25,11 +25,12 @@ import numpy as np
 
 from ..core import registry
 from ..core.config import Case
-from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, body_info, controller_settings
+from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, controller_settings
 from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
 from ..world.water_coupling import WaterCoupling, has_water
+from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
 from .recorder import Recorder, Series
 
@@ -91,7 +92,7 @@ def compose(case: Case, controller=None):
     if missing:
         raise UnsupportedCombination(f"body {case.body.name!r} cannot honour this controller: it lacks "
                                      f"{', '.join(sorted(missing))}")
-    controller.reset(case, body_info(body, case.dt), np.random.default_rng(case.seed))
+    controller.reset(case, calibrated_body_info(body, case), np.random.default_rng(case.seed))
     return body, controller
 
 

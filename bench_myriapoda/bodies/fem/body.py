@@ -55,6 +55,9 @@ class FEMConfig:
     resolution_unit: str = rng("nodes", choices=("nodes", "cells"),
                                doc="the paper's '3 x 3 x 3 resolution' read as nodes (default) or cells")
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tetrahedra per hexahedral cell")
+    mirror_split: bool = rng(True, doc="6 tets per cell: mirror the Kuhn split across the sagittal plane z = 0 so "
+                                       "the body bends alike to the left and right (false: the plain Kuhn split, "
+                                       "whose straight gait circles by about 6 degrees per cycle)")
     dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
     mesh: str = rng("grid", doc="'grid' (structured boxes), 'capsule' (a smooth procedural body), "
                                 "or a path to a closed surface trimesh loads (tetrahedralized with fTetWild)")
@@ -145,7 +148,7 @@ class BodyFEM(NodeSegments):
         n_seg, L, w, h = cre.segments, cre.segment_length_m, cre.width_m, cre.height_m
         if cfg.mesh == "grid":
             nodes, tets, tet_seg = chain_grid(n_seg, L, (h, w), cfg.resolution, cfg.resolution_unit,
-                                              cfg.tets_per_cell)
+                                              cfg.tets_per_cell, mirror=cfg.mirror_split)
             nodes[:, 0] -= n_seg * L  # head face at x = 0, body along -x (as the lattice)
         else:
             nodes, tets, tet_seg = surface_body_mesh(cfg, n_seg, L, w, h)

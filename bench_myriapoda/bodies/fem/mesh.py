@@ -23,6 +23,11 @@ _KUHN6 = np.array(
     [[0, 1 << a, (1 << a) | (1 << b), 7] for a, b, _ in itertools.permutations(range(3))],
     dtype=np.int64,
 )
+# Its mirror image across the cell's mid z plane (local corner c -> c ^ 4): used for the cells on
+# the left (z < mirror plane) so that a mesh is mirror-symmetric about its sagittal plane.  The
+# two splits conform across the mirror plane: both cut the shared z face along its (0,0)-(1,1)
+# diagonal in x-y.
+_KUHN6_MIRROR = _KUHN6 ^ 4
 # 5-tet split: a central tet on four alternate corners plus four corner tets.  Cells
 # alternate between the two corner sets by the parity of (i + j + k), so that the
 # face diagonals of neighbouring cells coincide.
@@ -60,12 +65,15 @@ def orient_tets(nodes, tets):
     return tets
 
 
-def box_grid(size, cells, origin=(0.0, 0.0, 0.0), tets_per_cell=6):
+def box_grid(size, cells, origin=(0.0, 0.0, 0.0), tets_per_cell=6, mirror_z=None):
     """Structured tet mesh of the box [origin, origin + size].
 
     size: (Lx, Ly, Lz) [m]; cells: (nx, ny, nz) cell counts; tets_per_cell: 6
     (Kuhn split) or 5 (alternating parity).  Node (i, j, k) has index
     i * (ny+1) * (nz+1) + j * (nz+1) + k.
+    mirror_z [m] (6 tets per cell only): cells whose centre lies at z < mirror_z take the mirror
+    image of the Kuhn split, so a box centred on that plane with an even nz is mirror-symmetric
+    about it (the plain Kuhn split is not: a bending body would bend more easily to one side).
     Returns nodes (n, 3) float64 [m], tets (m, 4) int64, positively oriented.
     """
     nx, ny, nz = (int(c) for c in cells)
@@ -85,7 +93,11 @@ def box_grid(size, cells, origin=(0.0, 0.0, 0.0), tets_per_cell=6):
     corner = ((ci[:, None] + _CORNERS[None, :, 0]) * (ny + 1) * (nz + 1)
               + (cj[:, None] + _CORNERS[None, :, 1]) * (nz + 1)
               + (ck[:, None] + _CORNERS[None, :, 2]))
-    if tets_per_cell == 6:
+    if tets_per_cell == 6 and mirror_z is not None:
+        left = (gz[ck] + 0.5 * (gz[1] - gz[0]) < mirror_z)
+        local = np.where(left[:, None, None], _KUHN6_MIRROR[None], _KUHN6[None])
+        tets = np.take_along_axis(corner, local.reshape(len(ci), 6 * 4), axis=1).reshape(-1, 4)
+    elif tets_per_cell == 6:
         tets = corner[:, _KUHN6].reshape(-1, 4)
     else:
         odd = ((ci + cj + ck) % 2).astype(bool)
@@ -112,7 +124,7 @@ def segment_cells(resolution, resolution_unit="nodes"):
 
 
 def chain_grid(n_segments, segment_length, cross_section=(1.0, 1.0), resolution=3,
-               resolution_unit="nodes", tets_per_cell=6, shared_faces=True):
+               resolution_unit="nodes", tets_per_cell=6, shared_faces=True, mirror=False):
     """A chain of box segments along x: segment 0 (the head) at the front (largest x).
 
     n_segments: number of segments; segment_length [m] along x; cross_section:
@@ -121,7 +133,8 @@ def chain_grid(n_segments, segment_length, cross_section=(1.0, 1.0), resolution=
     y in [0, height], z in [-width/2, width/2].  With ``shared_faces=True`` the
     segments form one connected mesh (neighbours share their end-face nodes);
     with False every segment has its own nodes (as between the rigid segments of
-    the hybrid body).
+    the hybrid body).  ``mirror``: mirror-symmetric split about the sagittal plane z = 0
+    (``box_grid``'s mirror_z; exact for an even cell count across the width).
     Returns nodes (n, 3) [m], tets (m, 4) int64, tet_segment (m,) int64.
     """
     if n_segments < 1:
@@ -132,7 +145,7 @@ def chain_grid(n_segments, segment_length, cross_section=(1.0, 1.0), resolution=
     total = n_segments * L
     if shared_faces:
         nodes, tets = box_grid((total, h, w), (n_segments * cx, cy, cz), origin=(0.0, 0.0, -0.5 * w),
-                               tets_per_cell=tets_per_cell)
+                               tets_per_cell=tets_per_cell, mirror_z=0.0 if mirror else None)
         cell_x = nodes[tets].mean(axis=1)[:, 0]
         tet_segment = np.clip(((total - cell_x) // L).astype(np.int64), 0, n_segments - 1)
         return nodes, tets, tet_segment
@@ -140,7 +153,7 @@ def chain_grid(n_segments, segment_length, cross_section=(1.0, 1.0), resolution=
     offset = 0
     for s in range(n_segments):
         nd, tt = box_grid((L, h, w), (cx, cy, cz), origin=(total - (s + 1) * L, 0.0, -0.5 * w),
-                          tets_per_cell=tets_per_cell)
+                          tets_per_cell=tets_per_cell, mirror_z=0.0 if mirror else None)
         all_nodes.append(nd)
         all_tets.append(tt + offset)
         all_seg.append(np.full(len(tt), s, dtype=np.int64))

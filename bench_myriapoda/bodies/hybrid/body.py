@@ -28,13 +28,14 @@ Defaults and why
 * Resolution: 3 nodes per edge ("3 x 3 x 3", Sec. 6, read as nodes as in
   ``fem.mesh.segment_cells``; ``resolution_unit = "cells"`` gives the other
   reading), 6 tets per cell (Kuhn split): 48 tets per link.
-* Rigid contact: isotropic Coulomb friction (``rigid_kernels``) with the
-  scenario's *transverse* kinetic coefficient ``friction.mu_transverse``: a box
-  has no spine-relative direction of its own to pick the forward or backward
-  coefficient, and the transverse one is the coefficient of the anisotropic
-  model that does not depend on the sliding direction along the body.  For the
-  "miller" and "stick" node rules, which have no coefficient, the boxes use the
-  same number.  ``rigid_friction_mu`` overrides it.  Restitution 0 (Miller's
+* Rigid contact: the belly scales act on the boxes as on the nodes (``box_friction``): a box's
+  x axis is its forward direction, so "coulomb" gives it the anisotropic forward, backward and
+  transverse coefficients and "miller" stops its backward sliding (forward and sideways
+  ``miller_mu_slide``).  With isotropic friction of ``mu_transverse`` on the boxes, which carry
+  most of the mass, a hybrid snake slithered at half the lattice's speed at the same body shape
+  and the hybrid worm fell 35 % short of eps * Lambda (issue 11).  The "stick" rule, or an
+  explicit ``rigid_friction_mu``, keeps isotropic Coulomb friction of that coefficient
+  (``friction.mu_transverse`` by default).  Restitution 0 (Miller's
   inelastic r_n = 0 default).
 * FEM nodes touch the ground through the suite's shared point-mass contact
   (``contact_kernels``: the scenario's friction model, then Miller's path
@@ -119,6 +120,8 @@ class HybridConfig:
     resolution: int = rng(3, ge=2, le=64, doc="mesh resolution of a link per edge, in resolution_unit")
     resolution_unit: str = rng("nodes", choices=RESOLUTION_UNITS, doc="'nodes': 3 = 3x3x3 nodes (2x2x2 cells); 'cells'")
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tets per hexahedral cell: 6 (Kuhn) or 5")
+    mirror_split: bool = rng(True, doc="6 tets per cell: mirror the Kuhn split across the sagittal plane so the links "
+                                       "bend alike to the left and to the right (false: the plain Kuhn split)")
     rigid_restitution: float = rng(0.0, ge=0.0, le=1.0, doc="restitution of box-terrain impacts")
     rigid_friction_mu: float = rng(DERIVED, ge=0.0, doc="Coulomb coefficient of the boxes; default friction.mu_transverse")
     dt_s: float = rng(DT_PAPER, gt=0.0, doc="default time step [s] (paper: 1/3000)")
@@ -172,7 +175,28 @@ class HybridMesh:
     rigid_centres: np.ndarray
 
 
-def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
+MILLER_BACKWARD_MU = 1.0e3  # Miller's rule on a box: backward sliding all but impossible
+
+
+def box_friction(friction, rigid_friction_mu: float, scaled: bool = True) -> np.ndarray:
+    """The boxes' anisotropic friction (``rigid_kernels`` aniso layout: on, mu_f, mu_b, mu_t) for the
+    scenario's friction model: a box has a forward axis (its x axis, toward the head) as the
+    nodes' spine, so the belly scales act on it as on the nodes.  ``coulomb``: its three kinetic
+    coefficients; ``miller``: backward sliding stopped (coefficient ``MILLER_BACKWARD_MU``),
+    forward and sideways ``miller_mu_slide``.  Off (isotropic ``rigid_friction_mu``) for ``stick``
+    or when ``rigid_friction_mu`` is given explicitly, and for a body without belly scales
+    (``scaled`` False: a creature with legs, or the passive Fig. 4 chain: plain boxes)."""
+    out = np.zeros(rk.N_ANISO)
+    if not scaled or rigid_friction_mu != DERIVED or friction.model == "stick":
+        return out
+    if friction.model == "coulomb":
+        out[:] = (1.0, friction.mu_forward, friction.mu_backward, friction.mu_transverse)
+    else:  # miller
+        out[:] = (1.0, friction.miller_mu_slide, MILLER_BACKWARD_MU, friction.miller_mu_slide)
+    return out
+
+
+def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6, mirror: bool = False) -> HybridMesh:
     """Links between consecutive boxes: link k spans x in [-(k+1) P, -k P - L_rigid] (P the pitch)."""
     nx, ny, nz = lay.cells
     per_layer = (ny + 1) * (nz + 1)
@@ -182,7 +206,8 @@ def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6) -> HybridMesh:
     for k in range(lay.n_rigid - 1):
         x0 = -(k + 1) * P
         nd, tt = box_grid((lay.link_length, lay.link_height, lay.link_width), (nx, ny, nz),
-                          origin=(x0, -0.5 * lay.link_height, -0.5 * lay.link_width), tets_per_cell=tets_per_cell)
+                          origin=(x0, -0.5 * lay.link_height, -0.5 * lay.link_width), tets_per_cell=tets_per_cell,
+                          mirror_z=0.0 if mirror else None)
         layer = np.arange(len(nd)) // per_layer  # node (i, j, k) has index i * per_layer + ...
         back, front = layer == 0, layer == nx
         body = np.full(len(nd), -1, dtype=np.int64)
@@ -220,7 +245,7 @@ class BodyHybrid(SupportedSegments):
         # links take muscle strains; the boxes can be carried by legs (when the creature has them)
         self.capabilities = frozenset({MUSCLES, SEGMENTS} | ({LEGS} if cre.legs_per_segment else set()))
         self.layout = lay = hybrid_layout(cfg, cre)
-        mesh = build_mesh(lay, cfg.tets_per_cell)
+        mesh = build_mesh(lay, cfg.tets_per_cell, cfg.mirror_split)
         self.mesh = mesh
         self.dt = float(case.dt)
         self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
@@ -294,6 +319,9 @@ class BodyHybrid(SupportedSegments):
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
+        phys[K.RIGID_ANISO:K.RIGID_ANISO + rk.N_ANISO] = box_friction(
+            case.friction, cfg.rigid_friction_mu,
+            scaled=not case.creature.legs_per_segment and case.gait.name != "passive")
         self.phys = phys
         n_nodes, n_fixed, n_rigid = fem.n_nodes, len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))

@@ -66,7 +66,9 @@ from ..fem.body_kernels import active_coefficients
 (DT, R_N, R_T, MAX_SPEED, MAX_PEN, RIGID_MU, RIGID_RESTITUTION, BOUNCE_THRESHOLD,
  VEL_ITERATIONS, VEL_TOLERANCE, POS_ITERATIONS, POS_BETA, SLOP,
  MUSCLES_ON, MUSCLE_GAIN, VOLUME) = range(16)
-N_PHYS = 16
+# the boxes' anisotropic friction, rigid_kernels' ``aniso`` layout (on, mu_f, mu_b, mu_t)
+RIGID_ANISO = 16
+N_PHYS = 16 + rk.N_ANISO
 
 # Status codes and the shared statistics (contact fraction sum, steps, deepest
 # penetration) as every body's kernel; the hybrid's own statistics follow them.
@@ -170,7 +172,7 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
         rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
                       impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
                       n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
-                      kn, kt, target, lam)
+                      kn, kt, target, lam, phys[RIGID_ANISO:RIGID_ANISO + rk.N_ANISO])
 
     # (3) attached nodes follow the rigid bodies
     place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)

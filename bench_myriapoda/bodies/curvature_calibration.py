@@ -1,0 +1,155 @@
+"""Each body's own map from a commanded body curvature to its muscle strain, measured and cached.
+
+A gait that commands a shape (``gait.curvature_amplitude``: peak curvature x body length,
+dimensionless) must produce the same shape on every body model.  The same LATERAL fibre strain
+does not: the lattice's fibres sit at the corners of the cross-section (curvature = 2 strain /
+width), the FEM body samples the strain at tet centroids inside the section, the hybrid body
+bends only in its links.  So each body measures its own gain here:
+
+1. the body is built weightless (gravity 0) with no ground (``terrain = "none"``), so nothing
+   but its own elasticity shapes it;
+2. every muscle segment gets the same LATERAL strain ``CAL_STRAIN``, ramped in over
+   ``CAL_RAMP_S`` and then held;
+3. once the segment centres stop moving, a circle fitted to them (interior segments, seen from
+   above) gives the curvature kappa [1/m] the strain produces (a body still swinging after
+   ``CAL_MAX_S`` gives the mean over the second half of the run: it swings about its equilibrium);
+4. the gain is ``CAL_STRAIN / (kappa * L)`` [strain per unit of curvature x body length], L the
+   creature's body length: a controller multiplies a commanded ``curvature_amplitude`` by it.
+
+The result is cached on disk (``calibration_cache_dir()``), keyed by everything that shapes it:
+the body's configuration, the creature's geometry and mass, the time step and the volume rule.
+This module runs a body through the ``core.protocols`` interface only; it does not know any
+controller (the runner passes the gain to the controller through ``body_info``).
+"""
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import math
+import os
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from ..core.protocols import LATERAL, Actuation, Observation
+
+CAL_FORMAT = "curvature-cal-v1"
+CAL_SEGMENTS = 10        # segments of the calibration body
+CAL_STRAIN = 0.03        # fibre strain of the calibration bend: linear range, bends a snake by < 2 pi
+CAL_RAMP_S = 0.3         # ramp the strain in over this time [s] (no jolt)
+CAL_MAX_S = 3.0          # give up waiting for rest after this time [s]
+CAL_CHUNK_S = 0.02       # strain held constant over chunks of this length [s]
+CAL_SETTLE_REL = 2e-3    # rest: curvature changes by less than this fraction over one check interval
+CAL_CHECK_S = 0.05       # check interval [s]
+CAL_STEADY_CHECKS = 3    # consecutive steady checks that make rest
+
+
+def calibration_cache_dir() -> Path:
+    """$BENCH_MYRIAPODA_CACHE/calibration, or ~/.cache/bench-myriapoda/calibration."""
+    env = os.environ.get("BENCH_MYRIAPODA_CACHE")
+    return (Path(env) if env else Path.home() / ".cache" / "bench-myriapoda") / "calibration"
+
+
+def circle_curvature(points_xz: np.ndarray) -> float:
+    """Curvature [1/m] of the least-squares circle through (n, 2) points (Kasa fit); 0 for a line."""
+    p = np.asarray(points_xz, float)
+    A = np.column_stack([p[:, 0], p[:, 1], np.ones(len(p))])
+    b = -(p[:, 0] ** 2 + p[:, 1] ** 2)
+    sol, _, rank, _ = np.linalg.lstsq(A, b, rcond=None)
+    if rank < 3:  # collinear points: a straight line
+        return 0.0
+    D, E, F = sol
+    r2 = 0.25 * (D * D + E * E) - F
+    if not np.isfinite(r2) or r2 <= 0.0:
+        return 0.0
+    return 1.0 / math.sqrt(r2)
+
+
+def _calibration_case(case):
+    """The case of the calibration run: weightless, no ground, no perturbation, muscles only, and a
+    short body of ``CAL_SEGMENTS`` segments of the creature's own segment size and mass per segment.
+
+    The gain is local (strain per curvature of one segment); a long weightless body has slow,
+    lightly damped free-free bending modes (a 50-segment lattice snake still swings after 3 s),
+    a short one comes to rest in a fraction of a second."""
+    sc = dataclasses.replace(case.scenario, terrain="none", gravity_m_s2=0.0, suspended=False, passive=False,
+                             perturbation_m=0.0, start_height_m=0.0, slope_deg=0.0)
+    cre = case.creature
+    n = min(cre.segments, CAL_SEGMENTS)
+    cre = dataclasses.replace(cre, segments=n, mass_kg=cre.mass_kg * n / cre.segments)
+    return dataclasses.replace(case, scenario=sc, creature=cre)
+
+
+def calibration_key(case) -> str:
+    """sha256 over everything that changes the measured gain."""
+    cre = case.creature
+    data = {"format": CAL_FORMAT, "body": dataclasses.asdict(case.body),
+            "creature": {k: getattr(cre, k) for k in ("segments", "segment_length_m", "width_m", "height_m",
+                                                       "mass_kg")},
+            "dt": case.dt, "volume_conserving": bool(case.gait.volume_conserving),
+            "strain": CAL_STRAIN, "ramp": CAL_RAMP_S, "settle": CAL_SETTLE_REL}
+    return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
+
+
+def measure_lateral_gain(make_body: Callable[[Any], Any], case) -> dict[str, float]:
+    """Run the calibration bend (module docstring) on ``make_body(case')``; return
+    {"strain_per_curvature": gain [-], "curvature_m": kappa [1/m], "t_rest_s": time to rest [s]}."""
+    cal = _calibration_case(case)
+    body = make_body(cal)
+    body.compile()
+    dt = cal.dt
+    L = float(case.creature.body_length_m)  # the full creature's: the command is kappa x its length
+    n_chunk = max(1, int(round(CAL_CHUNK_S / dt)))
+    act = Actuation.for_body(body, rows=1)
+    act.muscles_on = True
+    obs = Observation()
+    n_seg = body.n_segments
+    inner = slice(2, n_seg - 2) if n_seg >= 8 else slice(0, n_seg)  # the ends bend less
+    t, kappa_prev, t_check, n_steady = 0.0, None, CAL_RAMP_S, 0
+    history = []
+    kappa = 0.0
+    while t < CAL_MAX_S:
+        ramp = min(1.0, (t + n_chunk * dt) / CAL_RAMP_S)
+        act.muscle[:, :, :] = 0.0
+        act.muscle[:, :, LATERAL] = CAL_STRAIN * ramp
+        k, code = body.advance(t, n_chunk, act)
+        t += k * dt
+        if code != 0:
+            raise RuntimeError(f"curvature calibration of body {case.body.name!r} blew up at t = {t:.3f} s: "
+                               f"{body.status_text(code)}")
+        if t + 1e-12 >= t_check:
+            body.sense(obs, t)
+            kappa = circle_curvature(obs.seg_pos[inner][:, [0, 2]])
+            steady = kappa_prev is not None and abs(kappa - kappa_prev) <= CAL_SETTLE_REL * max(kappa, 1e-12)
+            n_steady = n_steady + 1 if steady else 0
+            if n_steady >= CAL_STEADY_CHECKS:  # several in a row: not a turning point of an oscillation
+                break
+            kappa_prev = kappa
+            history.append((t, kappa))
+            t_check += CAL_CHECK_S
+    else:
+        # no rest within CAL_MAX_S (a lightly damped body still swings about its equilibrium):
+        # the mean over the second half of the run
+        kappa = float(np.mean([k for tt, k in history if tt >= 0.5 * (CAL_RAMP_S + CAL_MAX_S)]))
+    if kappa <= 0.0:
+        raise RuntimeError(f"curvature calibration of body {case.body.name!r}: the body did not bend")
+    return {"strain_per_curvature": CAL_STRAIN / (kappa * L), "curvature_m": kappa, "t_rest_s": t}
+
+
+def lateral_gain(make_body: Callable[[Any], Any], case, cache: bool = True) -> float:
+    """Strain per unit of (curvature x body length) of ``case``'s body, measured once and cached."""
+    path = calibration_cache_dir() / f"{calibration_key(case)}.json"
+    if cache and path.exists():
+        try:
+            return float(json.loads(path.read_text())["strain_per_curvature"])
+        except (OSError, ValueError, KeyError):
+            pass  # a damaged entry is measured again
+    res = measure_lateral_gain(make_body, case)
+    if cache:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
+        tmp.write_text(json.dumps({**res, "body": case.body.name}))
+        os.replace(tmp, path)  # atomic: a concurrent reader never sees half a file
+    return float(res["strain_per_curvature"])

@@ -1,0 +1,30 @@
+"""What a controller learns of its body beyond ``core.protocols.body_info``: the body's measured gains.
+
+A gait that commands a body shape (``gait.curvature_amplitude``) needs the body's strain per unit
+of curvature x body length.  The body measures it itself (``bodies.curvature_calibration``, cached
+on disk); this module, which may know both bodies and gaits, decides when a controller needs it
+and builds the calibration body through the catalog's factory.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from ..bodies.curvature_calibration import lateral_gain
+from ..core import registry
+from ..core.protocols import MUSCLES, body_info
+
+CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
+
+
+def needs_curvature_gain(case) -> bool:
+    """True when ``case``'s gait commands a curvature (and so needs the body's gain)."""
+    return case.gait.name in CURVATURE_GAITS and case.gait.curvature_amplitude > 0.0
+
+
+def calibrated_body_info(body, case) -> dict[str, Any]:
+    """``body_info`` plus ``strain_per_curvature`` [-] when the gait commands a curvature."""
+    info = body_info(body, case.dt)
+    if needs_curvature_gain(case) and MUSCLES in body.capabilities:
+        registry.load_all()
+        info["strain_per_curvature"] = lateral_gain(registry.BODIES[case.body.name].factory, case)
+    return info
