@@ -23,6 +23,7 @@ mu_f = 0.64) and the runs stay short: half a period of ramp, one period of warm-
 from __future__ import annotations
 
 import functools
+import os
 import math
 
 import numpy as np
@@ -35,6 +36,9 @@ from bench_myriapoda.metrics.locomotion import measurement_window
 from bench_myriapoda.reference.slithering import steady_slithering
 
 pytestmark = pytest.mark.slow
+# Known failures (xfail) only run with BENCH_LONG_TESTS=1: each is a minute-long simulation whose figure the
+# module doc states, and CI's 30-minute budget cannot hold them.
+RUN_KNOWN_FAILURES = os.environ.get("BENCH_LONG_TESTS", "") == "1"
 
 BODIES = ("massspring", "fem", "hybrid")
 RATIOS = (1.5, 2.0, 3.0, 5.0, 10.0)
@@ -56,7 +60,7 @@ SPEED_KNOWN_OFF = {("massspring", 1.5): 0.114,
                    ("fem", 10.0): 0.644, ("hybrid", 1.5): -0.042, ("hybrid", 2.0): 0.003,
                    ("hybrid", 3.0): 0.455, ("hybrid", 5.0): 0.621, ("hybrid", 10.0): 0.702}
 HYBRID_OFF = pytest.mark.xfail(reason="hybrid at ratio 1: -0.037 BL/cycle (dt-dependent contact, see module doc)",
-                               strict=False)
+                               strict=False, run=RUN_KNOWN_FAILURES)
 
 
 @functools.lru_cache(maxsize=None)
@@ -98,7 +102,8 @@ def _speed_cases():
             marks = ()
             if (body, ratio) in SPEED_KNOWN_OFF:
                 marks = pytest.mark.xfail(reason=f"measured {SPEED_KNOWN_OFF[(body, ratio)]} BL/cycle, beyond "
-                                                 f"{SPEED_REL_TOL:.0%} of the reference", strict=False)
+                                                 f"{SPEED_REL_TOL:.0%} of the reference", strict=False,
+                                          run=RUN_KNOWN_FAILURES)
             yield pytest.param(body, ratio, marks=marks, id=f"{body}-{ratio:g}")
 
 
@@ -110,7 +115,7 @@ def test_speed_matches_the_kinematic_reference(body, ratio):
 
 
 @pytest.mark.xfail(reason="fem 15 to 25 % faster than massspring at the same shape, hybrid erratic (module doc)",
-                   strict=False)
+                   strict=False, run=RUN_KNOWN_FAILURES)
 @pytest.mark.parametrize("ratio", (3.0, 5.0))
 def test_the_three_bodies_agree(ratio):
     speeds = [slither(body, ratio)[1].metrics["speed_bl_per_cycle"] for body in BODIES]

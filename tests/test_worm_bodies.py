@@ -9,6 +9,8 @@ Measured at this commit (error vs eps * Lambda, both time steps alike to 0.1 %):
 """
 from __future__ import annotations
 
+import os
+
 import pytest
 
 from bench_myriapoda.core.config import resolve_case
@@ -34,7 +36,7 @@ def displacement(body, wavelength_bl, dt_factor):
 
 HYBRID_OFF = pytest.mark.xfail(reason="hybrid worm 27 % short of eps * Lambda: the short links glued to rigid faces "
                                       "do not reach the commanded axial strain (not done in issue 11's session)",
-                               strict=False)
+                               strict=False, run=os.environ.get("BENCH_LONG_TESTS", "") == "1")
 
 
 @pytest.mark.parametrize("body", ["massspring", "fem", pytest.param("hybrid", marks=HYBRID_OFF)])
