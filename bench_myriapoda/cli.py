@@ -557,6 +557,7 @@ def cmd_validate(args) -> int:
 
     from .harness.store import DEFAULT_STORE, record_validation_run
     from .validation import run as V
+    from .validation.core import clean
 
     pairs, bodies = V.select(args.check, args.body, args.quick)
     store = Path(args.store) if args.store else DEFAULT_STORE
@@ -577,8 +578,8 @@ def cmd_validate(args) -> int:
     wall = time.perf_counter() - t0
     dicts = [r.to_dict() for r in rows]
     counts = V.summary(rows)
-    doc = {"quick": bool(args.quick), "bodies": list(bodies), "wall_s": wall, "counts": counts, "rows": dicts,
-           "work_precision": wp}
+    doc = clean({"quick": bool(args.quick), "bodies": list(bodies), "wall_s": wall, "counts": counts,
+                 "rows": dicts, "work_precision": wp})
     run_id = None
     if not args.no_store:
         run_id = record_validation_run(store, dicts, args.quick, str(out_dir))
@@ -586,7 +587,7 @@ def cmd_validate(args) -> int:
     V.write_json(out_dir, doc)
     failed = counts.get("FAIL", 0) > 0
     if args.json:
-        print(json.dumps(doc))
+        print(json.dumps(doc, allow_nan=False))
     else:
         for line in V.format_table(rows):
             print(line)

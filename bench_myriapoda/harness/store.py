@@ -173,8 +173,8 @@ def record_validation_run(path: Path | str, rows: list[dict[str, Any]], quick: b
                 "INSERT INTO validation (run_id, check_name, family, body, quantity, measured_json, reference_json,"
                 " source, tolerance, verdict, detail, unit, seconds, figures_json, quick, out_dir, git_commit,"
                 " git_dirty, machine_json, timestamp) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
-                [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(r["measured"]),
-                  json.dumps(r["reference"]), r["source"], r["tolerance"], r["verdict"], r["detail"], r["unit"],
+                [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(_finite(r["measured"])),
+                  json.dumps(_finite(r["reference"])), r["source"], r["tolerance"], r["verdict"], r["detail"], r["unit"],
                   _finite(r["seconds"]), json.dumps(r["figures"], sort_keys=True), int(quick), out_dir, commit,
                   None if dirty is None else int(dirty), mach, stamp) for r in rows])
             con.commit()

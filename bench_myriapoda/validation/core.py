@@ -79,13 +79,7 @@ class Row:
     figures: dict[str, Any] = field(default_factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
-        d = asdict(self)
-        for k in ("measured", "reference", "seconds"):
-            if isinstance(d[k], float) and not math.isfinite(d[k]):
-                d[k] = None
-        d["figures"] = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
-                        for k, v in d["figures"].items()}
-        return d
+        return clean(asdict(self))
 
 
 class Context:
@@ -169,3 +163,16 @@ def not_applicable(reason: str, reference: Any = None, tolerance: str = "-") -> 
 def failed_run(result, reference: Any = None, tolerance: str = "-") -> Outcome:
     """A run that ended unstable or in an error cannot reproduce anything: FAIL with its message."""
     return Outcome(FAIL, None, reference, tolerance, f"run {result.status}: {result.message}")
+
+
+def clean(v):
+    """``v`` with every non-finite float replaced by None, tuples as lists (strict JSON)."""
+    if isinstance(v, dict):
+        return {k: clean(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [clean(x) for x in v]
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if hasattr(v, "item") and not isinstance(v, (str, bytes)):  # numpy scalars
+        return clean(v.item())
+    return v

@@ -59,8 +59,13 @@ def image1_worm_book(ctx: Context, body: str) -> Outcome:
     ext = _external("image1_worm_book", r, body)
     if ext is not None:
         return ext
-    sc = r.case.scenario
-    com = r.series.com
+    return judge_worm_book(r.series.com, r.case.scenario)
+
+
+def judge_worm_book(com, sc) -> Outcome:
+    """Image 1 criteria on the centre of mass path com (T, 3) [m] and the cliff scenario ``sc``."""
+    ref = "ends below half the book height, past the edge (Image 1 a-d)"
+    com = np.asarray(com)
     ok = com[0, 1] > sc.slab_height_m and com[-1, 1] < 0.5 * sc.slab_height_m and com[-1, 0] > sc.slab_edge_x_m
     return holds(bool(ok), f"COM height {com[-1, 1] * 100:.1f} cm at x = {com[-1, 0] * 100:+.1f} cm", ref,
                  f"height < {0.5 * sc.slab_height_m * 100:g} cm, x > edge",
@@ -79,11 +84,17 @@ def image2_snake_coils(ctx: Context, body: str) -> Outcome:
     ext = _external("image2_snake_coils", r, body)
     if ext is not None:
         return ext
-    pf = r.metrics.get("path_following_error_bl", math.nan)
-    v = r.metrics.get("speed_bl_per_cycle", math.nan)
+    return judge_snake_coils(r.metrics)
+
+
+def judge_snake_coils(m: dict) -> Outcome:
+    """Image 2 criteria on a snake run's metrics."""
+    ref = f"path-following error <= {PATH_FOLLOWING_MAX_BL:g} BL while moving >= {SNAKE_MIN_BL_PER_CYCLE:g} BL/cycle"
+    pf = m.get("path_following_error_bl", math.nan)
+    v = m.get("speed_bl_per_cycle", math.nan)
     ok = pf <= PATH_FOLLOWING_MAX_BL and v >= SNAKE_MIN_BL_PER_CYCLE
-    return holds(ok, f"{pf:.3f} BL at {v:.3f} BL/cycle", ref, "both bounds",
-                 f"speed {r.metrics.get('speed_m_per_s', math.nan):.4f} m/s", "",
+    return holds(bool(ok), f"{pf:.3f} BL at {v:.3f} BL/cycle", ref, "both bounds",
+                 f"speed {m.get('speed_m_per_s', math.nan):.4f} m/s", "",
                  path_following_error_bl=pf, speed_bl_per_cycle=v)
 
 
@@ -122,15 +133,23 @@ def image4_caterpillar_slope(ctx: Context, body: str) -> Outcome:
     ext = _external("image4_caterpillar_slope", r, body)
     if ext is not None:
         return ext
-    a = math.radians(30.0)
-    progress = r.series.com @ np.array([math.cos(a), math.sin(a), 0.0])
-    period, t = r.case.gait.period_s, r.series.t
-    idx = [int(np.searchsorted(t, k * period)) for k in range(2, int(t[-1] / period))]
+    return judge_caterpillar_slope(r.series.t, r.series.com, r.case.gait.period_s, 30.0,
+                                   r.metrics.get("speed_bl_per_cycle", math.nan))
+
+
+def judge_caterpillar_slope(t, com, period_s: float, slope_deg: float, speed_bl_per_cycle: float = math.nan) -> Outcome:
+    """Image 4 criterion: progress up the slope in every gait cycle after the first two."""
+    a = math.radians(slope_deg)
+    progress = np.asarray(com) @ np.array([math.cos(a), math.sin(a), 0.0])
+    t = np.asarray(t)
+    idx = [int(np.searchsorted(t, k * period_s)) for k in range(2, int(t[-1] / period_s))]
     per_cycle = np.diff(progress[idx]) if len(idx) > 1 else np.array([])
-    ok = per_cycle.size > 0 and bool(np.all(per_cycle > 0.0))
-    worst = float(per_cycle.min()) if per_cycle.size else math.nan
+    if per_cycle.size == 0:
+        return not_applicable(f"the run ({t[-1]:.1f} s) holds no complete cycle after two {period_s:g} s cycles")
+    ok = bool(np.all(per_cycle > 0.0))
+    worst = float(per_cycle.min())
     return holds(ok, f"min {worst * 1000:+.1f} mm/cycle", "> 0 every cycle", "> 0",
-                 f"{per_cycle.size} cycles; speed {r.metrics.get('speed_bl_per_cycle', math.nan):.3f} BL/cycle", "m",
+                 f"{per_cycle.size} cycles on {slope_deg:g} deg; speed {speed_bl_per_cycle:.3f} BL/cycle", "m",
                  min_progress_per_cycle_m=worst)
 
 

@@ -66,28 +66,33 @@ def fig4_drop(ctx: Context, body: str) -> Outcome:
 
 # --------------------------------------------------------------------------- Fig. 10 A
 
-def fig10a_hang(ctx: Context, body: str) -> Outcome:
-    """Hanging by the head: legs cycle SF1 -> SF2 -> SB1 -> SB2 without STANCE or ADJUST; the body elongates."""
+def judge_hang(t, states, elongation_m: float) -> Outcome:
+    """Fig. 10 A criteria on a leg timeline (t (T,) [s], states (T, n_legs)) and the hanging elongation [m]."""
     from ..controllers.myriapod import switcher as SW
     from ..metrics.gait import dominant_cycle, format_cycle
 
     ref = "SF1 -> SF2 -> SB1 -> SB2, no STANCE/ADJUST, elongates (Fig. 10 A)"
-    r = ctx.run("centipede", body, "hang", duration=3.0)
-    if r.status != "ok":
-        return failed_run(r, ref)
-    t, states = _timeline(r)
+    states = np.asarray(states)
     shares = {name: float(np.mean(states == code)) for name, code in
               (("SF1", SW.SF1), ("SF2", SW.SF2), ("SB1", SW.SB1), ("SB2", SW.SB2), ("STANCE", SW.STANCE),
                ("ADJUST", SW.ADJUST))}
-    elong = r.metrics.get("hanging_elongation_m", math.nan)
     cycle = format_cycle(dominant_cycle(t, states[:, 0], last_fraction=0.5).cycle) or "(none)"
     ok = (shares["STANCE"] == 0 and shares["ADJUST"] == 0
           and all(shares[s] > HANG_STATE_MIN_SHARE for s in ("SF1", "SF2", "SB1", "SB2"))
-          and elong > HANG_ELONGATION_MIN_M)
-    return holds(ok, f"{cycle}; elongation {elong * 100:.1f} cm", ref,
+          and elongation_m > HANG_ELONGATION_MIN_M)
+    return holds(bool(ok), f"{cycle}; elongation {elongation_m * 100:.1f} cm", ref,
                  f"each loop state > {HANG_STATE_MIN_SHARE:g} of the time, elongation > {HANG_ELONGATION_MIN_M:g} m",
                  "time shares " + ", ".join(f"{k} {v:.2f}" for k, v in shares.items()),
-                 elongation_m=elong, **{f"share_{k}": v for k, v in shares.items()})
+                 elongation_m=elongation_m, **{f"share_{k}": v for k, v in shares.items()})
+
+
+def fig10a_hang(ctx: Context, body: str) -> Outcome:
+    """Hanging by the head: legs cycle SF1 -> SF2 -> SB1 -> SB2 without STANCE or ADJUST; the body elongates."""
+    r = ctx.run("centipede", body, "hang", duration=3.0)
+    if r.status != "ok":
+        return failed_run(r, "Fig. 10 A")
+    t, states = _timeline(r)
+    return judge_hang(t, states, r.metrics.get("hanging_elongation_m", math.nan))
 
 
 # --------------------------------------------------------------------------- Fig. 10 D
@@ -113,35 +118,44 @@ def walking_window_note(metrics: dict, duration: float) -> str | None:
     return None
 
 
+def judge_walk_cycle(metrics: dict, duration: float) -> Outcome:
+    """Fig. 10 D criterion on a walk's metrics: NOT APPLICABLE when the run is too short to count cycles."""
+    frac = metrics.get("walking_cycle_leg_fraction", math.nan)
+    note = walking_window_note(metrics, duration)
+    if note is not None:
+        return not_applicable(note, MIN_CONVERGED_LEGS, f">= {MIN_CONVERGED_LEGS:g}")
+    return holds(bool(frac >= MIN_CONVERGED_LEGS), frac, MIN_CONVERGED_LEGS, f">= {MIN_CONVERGED_LEGS:g}",
+                 f"{duration:g} s walk; stride {metrics.get('stride_frequency_hz', math.nan):.2f} Hz, "
+                 f"walking from {metrics.get('time_to_walk_s', math.nan):.2f} s",
+                 stride_frequency_hz=metrics.get("stride_frequency_hz"))
+
+
 def fig10d_walk(ctx: Context, body: str) -> Outcome:
     """On flat ground most legs converge to SF1 -> SF2 -> STANCE with short ADJUST and SB1 (Fig. 10 D)."""
-    ref = f"share of legs in SF1 -> SF2 -> STANCE >= {MIN_CONVERGED_LEGS:g} (Fig. 10 D)"
     r = ctx.run("centipede", body, "walk", duration=WALK_DURATION_S)
     if r.status != "ok":
-        return failed_run(r, ref)
-    frac = r.metrics.get("walking_cycle_leg_fraction", math.nan)
-    note = walking_window_note(r.metrics, WALK_DURATION_S)
-    if note is not None:
-        return not_applicable(note, MIN_CONVERGED_LEGS)
-    return holds(frac >= MIN_CONVERGED_LEGS, frac, MIN_CONVERGED_LEGS, f">= {MIN_CONVERGED_LEGS:g}",
-                 f"{WALK_DURATION_S:g} s walk; stride {r.metrics.get('stride_frequency_hz', math.nan):.2f} Hz, "
-                 f"walking from {r.metrics.get('time_to_walk_s', math.nan):.2f} s",
-                 stride_frequency_hz=r.metrics.get("stride_frequency_hz"))
+        return failed_run(r, "Fig. 10 D")
+    return judge_walk_cycle(r.metrics, WALK_DURATION_S)
 
 
 # --------------------------------------------------------------------------- the wave's direction
 
-def _wave(ctx: Context, creature: str, body: str, expected: str, duration: float) -> Outcome:
-    ref = f"{expected} (Kuroda et al. 2014; Fang et al. Sec. 4)"
-    r = ctx.run(creature, body, "walk", duration=duration)
-    if r.status != "ok":
-        return failed_run(r, ref)
-    lag = r.metrics.get("phase_lag_mean", math.nan)
-    label = r.extra.get("labels", {}).get("wave_direction", "undefined")
+def judge_wave(metrics: dict, labels: dict, expected: str) -> Outcome:
+    """The leg wave's direction from the mean phase lag and its label."""
+    lag = metrics.get("phase_lag_mean", math.nan)
+    label = (labels or {}).get("wave_direction", "undefined")
     sign = 1.0 if expected == "retrograde" else -1.0
     ok = label == expected and sign * lag > WAVE_LAG_MIN
-    return holds(ok, f"{label} (lag {lag:+.3f})", expected, f"sign of the phase lag, |lag| > {WAVE_LAG_MIN:g} cycles",
+    return holds(bool(ok), f"{label} (lag {lag:+.3f})", expected,
+                 f"sign of the phase lag, |lag| > {WAVE_LAG_MIN:g} cycles",
                  f"mean phase lag {lag:+.3f} cycles behind the same-side leg ahead", phase_lag_mean=lag)
+
+
+def _wave(ctx: Context, creature: str, body: str, expected: str, duration: float) -> Outcome:
+    r = ctx.run(creature, body, "walk", duration=duration)
+    if r.status != "ok":
+        return failed_run(r, expected)
+    return judge_wave(r.metrics, r.extra.get("labels", {}), expected)
 
 
 def centipede_wave(ctx: Context, body: str) -> Outcome:
@@ -156,22 +170,28 @@ def millipede_wave(ctx: Context, body: str) -> Outcome:
 
 # --------------------------------------------------------------------------- CONTROL, behaviour
 
-def control_turn(ctx: Context, body: str) -> Outcome:
-    """CONTROL mode: straight, a commanded 40 degree left turn (10 deg/s from 4 to 8 s), straight."""
-    ref = f"{TURN_DEG:g} deg (Sec. 4.3 CONTROL schedule)"
-    r = ctx.run("centipede", body, "control", duration=12.0)
-    if r.status != "ok":
-        return failed_run(r, ref)
-    h, t = r.series.head, r.series.t
-    early = h[(t > 2.0) & (t < 4.0)]
-    late = h[t > 9.0]
+def judge_control(t, head, heading_error_deg: float) -> Outcome:
+    """CONTROL criteria on the head's path: t (T,) [s], head (T, 3) [m]."""
+    t, head = np.asarray(t), np.asarray(head)
+    early = head[(t > 2.0) & (t < 4.0)]
+    late = head[t > 9.0]
+    if len(early) < 2 or len(late) < 2:
+        return not_applicable(f"the run ends at {t[-1]:.1f} s; the turn schedule needs 10 s or more", TURN_DEG)
     d0, d1 = early[-1] - early[0], late[-1] - late[0]
     turn = math.degrees(math.atan2(-d1[2], d1[0]) - math.atan2(-d0[2], d0[0]))
-    err = r.metrics.get("heading_error_deg", math.nan)
-    ok = abs(turn - TURN_DEG) <= TURN_TOL_DEG and err < HEADING_ERROR_MAX_DEG
-    return holds(ok, round(turn, 2), TURN_DEG, f"+/- {TURN_TOL_DEG:g} deg; heading error < {HEADING_ERROR_MAX_DEG:g} deg",
-                 f"head path turned {turn:.1f} deg; mean heading error {err:.2f} deg", "deg",
-                 heading_error_deg=err)
+    ok = abs(turn - TURN_DEG) <= TURN_TOL_DEG and heading_error_deg < HEADING_ERROR_MAX_DEG
+    return holds(bool(ok), round(turn, 2), TURN_DEG,
+                 f"+/- {TURN_TOL_DEG:g} deg; heading error < {HEADING_ERROR_MAX_DEG:g} deg",
+                 f"head path turned {turn:.1f} deg; mean heading error {heading_error_deg:.2f} deg", "deg",
+                 heading_error_deg=heading_error_deg)
+
+
+def control_turn(ctx: Context, body: str) -> Outcome:
+    """CONTROL mode: straight, a commanded 40 degree left turn (10 deg/s from 4 to 8 s), straight."""
+    r = ctx.run("centipede", body, "control", duration=12.0)
+    if r.status != "ok":
+        return failed_run(r, TURN_DEG)
+    return judge_control(r.series.t, r.series.head, r.metrics.get("heading_error_deg", math.nan))
 
 
 def _heading_change(r) -> float:
@@ -206,11 +226,16 @@ def avoidance(ctx: Context, body: str) -> Outcome:
         "scenario.obstacle_radius_m=[0.3, 0.6]", "scenario.terrain_seed=0", "food.seed=0"))
     if r.status != "ok":
         return failed_run(r, ref)
-    m = r.metrics
+    return judge_avoidance(r.metrics)
+
+
+def judge_avoidance(m: dict, min_contacts: int = 3) -> Outcome:
+    """AVOIDANCE criteria on a run's behaviour metrics."""
     pen = m.get("obstacle_penetration_body_max_m", math.nan)
-    ok = pen <= BODY_PENETRATION_LIMIT_M and m.get("obstacle_contacts", 0) >= 3 \
+    ok = pen <= BODY_PENETRATION_LIMIT_M and m.get("obstacle_contacts", 0) >= min_contacts \
         and m.get("brain_avoidance_fraction", 0) > 0.02
-    return holds(ok, pen, BODY_PENETRATION_LIMIT_M, f"<= {BODY_PENETRATION_LIMIT_M:g} m",
+    return holds(bool(ok), pen, BODY_PENETRATION_LIMIT_M, f"<= {BODY_PENETRATION_LIMIT_M:g} m, >= {min_contacts} "
+                 "antenna contacts",
                  f"{m.get('obstacle_contacts', 0):g} antenna contacts, avoidance "
                  f"{m.get('brain_avoidance_fraction', math.nan):.2f} of the time, path "
                  f"{m.get('path_length_m', math.nan):.1f} m", "m")

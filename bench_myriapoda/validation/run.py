@@ -88,7 +88,7 @@ def _fmt(v) -> str:
 def format_table(rows: list[Row]) -> list[str]:
     """The human-readable table ``validate`` prints: one line per row, then the reason lines."""
     head = ("check", "body", "measured", "reference", "tolerance", "verdict", "s")
-    cells = [(r.check, r.body, _fmt(r.measured) + (f" {r.unit}" if r.unit and r.measured is not None else ""),
+    cells = [(r.check, r.body, _fmt(r.measured) + (f" {r.unit}" if r.unit and isinstance(r.measured, (int, float)) else ""),
               _fmt(r.reference), r.tolerance, r.verdict, f"{r.seconds:.1f}") for r in rows]
     w = [max(len(h), *(len(c[i]) for c in cells)) if cells else len(h) for i, h in enumerate(head)]
     w = [min(x, 48) for x in w]
