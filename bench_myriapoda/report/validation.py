@@ -145,8 +145,10 @@ def _work_precision(page, data: ValidationData) -> None:
         dest = page.fig_dir / png.name
         shutil.copyfile(png, dest)
         refs = "; ".join(f"{c['body']}: {c['reference_kind']}"
-                         + ("" if c.get("ref_change") is None else f", last refinement changed it "
-                            f"{100 * c['ref_change']:.2g} %") for c in q["curves"])
+                         + ("" if c.get("ref_change") is None else f" (last dt halving changed it "
+                            f"{100 * c['ref_change']:.2g} %)")
+                         + ("" if c.get("resolution_change") is None else f", resolution + 1 changes it "
+                            f"{100 * c['resolution_change']:.2g} %") for c in q["curves"])
         page.figure(dest, f"{q['title']}: relative error against the reference vs CPU seconds per simulated "
                           f"second, log-log; one curve per body model over dt (open squares: mesh resolution). "
                           f"References: {refs}.")
