@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import references as R
-from .core import Context, Outcome, absolute, at_most, failed_run, holds, not_applicable, relative
+from .core import Context, Outcome, at_most, failed_run, holds, not_applicable, relative
 
 WORM_REL_TOL = 0.05          # eps * Lambda within 5 % once the gait is steady (VALIDATION.md)
 BAR_REL_TOL = 0.05           # hanging bar on a converged mesh (VALIDATION.md)

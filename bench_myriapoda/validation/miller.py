@@ -165,7 +165,7 @@ def slithering(ctx: Context, body: str) -> Outcome:
     ratios = SLITHERING_RATIOS[1:] if ctx.quick else SLITHERING_RATIOS
     measured, reference = [], []
     for ratio in ratios:
-        over = (f"friction.model=coulomb", f"friction.mu_forward={SLITHERING_MU_F}", "friction.mu_backward=0.3",
+        over = ("friction.model=coulomb", f"friction.mu_forward={SLITHERING_MU_F}", "friction.mu_backward=0.3",
                 f"friction.mu_transverse={ratio * SLITHERING_MU_F}")
         r = ctx.run("snake", body, "flat", "lateral-undulation", duration=8.0 if ctx.quick else 16.0, overrides=over)
         if r.status != "ok":
