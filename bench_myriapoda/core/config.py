@@ -206,6 +206,44 @@ def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, bo
 
 # --------------------------------------------------------------------------- resolution
 
+def _froude_source(overrides: Iterable[str], spath: Path, sdata: Mapping, cpath: Path) -> str:
+    """Where friction.froude was set, for an error message: --set, the scenario or the creature file."""
+    if any(str(o).split("=", 1)[0].strip() == "friction.froude" for o in overrides):
+        return "--set"
+    return str(spath) if "froude" in sdata.get("friction", {}) else str(cpath)
+
+
+def apply_froude(friction: FrictionConfig, body_length_m: float, period_s: float, gravity_m_s2: float,
+                 source: str = "friction") -> FrictionConfig:
+    """The friction with ``froude`` applied: mu_f = L / (T^2 g Fr), the other coefficients scaled by
+    the same factor (their ratios to mu_f as given; a static -1 stays "same as kinetic").
+
+    body_length_m: L [m]; period_s: gait period T [s]; gravity_m_s2: g [m/s^2].  Unchanged when
+    froude is 0.  Idempotent.  Raises InputError when Fr > 0 cannot define mu_f (no gravity, a
+    model without coefficients, or mu_forward = 0 so the ratios are undefined).
+    """
+    fr = friction.froude
+    if fr <= 0.0:
+        return friction
+    if friction.model != "coulomb":
+        raise InputError(source, "friction.froude", f"needs friction.model = 'coulomb' (the {friction.model!r} "
+                                                    "model has no coefficients)")
+    if gravity_m_s2 <= 0.0:
+        raise InputError(source, "friction.froude", "needs gravity (scenario.gravity_m_s2 > 0)")
+    if friction.mu_forward <= 0.0:
+        raise InputError(source, "friction.froude", "needs friction.mu_forward > 0: the other coefficients "
+                                                    "keep their ratios to it")
+    scale = body_length_m / (period_s * period_s * gravity_m_s2 * fr) / friction.mu_forward
+
+    def scaled(mu: float) -> float:
+        return mu if mu < 0.0 else mu * scale
+    return dataclasses.replace(
+        friction, mu_forward=friction.mu_forward * scale, mu_backward=friction.mu_backward * scale,
+        mu_transverse=friction.mu_transverse * scale, mu_static_forward=scaled(friction.mu_static_forward),
+        mu_static_backward=scaled(friction.mu_static_backward),
+        mu_static_transverse=scaled(friction.mu_static_transverse))
+
+
 def resolve_case(creature: str, body: str, scenario: str, gait: str | None = None, *,
                  duration: float | None = None, dt: float | None = None, seed: int | None = None,
                  overrides: Iterable[str] = ()) -> Case:
@@ -214,6 +252,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     Raises :class:`InputError` for anything a user could have typed wrong,
     including a (creature, body, gait) combination that is not supported.
     """
+    overrides = list(overrides)  # read twice: applied, and asked where friction.froude came from
     registry.load_all()
     if body not in registry.BODIES:
         raise InputError("--body", None, f"unknown body model {body!r}; choose one of {', '.join(sorted(registry.BODIES))}")
@@ -274,6 +313,8 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     sections = {name: cls(**layers.get(name, {})) for name, cls in SECTIONS.items()}
     body_cfg = spec.config_cls(**layers["body"])
     scen: ScenarioConfig = sections["scenario"]
+    sections["friction"] = apply_froude(sections["friction"], sections["creature"].body_length_m,
+                                        sections["gait"].period_s, scen.gravity_m_s2, _froude_source(overrides, spath, sdata, cpath))
     case = Case(
         creature=sections["creature"], legs=sections["legs"], controller=sections["controller"], body=body_cfg, gait=sections["gait"], friction=sections["friction"],
         collision=sections["collision"], scenario=scen, record=sections["record"],

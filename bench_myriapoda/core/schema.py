@@ -189,6 +189,13 @@ class FrictionConfig:
       transverse coefficients, static and kinetic (after Hu et al., PNAS 2009).
       A static coefficient of -1 means "same as kinetic".
     * ``stick``   -- Miller's caterpillar: masses in contact get no tangential motion.
+
+    ``froude`` > 0 sets the coefficients from the Froude number of the slithering literature
+    (Hu et al. 2009), Fr = L / (T^2 g mu_f): mu_f = L / (T^2 g Fr) with L the creature's body
+    length, T the gait period and g the scenario's gravity.  The other coefficients (backward,
+    transverse and any static ones given) keep their ratios to mu_forward as written, so a
+    file states the anisotropy and Fr its overall level.  ``core.config.apply_froude`` does this
+    when the case is resolved, so every body model sees the same coefficients.
     """
 
     model: str = rng("coulomb", choices=("miller", "coulomb", "stick"))
@@ -199,6 +206,8 @@ class FrictionConfig:
     mu_static_forward: float = rng(-1.0, ge=-1.0)
     mu_static_backward: float = rng(-1.0, ge=-1.0)
     mu_static_transverse: float = rng(-1.0, ge=-1.0)
+    froude: float = rng(0.0, ge=0.0, doc="Froude number L / (T^2 g mu_f); > 0 sets mu_f from it, keeping the "
+                                          "other coefficients' ratios to mu_f (0: coefficients as given)")
 
 
 @dataclass(frozen=True)

@@ -27,6 +27,7 @@ from ..core import registry
 from ..core.config import Case
 from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, body_info, controller_settings
 from ..metrics.behaviour import series_behaviour_metrics
+from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
 from ..world.water_coupling import WaterCoupling, has_water
 from .legged import LeggedMonitor, LeggedView
@@ -265,6 +266,8 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
             for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
                       "cycles_measured"):
                 metrics[k] = float("nan")
+        if monitor is None:  # shape, roll, contact and posture_fault of a legless body
+            metrics.update(legless_metrics(series, case, length))
         metrics.update(body.extra_metrics())
         extra = {}
         if monitor is not None:

@@ -46,21 +46,34 @@ def distance_to_polyline(points: np.ndarray, path: np.ndarray) -> np.ndarray:
 
 
 def path_following_error(series: Series, i0: int, i1: int, body_length: float, n_eval: int = 25) -> float:
-    """Mean distance of the segment centres from the head's path, in body lengths.
+    """Mean distance of the segment centres from the path the head has travelled, in body lengths
+    (mean over the evaluated samples of the mean over the measured segments).
 
-    The head's path is its trajectory so far, extended backward by the
-    initial body centre line (where the head "was" before t = 0).  Distances
-    are horizontal (the path is projected on the ground plane).
+    At each of ``n_eval`` samples in [i0, i1], the head's path is its recorded trajectory from
+    t = 0 to that sample, projected on the ground plane.  A segment is measured only once the head
+    has travelled at least the segment's rest distance behind the head (arc length along the
+    body at t = 0): before that, no point of the path can be where the segment should be.  The
+    path is not extended backward with the starting body line, which would make a body that
+    has not moved yet look perfect.  NaN when no segment qualifies at any evaluated sample.
     """
     flat = np.array([1.0, 0.0, 1.0])
-    start_line = series.segment_centers[0][::-1] * flat
+    c0 = series.segment_centers[0] * flat
+    behind = np.linalg.norm(series.head[0] * flat - c0[0]) + np.concatenate(
+        [[0.0], np.cumsum(np.linalg.norm(np.diff(c0, axis=0), axis=1))])
+    head = series.head * flat
+    travelled = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(head, axis=0), axis=1))])
     errs = []
     for i in np.unique(np.linspace(i0, i1, n_eval).astype(int)):
-        path = np.vstack([start_line, series.head[: i + 1] * flat])
+        reached = behind[1:] <= travelled[i]
+        if i < 1 or not reached.any():
+            continue
+        path = head[: i + 1]
         if len(path) > 400:  # keep the cost bounded: subsample the path, keep its end points
-            keep = np.unique(np.concatenate([np.linspace(0, len(path) - 1, 400).astype(int)]))
-            path = path[keep]
-        errs.append(distance_to_polyline(series.segment_centers[i][1:] * flat, path).mean())
+            path = path[np.unique(np.linspace(0, len(path) - 1, 400).astype(int))]
+        pts = series.segment_centers[i][1:][reached] * flat
+        errs.append(distance_to_polyline(pts, path).mean())
+    if not errs:
+        return float("nan")
     return float(np.mean(errs) / body_length)
 
 

@@ -27,6 +27,7 @@ COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("metric.stride_frequency_hz", "stride freq. [Hz]", "gait"),
     ("metric.walking_cycle_leg_fraction", "legs in walking cycle", "gait"),
     ("metric.t_fail_s", "t_fail [s]", "stability"),
+    ("metric.posture_fault", "posture fault", "stability"),
     ("metric.max_penetration_m", "max penetration [m]", "stability"),
     ("metric.energy_drift_rel", "energy drift [rel]", "stability"),
     ("metric.inverted_elements_max", "inverted tets (max)", "stability"),

@@ -1,0 +1,89 @@
+"""Measured shape kinematics of a legless body, from the recorded segment centres.
+
+Every figure is measured on the centre line of ``Series.segment_centers`` (head first), projected
+on the ground plane (x, z; y is up), over the steady window (``locomotion.measurement_window``):
+
+* ``curvature_amplitude``: peak curvature x body length.  The signed discrete curvature at each
+  interior centre is its turning angle over the mean of the two adjacent chords; its amplitude at
+  one point is sqrt(2) x its RMS over the window (the peak of a sine of that RMS, robust to noise
+  where a maximum is not); the figure is the median over the interior points (the ends of a free
+  body bend less), times the body length.
+* ``body_wavelength_bl``: wavelength of the curvature wave along the body, in body lengths: the
+  phase of each point's curvature at the gait frequency (one Fourier coefficient over the
+  window) grows by 2 pi per wavelength of rest arc length.  NaN when the curvature amplitude is
+  below ``MIN_AMPLITUDE_FOR_WAVELENGTH`` (a straight body, e.g. a worm, has no bending wave).
+* ``heading_drift_deg_per_cycle``: rotation of the mean body axis (mean of the unit chords,
+  toward the head) per gait period, from a least-squares line through its unwrapped angle over
+  the window (so the axis's oscillation within a cycle averages out).  Positive: turning left
+  (counter-clockwise seen from above), as the slithering reference's angular velocity.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.series import Series
+
+MIN_AMPLITUDE_FOR_WAVELENGTH = 0.5  # curvature x body length below which no wavelength is measured
+
+
+def ground_curvature(centers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Signed curvature [1/m] of the ground projection of centre lines.
+
+    centers: (T, n, 3) [m], head first.  Returns (kappa (T, n - 2) at the interior points, positive
+    when the line, walked from head to tail, turns left seen from above; chord lengths (T, n - 1) [m]).
+    """
+    p = centers[..., [0, 2]]
+    c = np.diff(p, axis=1)  # head -> tail chords
+    ln = np.linalg.norm(c, axis=2)
+    a, b = c[:, :-1], c[:, 1:]
+    # seen from above (from +y) with x right, the left turn is a negative x-z cross product
+    cross = -(a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0])
+    dot = (a * b).sum(axis=2)
+    turn = np.arctan2(cross, dot)
+    mean_len = 0.5 * (ln[:, :-1] + ln[:, 1:])
+    return turn / np.where(mean_len > 0, mean_len, np.inf), ln
+
+
+def axis_angle(centers: np.ndarray) -> np.ndarray:
+    """Unwrapped angle [rad] of the mean body axis on the ground, right-handed about +y (left turn
+    positive): (T,) from centres (T, n, 3), head first."""
+    c = centers[:, :-1] - centers[:, 1:]  # tail -> head chords
+    ln = np.linalg.norm(c, axis=2, keepdims=True)
+    d = (c / np.where(ln > 0, ln, 1.0)).mean(axis=1)
+    return np.unwrap(np.arctan2(-d[:, 2], d[:, 0]))
+
+
+def body_shape_metrics(series: Series, i0: int, i1: int, period_s: float, body_length_m: float
+                       ) -> dict[str, float]:
+    """curvature_amplitude, body_wavelength_bl, heading_drift_deg_per_cycle over samples [i0, i1]."""
+    out = {"curvature_amplitude": float("nan"), "body_wavelength_bl": float("nan"),
+           "heading_drift_deg_per_cycle": float("nan")}
+    centers = series.segment_centers
+    if centers is None or centers.shape[1] < 4 or i1 - i0 < 2:
+        return out
+    win = centers[i0:i1 + 1]
+    t = series.t[i0:i1 + 1]
+    kappa, _ = ground_curvature(win)
+    amp_pts = math.sqrt(2.0) * np.sqrt((kappa ** 2).mean(axis=0))
+    amp = float(np.median(amp_pts) * body_length_m)
+    out["curvature_amplitude"] = amp
+
+    if amp >= MIN_AMPLITUDE_FOR_WAVELENGTH:
+        # rest arc length of the interior points from the first sample's chords, in body lengths
+        _, ln0 = ground_curvature(centers[:1])
+        s = np.concatenate([[0.0], np.cumsum(ln0[0])])[1:-1] / body_length_m
+        coef = (kappa * np.exp(2j * math.pi * t / period_s)[:, None]).mean(axis=0)
+        strong = np.abs(coef) > 0.2 * np.abs(coef).max()
+        if strong.sum() >= 3:
+            phase = np.unwrap(np.angle(coef[strong]))
+            slope = np.polyfit(s[strong], phase, 1)[0]
+            if abs(slope) > 1e-9:
+                out["body_wavelength_bl"] = float(2.0 * math.pi / abs(slope))
+
+    psi = axis_angle(win)
+    if t[-1] > t[0]:
+        rate = np.polyfit(t - t[0], psi, 1)[0]  # rad/s
+        out["heading_drift_deg_per_cycle"] = float(math.degrees(rate * period_s))
+    return out

@@ -1,0 +1,221 @@
+"""Kinematic reference model of slithering (Hu, Nirody, Scott and Shelley 2009, PNAS 106:10081).
+
+A snake is an inextensible curve whose shape is prescribed by a travelling curvature wave
+
+    kappa(s, t) * L = A sin(2 pi (s / lambda - t / T)),
+
+s the arc length from the head (0) to the tail (1) in body lengths, lambda the wavelength in
+body lengths, T the gait period.  The wave travels from head to tail.  The ground acts on every
+point with Hu et al.'s anisotropic Coulomb friction per unit length (uniform weight rho g):
+
+    f = -rho g [ mu_t (u_hat . n) n + mu_{f|b} (u_hat . a) a ],
+
+u_hat the unit sliding velocity of the point, a the unit tangent toward the head, n the
+normal; mu_f applies when the point slides forward (u_hat . a > 0), mu_b backward.  The shape is
+given; the unknowns are the rigid-body velocity of the body frame (translation V and rotation
+rate Omega), fixed by the balance of friction forces and torque.
+
+Two limits of Hu et al.'s equations (Froude number Fr = L / (T^2 g mu_f), inertia / friction):
+
+* ``method="quasistatic"`` (default; Fr -> 0, what Hu et al. solve and what a body at Fr = 0.1
+  is close to): no inertia, so force and torque vanish at every instant.  The balance is solved
+  at ``n_time`` phases of a period and the rigid motion integrated over the period on SE(2); the
+  result is the net displacement and rotation per cycle.
+* ``method="averaged"`` (Fr -> infinity): inertia holds the rigid velocity constant over a
+  cycle, so only the period-averaged force and torque vanish; one balance for (V, Omega).
+
+Coulomb friction does not depend on the sliding speed, so the model is rate independent: speeds
+come out in body lengths per cycle and do not depend on T, g or the size of the coefficients,
+only on A, lambda and the ratios mu_b / mu_f and mu_t / mu_f.
+
+Units: lengths in body lengths (BL), time in gait periods, angles in radians.
+Frame: x along the mean body axis toward the head, y to the body's left (seen from above);
+``lateral_speed_bl_per_cycle`` is positive to the body's right (as ``metrics.locomotion``'s
+``lateral_speed_m_per_s``), ``angular_velocity_rad_per_cycle`` positive for a turn to the left
+(counter-clockwise seen from above).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import root
+from scipy.special import j0
+
+
+@dataclass(frozen=True)
+class SlitheringResult:
+    """Steady slithering of the kinematic model (all per gait period T, lengths in body lengths).
+
+    speed_bl_per_cycle: displacement of the centre of mass along the mean body axis per cycle.
+    lateral_speed_bl_per_cycle: displacement to the body's right per cycle.
+    angular_velocity_rad_per_cycle: rotation of the body frame per cycle (+ = to the left).
+    travel_angle_deg: atan2(lateral, forward), as metrics.locomotion's travel_angle_deg.
+    no_slip_speed_bl_per_cycle: the speed when no point slides sideways (mu_t / mu_f -> inf):
+        the body glides along its own serpenoid at the wave speed lambda, so the centre advances
+        lambda * J0(A lambda / 2 pi) per cycle (the mean cosine of the tangent angle along a wave).
+    slip: 1 - speed / no_slip_speed (0: every point follows the path of the ones ahead).
+    wave_speed_bl_per_cycle: lambda, the speed of the curvature wave along the body.
+    max_force_residual: largest |force| or |torque| balance residual over the solves, relative to
+        the total weight times the largest friction coefficient.
+    method: "quasistatic" or "averaged".
+    """
+
+    speed_bl_per_cycle: float
+    lateral_speed_bl_per_cycle: float
+    angular_velocity_rad_per_cycle: float
+    travel_angle_deg: float
+    no_slip_speed_bl_per_cycle: float
+    slip: float
+    wave_speed_bl_per_cycle: float
+    max_force_residual: float
+    method: str
+
+
+def body_shape(curvature_amplitude: float, wavelength_bl: float, phase_cycles: float,
+               n_points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Shape and shape velocity in the body frame at phase t/T.
+
+    Returns (X (n, 2) [BL], W (n, 2) [BL per cycle]: velocity of each point relative to the body
+    frame, a (n, 2): unit tangent toward the head, w (n,): quadrature weights summing to 1).
+    The body frame has its origin at the centre of mass and its x axis along the mean tangent
+    angle, so W carries no net translation or rotation of the mean axis.
+    """
+    s = np.linspace(0.0, 1.0, n_points)
+    w = np.full(n_points, 1.0 / (n_points - 1))
+    w[0] = w[-1] = 0.5 / (n_points - 1)
+    k = 2.0 * math.pi / wavelength_bl
+    phi = 2.0 * math.pi * phase_cycles
+    c = curvature_amplitude / k
+    # tangent angle theta(s) = int_0^s kappa; its phase derivative (per cycle) in closed form
+    theta = c * (math.cos(phi) - np.cos(k * s - phi))
+    theta_t = 2.0 * math.pi * c * (-math.sin(phi) - np.sin(k * s - phi))
+    theta -= w @ theta
+    theta_t -= w @ theta_t
+    a = np.column_stack([np.cos(theta), np.sin(theta)])
+    da = np.column_stack([-np.sin(theta), np.cos(theta)]) * theta_t[:, None]
+    # X' = -a (arc length runs from head to tail); trapezoid cumulative integral
+    X = -_cumtrapz(a, s)
+    W = -_cumtrapz(da, s)
+    X -= w @ X
+    W -= w @ W
+    return X, W, a, w
+
+
+def _cumtrapz(y: np.ndarray, s: np.ndarray) -> np.ndarray:
+    out = np.zeros_like(y)
+    out[1:] = np.cumsum(0.5 * (y[1:] + y[:-1]) * np.diff(s)[:, None], axis=0)
+    return out
+
+
+def friction_density(u: np.ndarray, a: np.ndarray, mu_f: float, mu_b: float, mu_t: float,
+                     delta: float) -> np.ndarray:
+    """Friction force per unit weight (n, 2) on points sliding at u (n, 2) with head tangents a.
+
+    delta: velocity regularisation [BL per cycle]: u_hat = u / sqrt(|u|^2 + delta^2), so the
+    force is continuous through u = 0 (Coulomb's law is set valued there)."""
+    norm = np.sqrt(np.einsum("ij,ij->i", u, u) + delta * delta)
+    n = np.column_stack([-a[:, 1], a[:, 0]])
+    ua = np.einsum("ij,ij->i", u, a) / norm
+    un = np.einsum("ij,ij->i", u, n) / norm
+    mu_a = np.where(ua > 0.0, mu_f, mu_b)
+    return -(mu_t * un)[:, None] * n - (mu_a * ua)[:, None] * a
+
+
+def _balance(x, X, W, a, w, mus, delta):
+    V, om = x[:2], x[2]
+    u = V[None, :] + om * np.column_stack([-X[:, 1], X[:, 0]]) + W
+    f = friction_density(u, a, *mus, delta)
+    F = w @ f
+    tq = w @ (X[:, 0] * f[:, 1] - X[:, 1] * f[:, 0])
+    return np.array([F[0], F[1], tq])
+
+
+def _solve(fun, x0: np.ndarray) -> tuple[np.ndarray, float]:
+    best = None
+    for method in ("hybr", "lm"):
+        sol = root(fun, x0, method=method, tol=1e-12)
+        res = float(np.max(np.abs(fun(sol.x))))
+        if best is None or res < best[1]:
+            best = (sol.x, res)
+        if res < 1e-9:
+            break
+    return best
+
+
+def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: float, mu_b: float,
+                      mu_t: float, n_points: int = 200, n_time: int = 96,
+                      method: str = "quasistatic", velocity_regularization: float = 1e-6
+                      ) -> SlitheringResult:
+    """Steady slithering of a prescribed curvature wave on anisotropic Coulomb friction.
+
+    curvature_amplitude: A = peak curvature x body length (dimensionless).
+    wavelength_bl: wavelength of the curvature wave in body lengths.
+    mu_f, mu_b, mu_t: forward, backward, transverse kinetic friction coefficients (> 0).
+    n_points: quadrature points along the body; n_time: phases per period (quasistatic).
+    method: "quasistatic" (Fr -> 0, Hu et al.) or "averaged" (Fr -> inf); see the module doc.
+    velocity_regularization: delta of ``friction_density`` relative to the wave speed lambda.
+    Raises ValueError on a non-positive coefficient, wavelength or resolution.
+    """
+    if min(mu_f, mu_b, mu_t) <= 0.0:
+        raise ValueError(f"friction coefficients must be > 0, got mu_f={mu_f}, mu_b={mu_b}, mu_t={mu_t}")
+    if wavelength_bl <= 0.0 or curvature_amplitude < 0.0:
+        raise ValueError(f"need wavelength_bl > 0 and curvature_amplitude >= 0, got {wavelength_bl}, "
+                         f"{curvature_amplitude}")
+    if n_points < 8 or n_time < 4:
+        raise ValueError(f"need n_points >= 8 and n_time >= 4, got {n_points}, {n_time}")
+    if method not in ("quasistatic", "averaged"):
+        raise ValueError(f"method must be 'quasistatic' or 'averaged', got {method!r}")
+    mus = (mu_f, mu_b, mu_t)
+    delta = velocity_regularization * wavelength_bl
+    scale = max(mus)
+    phases = (np.arange(n_time) + 0.5) / n_time
+    shapes = [body_shape(curvature_amplitude, wavelength_bl, p, n_points) for p in phases]
+
+    if method == "averaged":
+        # one constant rigid velocity in a frame that does not turn with the body's mean axis
+        def fun(x):
+            return np.mean([_balance(x, *sh, mus, delta) for sh in shapes], axis=0)
+        x, res = _solve(fun, np.zeros(3))
+        V, om = x[:2], x[2]
+        disp, turn = V, om
+        # a constant twist over one cycle: exact SE(2) exponential
+        if abs(turn) > 1e-12:
+            sx, cx = math.sin(turn) / turn, (1.0 - math.cos(turn)) / turn
+            disp = np.array([sx * V[0] - cx * V[1], cx * V[0] + sx * V[1]])
+        max_res = res / scale
+    else:
+        pos = np.zeros(2)
+        psi = 0.0
+        x = np.zeros(3)
+        max_res = 0.0
+        h = 1.0 / n_time
+        for sh in shapes:
+            x, res = _solve(lambda y: _balance(y, *sh, mus, delta), x)
+            max_res = max(max_res, res / scale)
+            V, om = x[:2], x[2]
+            # exact exponential of the (constant over the sub-interval) body twist, then to world
+            th = om * h
+            if abs(th) > 1e-12:
+                sx, cx = math.sin(th) / th, (1.0 - math.cos(th)) / th
+            else:
+                sx, cx = 1.0, 0.5 * th
+            d = h * np.array([sx * V[0] - cx * V[1], cx * V[0] + sx * V[1]])
+            c, s_ = math.cos(psi), math.sin(psi)
+            pos += np.array([c * d[0] - s_ * d[1], s_ * d[0] + c * d[1]])
+            psi += th
+        disp, turn = pos, psi
+    forward, lateral = float(disp[0]), float(-disp[1])
+    no_slip = wavelength_bl * float(j0(curvature_amplitude * wavelength_bl / (2.0 * math.pi)))
+    return SlitheringResult(
+        speed_bl_per_cycle=forward,
+        lateral_speed_bl_per_cycle=lateral,
+        angular_velocity_rad_per_cycle=float(turn),
+        travel_angle_deg=math.degrees(math.atan2(lateral, forward)) if math.hypot(forward, lateral) > 0 else 0.0,
+        no_slip_speed_bl_per_cycle=no_slip,
+        slip=1.0 - forward / no_slip if no_slip > 0 else float("nan"),
+        wave_speed_bl_per_cycle=float(wavelength_bl),
+        max_force_residual=float(max_res),
+        method=method,
+    )

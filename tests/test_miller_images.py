@@ -1,0 +1,95 @@
+"""Miller's Images 1 to 4 (reference/miller_images.py): one test per described behaviour, on the
+suite's presets and the lattice (mass-spring) body, Miller's own model.
+
+Each run is made once per module and shared by its checks.  Checks that fail today because of
+physics another part of issue 11 fixes are marked xfail (strict=False) with the reason.
+"""
+from __future__ import annotations
+
+import pytest
+
+from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness.runner import run_case
+from bench_myriapoda.reference import miller_images as MI
+
+BODY = "massspring"
+_RUNS: dict[str, tuple] = {}
+
+
+def run(key: str):
+    if key not in _RUNS:
+        r = MI.RUNS[key]
+        case = resolve_case(r.creature, BODY, r.scenario, r.gait, duration=r.duration_s, overrides=list(r.overrides))
+        res = run_case(case)
+        assert res.status == "ok", res.message
+        _RUNS[key] = (res.series, res.case, res.metrics)
+    return _RUNS[key]
+
+
+def check(key: str, fn) -> MI.ImageCheck:
+    c = fn(*run(key))
+    assert c.passed, c.line()
+    return c
+
+
+SIDEWINDING_FIX = ("the lattice sidewinder rolls like a log with ~95 % of its segments on the ground; "
+                   "sidewinding without rolling is issue 11's body-physics part (helper i11b)")
+
+
+def test_image_1a_worm_nose_slides_forward_on_impact():
+    check("worm-book", MI.worm_nose_slides_forward)
+
+
+def test_image_1b_worm_mostly_in_contact_after_landing():
+    check("worm-book", MI.worm_mostly_in_contact)
+
+
+def test_image_1c_worm_front_bends_down_over_the_edge():
+    check("worm-book", MI.worm_front_bends_over_edge)
+
+
+def test_image_1d_worm_slides_off_the_edge():
+    check("worm-book", MI.worm_slides_off_edge)
+
+
+def test_image_2b_snake_head_fixed_while_coils_form():
+    check("snake-undulation", MI.snake_head_fixed_while_coils_form)
+
+
+def test_image_2d_snake_segments_follow_one_path():
+    check("snake-undulation", MI.snake_segments_follow_one_path)
+
+
+@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
+def test_image_3a_sidewinder_contact_is_localised():
+    check("sidewinder", MI.sidewinder_contact_localised)
+
+
+@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
+def test_image_3d_sidewinder_travels_diagonally():
+    check("sidewinder", MI.sidewinder_travels_diagonally)
+
+
+@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
+def test_image_3_sidewinder_does_not_roll():
+    check("sidewinder", MI.sidewinder_does_not_roll)
+
+
+def test_image_4b_caterpillar_arches_its_back():
+    check("caterpillar-arch", MI.caterpillar_arches)
+
+
+def test_image_4_caterpillar_climbs_a_steep_slope():
+    check("caterpillar-up", MI.caterpillar_on_steep_slope)
+
+
+def test_image_4_caterpillar_descends_a_steep_slope():
+    check("caterpillar-down", MI.caterpillar_on_steep_slope)
+
+
+def test_evaluate_runs_every_check_of_a_run_and_refuses_unknown_runs():
+    series, case, metrics = run("caterpillar-arch")
+    out = MI.evaluate("caterpillar-arch", series, case, metrics)
+    assert [c.image for c in out] == ["4b"]
+    with pytest.raises(ValueError):
+        MI.evaluate("no-such-run", series, case, metrics)
