@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 from pathlib import Path
 from typing import Any, Sequence
@@ -555,6 +556,26 @@ def cmd_regress(args) -> int:
     return EXIT_FAIL if regressed else EXIT_OK
 
 
+class _stdout_to_stderr:
+    """Point file descriptor 1 at stderr inside the block (and restore it), Python's and C's writes alike."""
+
+    def __enter__(self):
+        sys.stdout.flush()
+        try:
+            self.saved = os.dup(1)
+            os.dup2(2, 1)
+        except OSError:  # no real descriptors (an embedding host): nothing to redirect
+            self.saved = None
+        return self
+
+    def __exit__(self, *exc):
+        if self.saved is not None:
+            sys.stdout.flush()
+            os.dup2(self.saved, 1)
+            os.close(self.saved)
+        return False
+
+
 def cmd_validate(args) -> int:
     """Run the validation checks; exit 1 when any check FAILs, 0 otherwise, 2 for bad input (nothing run)."""
     import time
@@ -572,13 +593,16 @@ def cmd_validate(args) -> int:
         raise InputError("--out", None, f"{out_dir} exists and is not a directory")
     tty = not args.json and sys.stderr.isatty()
     t0 = time.perf_counter()
-    rows = V.run_checks(pairs, args.quick, bodies,
-                        progress=(lambda m: print(f"validate: {m}", file=sys.stderr)) if tty else None)
-    wp = None
-    if args.work_precision:
-        from .validation.work_precision import run_work_precision
-        wp = run_work_precision(out_dir, bodies, args.quick,
-                                progress=(lambda m: print(f"work-precision: {m}", file=sys.stderr)) if tty else None)
+    # compiled libraries (LAPACK on a blown-up run's NaNs) print to file descriptor 1 directly: while the
+    # checks run, fd 1 points at stderr, so that --json's stdout holds exactly one JSON object
+    with _stdout_to_stderr():
+        rows = V.run_checks(pairs, args.quick, bodies,
+                            progress=(lambda m: print(f"validate: {m}", file=sys.stderr)) if tty else None)
+        wp = None
+        if args.work_precision:
+            from .validation.work_precision import run_work_precision
+            wp = run_work_precision(out_dir, bodies, args.quick, progress=(
+                lambda m: print(f"work-precision: {m}", file=sys.stderr)) if tty else None)
     wall = time.perf_counter() - t0
     dicts = [r.to_dict() for r in rows]
     counts = V.summary(rows)
