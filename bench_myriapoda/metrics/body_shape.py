@@ -76,14 +76,16 @@ def body_shape_metrics(series: Series, i0: int, i1: int, period_s: float, body_l
         s = np.concatenate([[0.0], np.cumsum(ln0[0])])[1:-1] / body_length_m
         coef = (kappa * np.exp(2j * math.pi * t / period_s)[:, None]).mean(axis=0)
         strong = np.abs(coef) > 0.2 * np.abs(coef).max()
-        if strong.sum() >= 3:
+        # a body off the ground plane (hanging straight down) has zero-length ground chords: no wave to fit
+        if (strong.sum() >= 3 and np.all(np.isfinite(s[strong])) and np.all(np.isfinite(coef[strong]))
+                and np.ptp(s[strong]) > 1e-9):
             phase = np.unwrap(np.angle(coef[strong]))
             slope = np.polyfit(s[strong], phase, 1)[0]
             if abs(slope) > 1e-9:
                 out["body_wavelength_bl"] = float(2.0 * math.pi / abs(slope))
 
     psi = axis_angle(win)
-    if t[-1] > t[0]:
+    if t[-1] > t[0] and np.all(np.isfinite(psi)):
         rate = np.polyfit(t - t[0], psi, 1)[0]  # rad/s
         out["heading_drift_deg_per_cycle"] = float(math.degrees(rate * period_s))
     return out
