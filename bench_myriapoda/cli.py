@@ -9,6 +9,7 @@
     bench-myriapoda regress [--baseline COMMIT_OR_RUN] [...]   throughput suite vs. the stored history
     bench-myriapoda keys [SECTION] [--json]   every configuration key --set accepts, described
     bench-myriapoda peers [--repeats N] [--store PATH] [--json]   MuJoCo flex and PyElastica side by side (extra [peers])
+    bench-myriapoda validate [--body B ...] [--check NAME ...] [--quick] [--json] [--out DIR] [--work-precision]
 
 Bad input gives one line on stderr naming the file or flag, the key and what
 is allowed, and exit code 2, before anything is written.
@@ -139,6 +140,19 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--repeats", type=int, metavar="N", default=5, help="timed repetitions per entry (default 5)")
     pe.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     pe.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    va = sub.add_parser("validate", help="verdicts against the papers and analytic references (exit 1 on a FAIL)")
+    va.add_argument("--body", nargs="+", action="extend", metavar="B", default=None,
+                    help="only these body models (default: all)")
+    va.add_argument("--check", nargs="+", action="extend", metavar="NAME", default=None,
+                    help="only these checks or families (analytic, miller, paper, cross_body, throughput)")
+    va.add_argument("--quick", action="store_true", help="the quick set: small sizes, within 3 minutes on 2 cores")
+    va.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    va.add_argument("--out", metavar="DIR", default=None,
+                    help="validation.json and the work-precision PNGs go here (default reports/validation)")
+    va.add_argument("--work-precision", action="store_true",
+                    help="also sweep dt and resolution per body model and draw work-precision diagrams")
+    va.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
+    va.add_argument("--no-store", action="store_true", help="do not record the rows in the results database")
     return p
 
 
@@ -737,6 +751,74 @@ def cmd_peers(args) -> int:
             print(line)
         print(f"one process, one sitting, CPU time of the timing thread; stored as regress run {run_id} in {store}")
     return EXIT_OK
+class _stdout_to_stderr:
+    """Point file descriptor 1 at stderr inside the block (and restore it), Python's and C's writes alike."""
+
+    def __enter__(self):
+        sys.stdout.flush()
+        try:
+            self.saved = os.dup(1)
+            os.dup2(2, 1)
+        except OSError:  # no real descriptors (an embedding host): nothing to redirect
+            self.saved = None
+        return self
+
+    def __exit__(self, *exc):
+        if self.saved is not None:
+            sys.stdout.flush()
+            os.dup2(self.saved, 1)
+            os.close(self.saved)
+        return False
+
+
+def cmd_validate(args) -> int:
+    """Run the validation checks; exit 1 when any check FAILs, 0 otherwise, 2 for bad input (nothing run)."""
+    import time
+
+    from .harness.store import DEFAULT_STORE, record_validation_run
+    from .validation import run as V
+    from .validation.core import clean
+
+    pairs, bodies = V.select(args.check, args.body, args.quick)
+    store = Path(args.store) if args.store else DEFAULT_STORE
+    if not args.no_store and store.exists() and not store.is_file():
+        raise InputError("--store", None, f"{store} exists and is not a file")
+    out_dir = Path(args.out) if args.out else V.DEFAULT_OUT
+    if out_dir.exists() and not out_dir.is_dir():
+        raise InputError("--out", None, f"{out_dir} exists and is not a directory")
+    tty = not args.json and sys.stderr.isatty()
+    t0 = time.perf_counter()
+    # compiled libraries (LAPACK on a blown-up run's NaNs) print to file descriptor 1 directly: while the
+    # checks run, fd 1 points at stderr, so that --json's stdout holds exactly one JSON object
+    with _stdout_to_stderr():
+        rows = V.run_checks(pairs, args.quick, bodies,
+                            progress=(lambda m: print(f"validate: {m}", file=sys.stderr)) if tty else None)
+        wp = None
+        if args.work_precision:
+            from .validation.work_precision import run_work_precision
+            wp = run_work_precision(out_dir, bodies, args.quick, progress=(
+                lambda m: print(f"work-precision: {m}", file=sys.stderr)) if tty else None)
+    wall = time.perf_counter() - t0
+    dicts = [r.to_dict() for r in rows]
+    counts = V.summary(rows)
+    doc = clean({"quick": bool(args.quick), "bodies": list(bodies), "wall_s": wall, "counts": counts,
+                 "rows": dicts, "work_precision": wp})
+    run_id = None
+    if not args.no_store:
+        run_id = record_validation_run(store, dicts, args.quick, str(out_dir))
+    doc["run_id"] = run_id
+    V.write_json(out_dir, doc)
+    failed = counts.get("FAIL", 0) > 0
+    if args.json:
+        print(json.dumps(doc, allow_nan=False))
+    else:
+        for line in V.format_table(rows):
+            print(line)
+        print(", ".join(f"{n} {v}" for v, n in sorted(counts.items())) + f"; {wall:.0f} s"
+              + (f"; stored as validation run {run_id} in {store}" if run_id else "") + f"; {out_dir / V.JSON_NAME}")
+        if wp:
+            print("work-precision diagrams: " + ", ".join(wp["figures"]))
+    return EXIT_FAIL if failed else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -748,7 +830,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             args = parser.parse_args(["quick", *argv])
         code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
                 "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
-                "peers": cmd_peers}[args.command](args)
+                "peers": cmd_peers, "validate": cmd_validate}[args.command](args)
         sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
         return code
     except BrokenPipeError:

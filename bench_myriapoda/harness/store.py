@@ -4,7 +4,8 @@ One row per run in ``runs`` (resolved configuration and metrics as JSON, plus
 the most-queried fields as columns) and one row per metric in ``metrics``,
 written in a single transaction so an interrupted run leaves no partial row.
 ``regress_history`` holds one row per suite entry of each ``bench-myriapoda regress``
-run (``harness/regress.py``), again one transaction per run.
+run (``harness/regress.py``), again one transaction per run; ``validation`` one row per check
+and body of each ``bench-myriapoda validate`` run (``validation/``), one transaction per run.
 Both tables read directly with ``pandas.read_sql``::
 
     pd.read_sql("SELECT * FROM runs", sqlite3.connect("reports/results.sqlite"))
@@ -68,6 +69,29 @@ CREATE TABLE IF NOT EXISTS regress_history (
     PRIMARY KEY (run_id, entry)
 );
 CREATE INDEX IF NOT EXISTS regress_history_commit ON regress_history(git_commit);
+CREATE TABLE IF NOT EXISTS validation (
+    run_id INTEGER NOT NULL,              -- one `validate` run: all its rows share it (1, 2, ... per store)
+    check_name TEXT NOT NULL,             -- validation/registry.py name, e.g. analytic.hanging-bar
+    family TEXT NOT NULL,
+    body TEXT NOT NULL,                   -- a body model, or 'all' for a cross-body row
+    quantity TEXT NOT NULL,
+    measured_json TEXT,                   -- number or string, JSON
+    reference_json TEXT,
+    source TEXT NOT NULL,
+    tolerance TEXT NOT NULL,
+    verdict TEXT NOT NULL,                -- PASS, FAIL, NOT APPLICABLE, INFO
+    detail TEXT,
+    unit TEXT,
+    seconds REAL,                         -- wall time of the check on this body
+    figures_json TEXT NOT NULL DEFAULT '{}',
+    quick INTEGER NOT NULL,               -- 1 for `validate --quick`
+    out_dir TEXT,                         -- where the run wrote validation.json and work-precision PNGs
+    git_commit TEXT,
+    git_dirty INTEGER,
+    machine_json TEXT NOT NULL,
+    timestamp TEXT NOT NULL,
+    PRIMARY KEY (run_id, check_name, body)
+);
 """
 
 
@@ -239,6 +263,34 @@ def record_run(path: Path | str, result, command: str = "run", matrix: str | Non
             con.executemany("INSERT INTO metrics (run_id, name, value) VALUES (?,?,?)",
                             [(run_id, k, v if isinstance(v, (int, float)) else None) for k, v in metrics.items()])
         return run_id
+    finally:
+        con.close()
+
+
+def record_validation_run(path: Path | str, rows: list[dict[str, Any]], quick: bool, out_dir: str | None) -> int:
+    """Insert the rows of one ``validate`` run (``validation.core.Row.to_dict()``) into ``validation`` in one
+    transaction; return its run id (1, 2, ... per store)."""
+    mach = json.dumps(machine_fingerprint(), sort_keys=True)
+    commit, dirty = git_commit()
+    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    con = connect(path)
+    try:
+        con.execute("BEGIN IMMEDIATE")
+        try:
+            run_id = con.execute("SELECT COALESCE(MAX(run_id), 0) + 1 FROM validation").fetchone()[0]
+            con.executemany(
+                "INSERT INTO validation (run_id, check_name, family, body, quantity, measured_json, reference_json,"
+                " source, tolerance, verdict, detail, unit, seconds, figures_json, quick, out_dir, git_commit,"
+                " git_dirty, machine_json, timestamp) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(_finite(r["measured"])),
+                  json.dumps(_finite(r["reference"])), r["source"], r["tolerance"], r["verdict"], r["detail"], r["unit"],
+                  _finite(r["seconds"]), json.dumps(r["figures"], sort_keys=True), int(quick), out_dir, commit,
+                  None if dirty is None else int(dirty), mach, stamp) for r in rows])
+            con.commit()
+        except BaseException:
+            con.rollback()
+            raise
+        return int(run_id)
     finally:
         con.close()
 

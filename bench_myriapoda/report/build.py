@@ -12,7 +12,9 @@ or a terminal).  Sections, each an ``<section id=...>``:
 ``stability``     dt x stiffness heatmaps per body model (cases of a sweep over ``dt`` and a stiffness key)
 ``scaling``       steps/s against segment count and mesh resolution, log-log, fitted exponent
 ``energy``        kinetic, elastic, gravitational and total energy over time
-``paper``         figure-like images next to the papers' captions, for the cases that reproduce a figure
+``paper``         figure-like images next to the papers' captions, for the cases that reproduce a figure,
+                  each with its verdict (``report/validation.py``)
+``validation``    the latest ``validate`` verdicts and the work-precision diagrams (``report/validation.py``)
 ``history``       the ``regress`` history of normalized throughput (from the results store)
 ``baseline``      with ``--baseline DIR2``: each metric's change against DIR2, regressions highlighted
 
@@ -42,11 +44,12 @@ from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
 from .figure_files import report_style
 from .tables import comparison_tables, fmt, footnote_marks, html_table, md_table
+from .validation import figure_verdict, load_validation, section as validation_section
 
 SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
             ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
             ("stability", "Stability heatmaps (dt x stiffness)"), ("scaling", "Throughput scaling"),
-            ("energy", "Energy over time"), ("paper", "Reproduced paper figures"),
+            ("energy", "Energy over time"), ("paper", "Reproduced paper figures"), ("validation", "Validation"),
             ("history", "Performance history (regress)"), ("baseline", "Changes against the baseline"))
 MAX_GAIT_CASES = 12  # a matrix with many legged cases shows the first ones; the tables list all
 
@@ -173,7 +176,9 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     if not res.df.empty and body_wave.has_body_wave_sweep(res.df, res.grid_keys):
         body_wave.report_section(page, res)
     _energy(page, res, main)
-    _paper(page, res, main)
+    vdata = load_validation(d, Path(history_store) if history_store else None)
+    _paper(page, res, main, vdata)
+    validation_section(page, vdata, Path(history_store) if history_store else None)
     _history(page, Path(history_store) if history_store else None)
     regressions = _baseline(page, res, base, threshold)
     page.html.append("</section>")
@@ -420,7 +425,7 @@ def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         page.p("No recorded energies in this matrix.", "note")
 
 
-def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
+def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> None:
     from .gait_diagram import plot_gait_diagram
     from .series_plots import plot_side_strip
     from .trajectories import plot_top_views
@@ -438,6 +443,7 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         page.h3(f"{fig.figure} ({fig.paper}): {r.label}")
         page.html.append(f'<p class="caption">{html.escape(fig.caption)}</p>')
         page.md.append(f"> {fig.caption}\n")
+        figure_verdict(page, fig, r, res, vdata)
         s = series_from_recording(rec)
         scen = res.case(r.case_hash)["scenario"]
         food = res.case(r.case_hash).get("food")
@@ -474,6 +480,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         page.table(pd.DataFrame(rows))
         page.p("Here: one core of the machine that ran the matrix, a single run (see 'regress' for repeated "
                "medians); the paper: 6 cores with OpenMP.", "note")
+        page.p("Verdict: INFO -- informational: a different machine and core count; the ratio is the measured "
+               "figure, not a pass/fail criterion (validate: throughput.sec6-headline).", "note")
         found += 1
     if not found:
         page.p("No case of this matrix reproduces a paper figure (run scenarios/matrix/paper.toml or miller.toml).",

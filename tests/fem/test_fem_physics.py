@@ -11,8 +11,9 @@ keeping the explicit elastic update stable.
 import numpy as np
 import pytest
 
-from bench_myriapoda.bodies.fem.mesh import box_grid, lame_parameters
+from bench_myriapoda.bodies.fem.mesh import box_grid
 from bench_myriapoda.bodies.fem.system import DT_PAPER, FEMSystem
+from bench_myriapoda.validation.references import cantilever_ratio, hanging_bar, rotation
 from bench_myriapoda.world import terrain_kernels as T
 
 BAR_TOL = 0.05              # hanging bar: relative error of the bottom displacement
@@ -26,36 +27,9 @@ DAMPING_OSC_TOL = 1e-6      # per-step amplitude factor of an oscillating damped
 FRICTION_TOL = 0.05         # sliding distance vs v0^2 / (2 mu g)
 
 
-def relax(s, dt, chunk, max_steps, probe, rtol=1e-6, **kw):
-    """Advance in chunks until the probed displacement changes by < rtol per chunk."""
-    prev = probe()
-    for _ in range(max_steps // chunk):
-        r = s.advance(chunk, dt=dt, **kw)
-        assert r.ok, r
-        cur = probe()
-        if abs(cur - prev) < rtol * abs(cur):
-            return cur
-        prev = cur
-    raise AssertionError(f"no static state after {max_steps} steps (last change {abs(cur - prev) / abs(cur):.2e})")
-
-
 # ------------------------------------------------------------------------------------
 # Hanging bar under its own weight: u(bottom) = rho g L^2 / (2 E)
 # ------------------------------------------------------------------------------------
-def hanging_bar(n_len, nu, E=1e4, rho=1.0, g=9.81, L=1.0, a=0.2):
-    """Bar along y, top face fixed, cells (n/4, n, n/4).  Strain rho g L / E ~ 1e-3."""
-    nc = max(1, n_len // 4)
-    nodes, tets = box_grid((a, L, a), (nc, n_len, nc))
-    lam, mu = lame_parameters(E, nu)
-    dt = 1e-3
-    h = min(a / nc, L / n_len)
-    s = FEMSystem(nodes, tets, E=E, nu=nu, rho=rho, gamma=4.0 * (lam + 2 * mu) * dt / h**2)
-    s.set_fixed(np.isclose(nodes[:, 1], L))
-    bottom = np.isclose(nodes[:, 1], 0.0)
-    u = relax(s, dt, 100, 20000, lambda: -(s.x[bottom, 1] - nodes[bottom, 1]).mean(), gravity=(0.0, -g, 0.0))
-    return s, u / (rho * g * L**2 / (2 * E))
-
-
 def test_hanging_bar_converges_to_analytic_and_fixed_nodes_carry_the_weight():
     # nu = 0.3 with the top face clamped: the discretisation error is visible and
     # must shrink with refinement (measured ratios 0.945, 0.967, 0.979).  With
@@ -81,34 +55,6 @@ def test_hanging_bar_converges_to_analytic_and_fixed_nodes_carry_the_weight():
 # ------------------------------------------------------------------------------------
 # Cantilever with a tip load: P L^3 / (3 E I) + P L / (kappa G A)
 # ------------------------------------------------------------------------------------
-def cantilever_ratio(cells, E=1e4, nu=0.0, L=0.5, H=0.1, W=0.1):
-    """Beam along x clamped at x = 0, tip load -P y spread over the tip nodes.
-
-    L/H = 5 is stocky, so the shear term (2.3 %) is included, kappa = 10 (1 + nu) /
-    (12 + 11 nu) for a rectangle.  The load gives a tip deflection of 1e-4 L, small
-    enough for the corotational model to act linearly.  nu = 0 keeps the clamped
-    face from adding Poisson constraint that beam theory does not have.
-    """
-    I = W * H**3 / 12
-    A = W * H
-    G = E / (2 * (1 + nu))
-    kappa = 10 * (1 + nu) / (12 + 11 * nu)
-    P = 3 * E * I * 1e-4 * L / L**3
-    ref = P * L**3 / (3 * E * I) + P * L / (kappa * G * A)
-    nodes, tets = box_grid((L, H, W), cells)
-    lam, mu = lame_parameters(E, nu)
-    dt = 1e-3
-    h = min(L / cells[0], H / cells[1], W / cells[2])
-    s = FEMSystem(nodes, tets, E=E, nu=nu, rho=30.0, gamma=2.0 * (lam + 2 * mu) * dt / h**2)
-    s.set_fixed(np.isclose(nodes[:, 0], 0.0))
-    tip = np.isclose(nodes[:, 0], L)
-    f_ext = np.zeros_like(nodes)
-    f_ext[tip, 1] = -P / tip.sum()
-    u = relax(s, dt, 200, 20000, lambda: -(s.x[tip, 1] - nodes[tip, 1]).mean(), rtol=2e-5,
-              gravity=(0.0, 0.0, 0.0), f_ext=f_ext)
-    return u / ref
-
-
 def test_cantilever_tip_deflection_converges_to_beam_theory():
     # Linear tets lock in bending: refine through the depth and along the length.
     # Measured tip ratios: 0.754, 0.925, 0.979 (1 cell across the width, nu = 0).
@@ -121,12 +67,6 @@ def test_cantilever_tip_deflection_converges_to_beam_theory():
 # ------------------------------------------------------------------------------------
 # Rigid motions produce no elastic force
 # ------------------------------------------------------------------------------------
-def rotation(axis, angle):
-    a = np.asarray(axis, float) / np.linalg.norm(axis)
-    Kx = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + np.sin(angle) * Kx + (1 - np.cos(angle)) * Kx @ Kx
-
-
 @pytest.mark.parametrize("tets_per_cell", [5, 6])
 def test_rigid_rotation_gives_zero_force(tets_per_cell):
     nodes, tets = box_grid((1.0, 0.6, 0.4), (3, 2, 2), tets_per_cell=tets_per_cell)

@@ -1,0 +1,214 @@
+"""Analytic checks (shared/reference/VALIDATION.md, "Analytic"): closed-form answers the body
+models must reproduce.  Formulas in ``references``; tolerances here, one constant each, so a
+test can break one on purpose.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import references as R
+from .core import Context, Outcome, at_most, failed_run, holds, not_applicable, relative
+
+WORM_REL_TOL = 0.05          # eps * Lambda within 5 % once the gait is steady (VALIDATION.md)
+BAR_REL_TOL = 0.05           # hanging bar on a converged mesh (VALIDATION.md)
+CANTILEVER_REL_TOL = 0.05    # tip deflection, converged (VALIDATION.md)
+RIGID_REL_TOL = 1e-10        # |f| / (mu V^(2/3)) under a rigid motion (VALIDATION.md)
+MOMENTUM_REL_TOL = 1e-10     # |P - (P0 + M g t)| / (|P0| + M g t) in free flight (round-off: ~1e-14 seen)
+STABLE_DT_REL_TOL = 0.08     # bisection bracket 2 % plus the finite duration growth needs to show
+DAMPING_EXACT_TOL = 1e-10    # backward-Euler factor of a pure damping mode (linear algebra)
+DAMPING_OSC_TOL = 1e-6       # |eigenvalue| of the linearized one-step map (finite differences)
+
+
+# --------------------------------------------------------------------------- the worm: eps * Lambda
+
+def worm_eps_lambda(ctx: Context, body: str) -> Outcome:
+    """The rectilinear worm's displacement per cycle against eps * Lambda (perfect anchoring)."""
+    duration = 16.0 if ctx.quick else 30.0
+    r = ctx.run("worm", body, "flat", duration=duration)
+    case = r.case
+    ref = R.worm_displacement_per_cycle(case.gait.amplitude, case.gait.wavelength_bl * case.creature.body_length_m)
+    if r.status != "ok":
+        return failed_run(r, ref)
+    return relative(r.metrics["displacement_per_cycle_m"], ref, WORM_REL_TOL, "m",
+                    cycles=r.metrics.get("cycles_measured"), duration_s=duration,
+                    travel_angle_deg=r.metrics.get("travel_angle_deg"))
+
+
+# --------------------------------------------------------------------------- FEM statics
+
+def hanging_bar(ctx: Context, body: str) -> Outcome:
+    """FEM bar hanging under its own weight (nu = 0.3, top face clamped) against rho g L^2 / (2 E)."""
+    n = 8 if ctx.quick else 16
+    _s, ratio = R.hanging_bar(n, nu=0.3)
+    E, rho, g, L = 1e4, 1.0, 9.81, 1.0
+    ref = R.hanging_bar_displacement(rho, g, L, E)
+    return relative(ratio * ref, ref, BAR_REL_TOL, "m", detail=f"{n} cells along the bar; ratio {ratio:.4f} "
+                    "(linear tets converge from the stiff side)", cells_along=n, ratio=ratio)
+
+
+def cantilever(ctx: Context, body: str) -> Outcome:
+    """FEM cantilever with a tip load against P L^3 / (3 E I) + P L / (kappa G A)."""
+    cells = (40, 8, 1) if ctx.quick else (60, 12, 1)
+    ratio = R.cantilever_ratio(cells)
+    return relative(ratio, 1.0, CANTILEVER_REL_TOL, "x beam theory",
+                    detail=f"cells {cells}; linear tets lock in bending and converge from the stiff side",
+                    cells=str(cells))
+
+
+def rigid_rotation(ctx: Context, body: str) -> Outcome:
+    """Elastic force of a rotated (and translated) rest shape: zero for a fixed-corotational mesh and for
+    the lattice's springs."""
+    rng = np.random.default_rng(11)
+    angles = (1e-3, 0.4, 2.0, np.pi - 1e-6)  # small ones by Newton, large by the SVD fallback (FEM)
+    worst = 0.0
+    if body == "fem":
+        from ..bodies.fem.mesh import box_grid
+        from ..bodies.fem.system import FEMSystem
+        for tpc in (5, 6):
+            nodes, tets = box_grid((1.0, 0.6, 0.4), (3, 2, 2), tets_per_cell=tpc)
+            s = FEMSystem(nodes, tets)
+            scale = s.mu.max() * s.vol.max() ** (2 / 3)
+            for angle in angles:
+                s.x[:] = nodes @ R.rotation(rng.normal(size=3), angle).T + rng.normal(size=3)
+                worst = max(worst, np.abs(s.elastic_forces()).max() / scale)
+    elif body == "massspring":
+        from ..bodies.massspring import kernels as K
+        from ..bodies.massspring.body import BodyMassSpring
+        from ..core.config import resolve_case
+        b = BodyMassSpring(resolve_case("worm", "massspring", "flat", overrides=["creature.segments=4"]))
+        lat = b.lattice
+        x0 = lat.rest_nodes
+        scale = float(np.max(b.stiffness)) * float(np.max(lat.rest_length))
+        for angle in angles:
+            x = x0 @ R.rotation(rng.normal(size=3), angle).T + rng.normal(size=3)
+            f = np.zeros_like(x)
+            K.spring_forces(x, np.zeros_like(x), lat.springs, b.stiffness, np.zeros(lat.n_springs),
+                            lat.rest_length, f)
+            worst = max(worst, np.abs(f).max() / scale)
+    else:
+        return not_applicable("the hybrid's links are the fem body's FEMSystem (checked on fem); its boxes are rigid",
+                              0.0, f"< {RIGID_REL_TOL:g}")
+    return at_most(worst, RIGID_REL_TOL, "", reference=0.0,
+                   detail="max |f| relative to mu V^(2/3) (fem) or k L (lattice) over 4 rotations")
+
+
+# --------------------------------------------------------------------------- dynamics
+
+def _momentum(body) -> np.ndarray:
+    if hasattr(body, "momenta"):
+        return body.momenta()[0]
+    mass = body.system.mass if hasattr(body, "system") else body.mass
+    return (mass[:, None] * body.v).sum(axis=0)
+
+
+def _mass(body) -> float:
+    if hasattr(body, "total_mass"):
+        return float(body.total_mass)
+    return float((body.system.mass if hasattr(body, "system") else body.mass).sum())
+
+
+def free_fall_momentum(ctx: Context, body: str) -> Outcome:
+    """A tumbling, vibrating body in free flight (no ground): P(t) = P0 + M g t at every sample."""
+    from ..core.config import resolve_case
+    from ..harness.runner import Creature
+
+    duration = 0.3 if ctx.quick else 1.0
+    case = resolve_case("worm", body, "drop", duration=duration, overrides=[
+        "scenario.terrain=none", "scenario.passive=true", "scenario.perturbation_m=0.005", "creature.segments=6"])
+    cr = Creature(case)
+    cr.compile()
+    b = cr.body
+    b.v[:] += np.array([0.3, 1.0, -0.2])  # a moving start: P0 != 0
+    if hasattr(b, "sync_attached"):
+        b.rigid.v[:] += np.array([0.3, 1.0, -0.2])
+        b.sync_attached()
+    M, g = _mass(b), np.array([0.0, -case.scenario.gravity_m_s2, 0.0])
+    P0 = _momentum(b)
+    worst, done, chunk = 0.0, 0, max(1, int(round(0.01 / case.dt)))
+    while done < case.steps:
+        k, code = cr.advance(done * case.dt, min(chunk, case.steps - done))
+        if code != 0:
+            return Outcome("FAIL", None, "P0 + M g t", f"< {MOMENTUM_REL_TOL:g} relative", b.status_text(code))
+        done += k
+        t = done * case.dt
+        err = np.linalg.norm(_momentum(b) - (P0 + M * g * t)) / (np.linalg.norm(P0) + M * np.linalg.norm(g) * t)
+        worst = max(worst, err)
+    return at_most(worst, MOMENTUM_REL_TOL, reference="P0 + M g t",
+                   detail=f"max relative error over {done} steps ({duration:g} s, 6 segments, no ground)")
+
+
+def stable_dt(ctx: Context, body: str) -> Outcome:
+    """``stable-dt`` on an undamped 3-segment lattice against symplectic Euler's limit 2 / omega_max."""
+    from ..bodies.massspring.body import BodyMassSpring
+    from ..core.config import resolve_case
+    from ..harness.stable_dt import find_stable_dt
+
+    case = resolve_case("worm", "massspring", "drop", duration=1.0 if ctx.quick else 2.0, overrides=[
+        "creature.segments=3", "scenario.passive=true", "scenario.gravity_m_s2=0", "scenario.start_height_m=1",
+        "body.damping=0", "scenario.perturbation_m=1e-6"])
+    expected = R.symplectic_euler_dt_limit(R.lattice_omega_max(BodyMassSpring(case)))
+    res = find_stable_dt(case, rel_tol=0.02)
+    return relative(res.stable_dt_max_s, expected, STABLE_DT_REL_TOL, "s",
+                    detail=f"bracket [{res.stable_dt_max_s:.4g}, {res.unstable_dt_min_s:.4g}] s",
+                    unstable_dt_min_s=res.unstable_dt_min_s)
+
+
+def damping_pure_mode(ctx: Context, body: str) -> Outcome:
+    """v' = (M + h D)^-1 M v: a generalized eigenvector D phi = lam M phi decays by 1 / (1 + lam h) per step."""
+    from scipy.linalg import eigh
+
+    from ..bodies.fem.mesh import box_grid
+    from ..bodies.fem.system import FEMSystem
+
+    nodes, tets = box_grid((1.0, 0.5, 0.5), (2, 1, 1))
+    s = FEMSystem(nodes, tets, gamma=300.0)
+    mask = np.isclose(nodes[:, 0], 0.0)
+    s.set_fixed(mask)
+    free = ~mask
+    lam_d, phi = eigh(s.D.toarray()[np.ix_(free, free)], np.diag(s.mass[free]))
+    h = 1e-3
+    worst, k_last = 0.0, len(lam_d) - 1
+    for k in (0, len(lam_d) // 2, k_last):
+        s.x[:] = nodes
+        s.v[:] = 0.0
+        s.v[free, 2] = phi[:, k]
+        s.advance(1, dt=h, gravity=(0.0, 0.0, 0.0))
+        expected = R.backward_euler_damping_factor(lam_d[k], h)
+        worst = max(worst, float(np.max(np.abs(s.v[free, 2] / phi[:, k] / expected - 1.0))))
+    ref = R.backward_euler_damping_factor(lam_d[k_last], h)
+    return at_most(worst, DAMPING_EXACT_TOL, reference=ref,
+                   detail=f"max relative error of the per-step factor over 3 modes (stiffest: {ref:.6f} per step)")
+
+
+def damping_oscillating_mode(ctx: Context, body: str) -> Outcome:
+    """One free node on a tet: every underdamped mode of the App. A step decays by 1 / sqrt(1 + c h) per step,
+    c = 3 gamma / rho, from the eigenvalues of the linearized one-step map."""
+    from ..bodies.fem.system import FEMSystem
+
+    nodes = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    rho, gamma, h = 1.0, 40.0, 1e-3
+    s = FEMSystem(nodes, np.array([[0, 1, 2, 3]]), E=2.0e4, nu=0.3, rho=rho, gamma=gamma)
+    s.set_fixed(np.array([True, True, True, False]))
+    eps = 1e-7
+    J = np.zeros((6, 6))
+    for j in range(6):
+        out = []
+        for sign in (1.0, -1.0):
+            s.x[:] = nodes
+            s.v[:] = 0.0
+            if j < 3:
+                s.x[3, j] += sign * eps
+            else:
+                s.v[3, j - 3] += sign * eps
+            s.advance(1, dt=h, gravity=(0.0, 0.0, 0.0))
+            out.append(np.concatenate([s.x[3] - nodes[3], s.v[3]]))
+        J[:, j] = (out[0] - out[1]) / (2 * eps)
+    ev = np.linalg.eigvals(J)
+    expected = R.semi_implicit_oscillator_factor(3.0 * gamma / rho, h)
+    oscillating = bool(np.all(np.abs(ev.imag) > 0))
+    err = float(np.max(np.abs(np.abs(ev) / expected - 1.0)))
+    if not oscillating:
+        return holds(False, float(np.abs(ev).max()), expected, "all modes underdamped", "a mode is overdamped")
+    return at_most(err, DAMPING_OSC_TOL, reference=expected,
+                   detail=f"max relative error of |eigenvalue| over 6 eigenvalues; expected {expected:.8f} per step "
+                          f"(c = 3 gamma / rho = {3 * gamma / rho:g} 1/s, h = {h:g} s)")

@@ -1,0 +1,161 @@
+"""Miller 1988, image by image, and the kinematic slithering reference (Hu et al. 2009).
+
+Image 1 (worm on the book and over the edge), Image 2 (the undulating snake: coils form and the
+segments follow one path), Image 3 (the sidewinder travels diagonally and reverses with the phase),
+Image 4 (the caterpillar climbs a slope without sliding back).
+
+The image checks run each of ``reference.miller_images.RUNS`` (issue 11) on the body under test and
+pass when every described behaviour of ``reference.miller_images.evaluate`` passes; the sidewinder
+check adds the reversal with the phase (VALIDATION.md), which needs a second run.  The ``judge_*``
+functions are the simpler criteria the report applies to a matrix case it draws (its own metrics
+and recording, whatever its duration).  The slithering check compares the snake with
+``reference.slithering.steady_slithering`` fed with the body's own measured curvature amplitude and
+wavelength; without that module it reports NOT APPLICABLE.
+"""
+from __future__ import annotations
+
+import importlib
+import math
+
+import numpy as np
+
+from .core import Context, Outcome, failed_run, holds, not_applicable, relative
+
+MILLER = "Miller 1988"
+PATH_FOLLOWING_MAX_BL = 0.05      # Image 2: segments within 5 % of a body length of the head's path
+SNAKE_MIN_BL_PER_CYCLE = 0.02     # ... while it really moves (VALIDATION.md: isotropic snake stays below this)
+SIDEWINDER_MIN_ANGLE_DEG = 45.0   # Image 3: diagonal travel
+SIDEWINDER_REVERSAL_RATIO = 0.5   # the reversed gait's sideways speed at least half the forward one's
+SLITHERING_REL_TOL = 0.25         # dynamic snake vs the inertia-free kinematic model (Fr small, not zero)
+SLITHERING_RATIOS = (2.0, 4.0, 8.0)  # mu_t / mu_f of the sweep
+SLITHERING_MU_F = 0.1
+
+
+def optional_reference(module: str):
+    """``bench_myriapoda.reference.<module>`` or None when it is not there (helper branch i11a)."""
+    try:
+        return importlib.import_module(f"bench_myriapoda.reference.{module}")
+    except ImportError:
+        return None
+
+
+def image_run(run_key: str, sidewinder_reversal: bool = False):
+    """A check function running ``reference.miller_images.RUNS[run_key]`` and its described behaviours."""
+
+    def measure(ctx: Context, body: str) -> Outcome:
+        mod = optional_reference("miller_images")
+        if mod is None:
+            return not_applicable("bench_myriapoda.reference.miller_images (issue 11) is not on this branch")
+        spec = mod.RUNS[run_key]
+        r = ctx.run(spec.creature, body, spec.scenario, spec.gait, duration=spec.duration_s,
+                    overrides=tuple(spec.overrides))
+        if r.status != "ok":
+            return failed_run(r, "every described behaviour")
+        checks = mod.evaluate(run_key, r.series, r.case, r.metrics)
+        lines = [c.line() for c in checks]
+        figures = {f"{c.image}:{c.name}": c.measured for c in checks}
+        passed = sum(bool(c.passed) for c in checks)
+        ok = passed == len(checks)
+        if sidewinder_reversal:
+            minus = ctx.run(spec.creature, body, spec.scenario, spec.gait, duration=spec.duration_s,
+                            overrides=tuple(spec.overrides) + ("gait.vertical_phase_deg=-90",))
+            if minus.status != "ok":
+                return failed_run(minus, "reverses with the phase")
+            lp = r.metrics.get("lateral_speed_m_per_s", math.nan)
+            lm = minus.metrics.get("lateral_speed_m_per_s", math.nan)
+            rev = lp * lm < 0 and min(abs(lp), abs(lm)) > SIDEWINDER_REVERSAL_RATIO * max(abs(lp), abs(lm))
+            lines.append(f"reversal with the vertical phase flipped: sideways {lp:+.4f} -> {lm:+.4f} m/s "
+                         + ("pass" if rev else "FAIL"))
+            figures.update(lateral_plus=lp, lateral_minus=lm)
+            ok = ok and bool(rev)
+            passed += int(bool(rev))
+        n = len(lines)
+        return holds(ok, f"{passed}/{n} behaviours", f"all {n} (Images; reference.miller_images)",
+                     "every described behaviour", "; ".join(lines), **figures)
+
+    measure.__doc__ = f"Miller's images: the described behaviours of run {run_key!r} (reference.miller_images)."
+    return measure
+
+
+# --------------------------------------------------------------------------- Image 1
+
+def judge_worm_book(com, sc) -> Outcome:
+    """Image 1 criteria on the centre of mass path com (T, 3) [m] and the cliff scenario ``sc``."""
+    ref = "ends below half the book height, past the edge (Image 1 a-d)"
+    com = np.asarray(com)
+    ok = com[0, 1] > sc.slab_height_m and com[-1, 1] < 0.5 * sc.slab_height_m and com[-1, 0] > sc.slab_edge_x_m
+    return holds(bool(ok), f"COM height {com[-1, 1] * 100:.1f} cm at x = {com[-1, 0] * 100:+.1f} cm", ref,
+                 f"height < {0.5 * sc.slab_height_m * 100:g} cm, x > edge",
+                 f"started at height {com[0, 1] * 100:.1f} cm; book {sc.slab_height_m * 100:g} cm",
+                 final_height_m=float(com[-1, 1]), final_x_m=float(com[-1, 0]))
+
+
+# --------------------------------------------------------------------------- Image 2
+
+def judge_snake_coils(m: dict) -> Outcome:
+    """Image 2 criteria on a snake run's metrics."""
+    ref = f"path-following error <= {PATH_FOLLOWING_MAX_BL:g} BL while moving >= {SNAKE_MIN_BL_PER_CYCLE:g} BL/cycle"
+    pf = m.get("path_following_error_bl", math.nan)
+    v = m.get("speed_bl_per_cycle", math.nan)
+    ok = pf <= PATH_FOLLOWING_MAX_BL and v >= SNAKE_MIN_BL_PER_CYCLE
+    return holds(bool(ok), f"{pf:.3f} BL at {v:.3f} BL/cycle", ref, "both bounds",
+                 f"speed {m.get('speed_m_per_s', math.nan):.4f} m/s", "",
+                 path_following_error_bl=pf, speed_bl_per_cycle=v)
+
+
+# --------------------------------------------------------------------------- Image 3
+
+# --------------------------------------------------------------------------- Image 4
+
+def judge_caterpillar_slope(t, com, period_s: float, slope_deg: float, speed_bl_per_cycle: float = math.nan) -> Outcome:
+    """Image 4 criterion: progress up the slope in every gait cycle after the first two."""
+    a = math.radians(slope_deg)
+    progress = np.asarray(com) @ np.array([math.cos(a), math.sin(a), 0.0])
+    t = np.asarray(t)
+    idx = [int(np.searchsorted(t, k * period_s)) for k in range(2, int(t[-1] / period_s))]
+    per_cycle = np.diff(progress[idx]) if len(idx) > 1 else np.array([])
+    if per_cycle.size == 0:
+        return not_applicable(f"the run ({t[-1]:.1f} s) holds no complete cycle after two {period_s:g} s cycles")
+    ok = bool(np.all(per_cycle > 0.0))
+    worst = float(per_cycle.min())
+    return holds(ok, f"min {worst * 1000:+.1f} mm/cycle", "> 0 every cycle", "> 0",
+                 f"{per_cycle.size} cycles on {slope_deg:g} deg; speed {speed_bl_per_cycle:.3f} BL/cycle", "m",
+                 min_progress_per_cycle_m=worst)
+
+
+# --------------------------------------------------------------------------- slithering reference
+
+def slithering(ctx: Context, body: str) -> Outcome:
+    """The snake's forward speed over a mu_t / mu_f sweep against the kinematic model of Hu et al. 2009."""
+    mod = optional_reference("slithering")
+    src = "Hu et al. 2009 kinematic model (reference.slithering.steady_slithering)"
+    if mod is None or not hasattr(mod, "steady_slithering"):
+        return not_applicable("bench_myriapoda.reference.slithering (issue 11) is not on this branch",
+                              src, f"{100 * SLITHERING_REL_TOL:g} % relative")
+    ratios = SLITHERING_RATIOS[1:] if ctx.quick else SLITHERING_RATIOS
+    measured, reference = [], []
+    for ratio in ratios:
+        over = ("friction.model=coulomb", f"friction.mu_forward={SLITHERING_MU_F}", "friction.mu_backward=0.3",
+                f"friction.mu_transverse={ratio * SLITHERING_MU_F}")
+        r = ctx.run("snake", body, "flat", "lateral-undulation", duration=8.0 if ctx.quick else 16.0, overrides=over)
+        if r.status != "ok":
+            return failed_run(r, src)
+        # the model is fed the body's own measured shape (metrics.body_shape), so it tests the friction
+        # balance, not how well the muscles reproduce the commanded curvature
+        curvature = r.metrics.get("curvature_amplitude", math.nan)
+        wavelength = r.metrics.get("body_wavelength_bl", math.nan)
+        if not (math.isfinite(curvature) and math.isfinite(wavelength) and wavelength > 0):
+            return Outcome("FAIL", None, src, f"{100 * SLITHERING_REL_TOL:g} % relative",
+                           f"mu_t/mu_f {ratio:g}: no measurable body wave (curvature {curvature}, wavelength "
+                           f"{wavelength})")
+        ref = mod.steady_slithering(curvature, wavelength, SLITHERING_MU_F, 0.3,
+                                    ratio * SLITHERING_MU_F).speed_bl_per_cycle
+        measured.append(r.metrics["speed_bl_per_cycle"])
+        reference.append(float(ref))
+    err = max(abs(m - f) / abs(f) for m, f in zip(measured, reference))
+    out = relative(measured[-1], reference[-1], SLITHERING_REL_TOL, "BL/cycle",
+                   detail="mu_t/mu_f " + ", ".join(f"{q:g}: {m:.3f} vs {f:.3f}" for q, m, f in
+                                                    zip(ratios, measured, reference)) + f"; worst {err:.2f}")
+    ok = err <= SLITHERING_REL_TOL
+    return Outcome("PASS" if ok else "FAIL", measured[-1], reference[-1], out.tolerance, out.detail, out.unit,
+                   {"worst_rel_error": err})

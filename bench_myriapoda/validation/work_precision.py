@@ -1,0 +1,201 @@
+"""Work-precision diagrams: error against a reference vs cost, per body model, log-log.
+
+For each quantity (``QUANTITIES``) and body model the case runs over a sweep of dt (the body's
+default dt times ``DT_FACTORS``; the fem and hybrid bodies also over ``body.resolution`` at the
+finest dt).  Error is |q - q_ref| / |q_ref| with q_ref
+
+* analytic where one exists (the worm's eps * Lambda; the fem hanging worm's rho g L^2 / (2 E)), else
+* the same body refined in dt: dt / 8 (quick: dt / 4); the change between the last two dt levels
+  is reported (``ref_change``; converged when < 0.5 %).  The fem and hybrid bodies also run at
+  resolution - 1 and + 1 at the finest dt, their error taken against resolution + 1
+  (``resolution_change``: how much the default resolution is off), drawn as open markers.
+
+Cost is CPU seconds per simulated second (``time.process_time`` around the run, minus the JIT
+compilation the runner times).  One PNG per quantity, one curve per body (the dt sweep, solid);
+the resolution points are open markers of the same colour.  ``work_precision.json`` holds every
+point, so tests assert on the data, not on pixels.
+"""
+from __future__ import annotations
+
+import json
+import math
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from ..core.errors import InputError
+from .core import ALL_BODIES, clean
+
+DT_FACTORS = (2.0, 1.0, 0.5, 0.25)
+REF_DT_FACTOR = 0.125
+QUICK_DT_FACTORS = (2.0, 1.0, 0.5)
+QUICK_REF_DT_FACTOR = 0.25
+CONVERGED_CHANGE = 0.005   # the refined reference counts as converged when refining changes it < 0.5 %
+HANG_GRAVITY = 1.0         # [m/s^2] hanging worm: strain ~2.4 % on the fem body, small enough for linear theory
+
+
+@dataclass(frozen=True)
+class Quantity:
+    name: str           # file stem
+    title: str
+    creature: str
+    scenario: str
+    gait: str | None
+    metric: str
+    duration: float     # [s], full
+    quick_duration: float
+    overrides: tuple[str, ...] = ()
+
+
+QUANTITIES = (
+    Quantity("worm_displacement", "worm displacement per cycle", "worm", "flat", None, "displacement_per_cycle_m",
+             16.0, 10.0),
+    Quantity("hanging_elongation", "hanging worm elongation", "worm", "hang", None, "hanging_elongation_m",
+             3.0, 2.0, (f"scenario.gravity_m_s2={HANG_GRAVITY}",)),
+    Quantity("snake_speed", "snake forward speed", "snake", "flat", "lateral-undulation", "speed_m_per_s",
+             8.0, 4.0),
+)
+
+
+def analytic_reference(q: Quantity, case) -> float | None:
+    """The analytic value of ``q`` for this case, or None when there is none for its body model."""
+    from .references import hanging_bar_displacement, worm_displacement_per_cycle
+
+    if q.name == "worm_displacement":
+        return worm_displacement_per_cycle(case.gait.amplitude, case.gait.wavelength_bl * case.creature.body_length_m)
+    if q.name == "hanging_elongation" and case.body.name == "fem":
+        cre = case.creature
+        rho = case.body.density_kg_m3 if case.body.density_kg_m3 > 0 else \
+            cre.mass_kg / (cre.body_length_m * cre.width_m * cre.height_m)
+        return hanging_bar_displacement(rho, case.scenario.gravity_m_s2, cre.body_length_m, case.body.youngs_modulus_pa)
+    return None
+
+
+def measure(q: Quantity, body: str, dt_factor: float, resolution: int | None, quick: bool) -> dict:
+    """One point: the quantity and the cost of the case at dt = default * dt_factor (and resolution)."""
+    from ..core.config import resolve_case
+    from ..harness.runner import run_case
+
+    over = list(q.overrides) + ([f"body.resolution={resolution}"] if resolution is not None else [])
+    base = resolve_case(q.creature, body, q.scenario, q.gait, overrides=over)
+    dur = q.quick_duration if quick else q.duration
+    case = resolve_case(q.creature, body, q.scenario, q.gait, duration=dur, dt=base.dt * dt_factor, overrides=over)
+    c0 = time.process_time()
+    r = run_case(case)
+    cpu = time.process_time() - c0 - (r.timings.get("compile_s") or 0.0)
+    value = r.metrics.get(q.metric, math.nan) if r.status == "ok" else math.nan
+    return {"body": body, "dt": case.dt, "dt_factor": dt_factor, "resolution": resolution, "status": r.status,
+            "value": value, "cpu_s_per_sim_s": max(cpu, 1e-6) / dur, "case": case}
+
+
+def _default_resolution(q: Quantity, body: str) -> int | None:
+    if body == "massspring":
+        return None
+    from ..core.config import resolve_case
+    return int(resolve_case(q.creature, body, q.scenario, q.gait, overrides=list(q.overrides)).body.resolution)
+
+
+def _warm_up(q: Quantity, body: str) -> None:
+    """Compile the body's and controller's kernels before anything is timed (numba caches them)."""
+    from ..core.config import resolve_case
+    from ..harness.runner import run_case
+
+    base = resolve_case(q.creature, body, q.scenario, q.gait, overrides=list(q.overrides))
+    run_case(resolve_case(q.creature, body, q.scenario, q.gait, duration=20 * base.dt, overrides=list(q.overrides)))
+
+
+def sweep(q: Quantity, body: str, quick: bool, progress: Callable[[str], None] | None = None) -> dict:
+    """Every point of one body's curve for ``q``, with the references and the errors.
+
+    The curve (``dt_points``) runs over dt at the body's default resolution; its reference is the
+    analytic value where one exists, else the same case at dt * ``REF_DT_FACTOR``.  The resolution
+    points run at that finest dt over resolution - 1 and + 1, their error taken against resolution + 1:
+    the spatial error the dt curve does not include (``resolution_change``: default vs finer).
+    """
+    factors = QUICK_DT_FACTORS if quick else DT_FACTORS
+    ref_factor = QUICK_REF_DT_FACTOR if quick else REF_DT_FACTOR
+    res0 = _default_resolution(q, body)
+    _warm_up(q, body)
+    pts = []
+    for f in factors:
+        if progress:
+            progress(f"{q.name} on {body}: dt x {f:g}")
+        pts.append(measure(q, body, f, res0, quick))
+    fine = measure(q, body, ref_factor, res0, quick)
+    res_pts = []
+    if res0 is not None:
+        for res in (res0 - 1, res0 + 1):
+            if progress:
+                progress(f"{q.name} on {body}: resolution {res}")
+            try:
+                res_pts.append(measure(q, body, ref_factor, res, quick))
+            except InputError:  # below the body's smallest resolution (the hybrid needs >= 3 nodes)
+                continue
+    finer = next((p for p in res_pts if p["resolution"] == res0 + 1), None) if res0 is not None else None
+    analytic = analytic_reference(q, fine["case"])
+    if analytic is not None:
+        ref, kind = analytic, "analytic"
+    else:
+        ref, kind = fine["value"], f"refined: dt x {ref_factor:g}"
+    dt_change = abs(fine["value"] - pts[-1]["value"]) / abs(fine["value"]) if fine["value"] else math.nan
+    res_change = math.nan
+    if finer is not None and math.isfinite(finer["value"]) and finer["value"]:
+        res_change = abs(fine["value"] - finer["value"]) / abs(finer["value"])
+    for p in pts + [fine]:
+        p["error"] = abs(p["value"] - ref) / abs(ref) if math.isfinite(p["value"]) and ref else math.nan
+    for p in res_pts:
+        r = finer["value"] if finer is not None else math.nan
+        p["error"] = abs(p["value"] - r) / abs(r) if math.isfinite(p["value"]) and r else math.nan
+    for p in pts + [fine] + res_pts:
+        p.pop("case", None)
+    return {"body": body, "reference": ref, "reference_kind": kind, "ref_change": dt_change,
+            "resolution_change": res_change, "converged": bool(dt_change < CONVERGED_CHANGE),
+            "dt_points": pts + ([fine] if analytic is not None else []), "resolution_points": res_pts,
+            "reference_point": fine}
+
+
+def plot(q: Quantity, curves: list[dict], path: Path) -> Path:
+    """Log-log error vs cost, one solid curve per body (dt sweep), open markers for the resolution sweep."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ..report.figure_files import save_figure
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for i, c in enumerate(curves):
+        color = f"C{i}"
+        pts = [p for p in c["dt_points"] if math.isfinite(p["error"]) and p["error"] > 0]
+        if pts:
+            ax.loglog([p["cpu_s_per_sim_s"] for p in pts], [p["error"] for p in pts], "o-", color=color,
+                      label=f"{c['body']} (dt sweep; ref {c['reference_kind']})")
+            for p in pts:
+                ax.annotate(f"dt x{p['dt_factor']:g}", (p["cpu_s_per_sim_s"], p["error"]), fontsize=6,
+                            xytext=(3, 3), textcoords="offset points")
+        rp = [p for p in c["resolution_points"] if math.isfinite(p["error"]) and p["error"] > 0]
+        if rp:
+            ax.loglog([p["cpu_s_per_sim_s"] for p in rp], [p["error"] for p in rp], "s", mfc="none", color=color,
+                      linestyle="none", label=f"{c['body']} (resolution {', '.join(str(p['resolution']) for p in rp)})")
+    ax.set_xlabel("cost [CPU s per simulated s]")
+    ax.set_ylabel("relative error")
+    ax.set_title(f"Work-precision: {q.title}")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    return save_figure(fig, path)
+
+
+def run_work_precision(out_dir: Path, bodies=ALL_BODIES, quick: bool = False,
+                       progress: Callable[[str], None] | None = None, quantities=QUANTITIES) -> dict:
+    """Sweep, plot and write ``out_dir/work_precision_*.png`` and ``out_dir/work_precision.json``."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    data, figures = {}, []
+    for q in quantities:
+        curves = [sweep(q, b, quick, progress) for b in ALL_BODIES if b in bodies]
+        data[q.name] = {"title": q.title, "metric": q.metric, "curves": curves}
+        figures.append(str(plot(q, curves, out_dir / f"work_precision_{q.name}.png")))
+    doc = clean({"quick": quick, "quantities": data, "figures": figures})
+    (out_dir / "work_precision.json").write_text(json.dumps(doc, indent=1))
+    return doc
+
