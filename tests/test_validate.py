@@ -17,7 +17,6 @@ from bench_myriapoda.validation.run import run_checks, select
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
 # APPLICABLE with a reason).
 KNOWN_FAILURES = {
-    ("analytic.worm-eps-lambda", "fem"): "the fem worm moves 5.5 % less than eps * Lambda per cycle (0.0756 m vs 0.08)",
     ("analytic.worm-eps-lambda", "hybrid"): "the hybrid worm moves 0.053 m per cycle: its rigid boxes",
     ("cross_body.worm-speed", "all"): "the hybrid worm is 33 % slower than the lattice",
     ("cross_body.hang-elongation", "all"): "the fem centipede hangs 6.9x longer than the hybrid (31 vs 4.6 cm), "
