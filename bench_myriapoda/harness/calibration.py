@@ -7,6 +7,7 @@ and builds the calibration body through the catalog's factory.
 """
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 from ..bodies.curvature_calibration import lateral_gain
@@ -26,5 +27,10 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
     info = body_info(body, case.dt)
     if needs_curvature_gain(case) and MUSCLES in body.capabilities:
         registry.load_all()
-        info["strain_per_curvature"] = lateral_gain(registry.BODIES[case.body.name].factory, case)
+        spec = registry.BODIES[case.body.name]
+        # the gain is a static property of the body: measure it at a step the body is stable at, so a
+        # case run at a deliberately unstable dt (stable-dt searches, blow-up tests) still gets its gain
+        # and blows up in its own run, where that is recorded as ``unstable``
+        cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
+        info["strain_per_curvature"] = lateral_gain(spec.factory, cal_case)
     return info
