@@ -98,3 +98,13 @@ def test_millers_snake_stiffness_cannot_lift_the_vertical_wave():
     # bending moment cannot carry the body's weight between contact patches: it stays on the ground
     m = _lattice("body.stiffness=0.5")
     assert m["segment_contact_fraction"] > 0.9
+
+
+def test_the_sidewinders_braced_body_holds_for_that_gait_only():
+    # [gaits.sidewinding.bodies.<body>] in models/snake.toml: the creature's other gaits keep its bodies
+    for body, key in (("massspring", "stiffness"), ("fem", "youngs_modulus_pa"), ("hybrid", "youngs_modulus_pa")):
+        side = resolve_case("snake", body, "flat", "sidewinding")
+        slither = resolve_case("snake", body, "flat", "lateral-undulation")
+        assert getattr(side.body, key) == pytest.approx(16.0 * getattr(slither.body, key), rel=1e-6), body
+    # --set still wins over the gait's body keys
+    assert resolve_case("snake", "massspring", "flat", "sidewinding", overrides=["body.stiffness=1"]).body.stiffness == 1
