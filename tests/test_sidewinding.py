@@ -108,3 +108,16 @@ def test_the_sidewinders_braced_body_holds_for_that_gait_only():
         assert getattr(side.body, key) == pytest.approx(16.0 * getattr(slither.body, key), rel=1e-6), body
     # --set still wins over the gait's body keys
     assert resolve_case("snake", "massspring", "flat", "sidewinding", overrides=["body.stiffness=1"]).body.stiffness == 1
+
+
+def test_the_reports_sidewinder_verdict_applies_image_3s_criteria():
+    # report/validation.py judges a drawn sidewinding figure with validation.miller.judge_sidewinder
+    from bench_myriapoda.validation.core import FAIL, PASS
+    from bench_myriapoda.validation.miller import judge_sidewinder
+    good = {"travel_angle_deg": -60.0, "segment_contact_fraction": 0.3, "roll_max_deg": 50.0}
+    assert judge_sidewinder(good).verdict == PASS
+    # the log-roller of issue 11: steep travel angle, 95 % contact, rolled over
+    assert judge_sidewinder({"travel_angle_deg": 80.0, "segment_contact_fraction": 0.95,
+                             "roll_max_deg": 180.0}).verdict == FAIL
+    for key, bad in (("travel_angle_deg", 5.0), ("segment_contact_fraction", 0.6), ("roll_max_deg", 120.0)):
+        assert judge_sidewinder({**good, key: bad}).verdict == FAIL, key
