@@ -190,6 +190,9 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
         if gait not in registry.GAITS:
             raise InputError(src, f"gaits.{gait}", f"unknown gait{did_you_mean(gait, registry.GAITS)}; choose one of "
                                                    f"{', '.join(sorted(registry.GAITS))}")
+        if not isinstance(table, dict):
+            check_section(GaitConfig, table, src, f"gaits.{gait}")  # names the bad value
+            continue
         check_section(GaitConfig, {k: v for k, v in table.items() if k != GAIT_BODY_TABLE}, src, f"gaits.{gait}")
         _check_gait_bodies(table.get(GAIT_BODY_TABLE, {}), src, gait)
     for body, table in data.get("bodies", {}).items():
