@@ -21,8 +21,6 @@ KNOWN_FAILURES = {
     ("cross_body.worm-speed", "all"): "the hybrid worm is 33 % slower than the lattice",
     ("cross_body.hang-elongation", "all"): "the fem centipede hangs 6.9x longer than the hybrid (31 vs 4.6 cm), "
                                            "not the 1.0-1.3x the stiff blocks suggest",
-    ("miller.image3-sidewinder", "massspring"): "reference.miller_images: contact not localised (0.95), travel "
-                                                "angle 80 deg (> 75), cross-sections roll over (180 deg)",
     ("miller.image4-caterpillar-down", "massspring"): "reference.miller_images: lets go of the 45 degree slope "
                                                       "going down and turns over",
 }
