@@ -1,4 +1,4 @@
-"""The fused legged path (``bench_myriapoda.fused.hybrid_walk``) against the Python path it replaces.
+"""The fused legged path (``bench_myriapoda.fused.legged_walk``) against the Python path it replaces.
 
 The Python path (``harness.runner.Stepper`` sequencing ``MyriapodController.step``,
 ``apply_support`` and ``advance`` every step) is the reference.  The fused kernel runs the
@@ -15,8 +15,8 @@ from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import Creature
 
 
-def pair(scenario, segments, *sets):
-    case = resolve_case("centipede", "hybrid", scenario, overrides=[f"creature.segments={segments}", *sets])
+def pair(scenario, segments, *sets, body="hybrid"):
+    case = resolve_case("centipede", body, scenario, overrides=[f"creature.segments={segments}", *sets])
     fused, ref = Creature(case, fused=True), Creature(case, fused=False)
     assert fused.stepper.fused is not None, fused.stepper.fused_reason
     assert ref.stepper.fused is None
@@ -29,7 +29,7 @@ def state(cr):
     """Every array the next step depends on, plus the controller's counters."""
     b, c = cr.body, cr.controller
     out = {"c": b.rigid.c, "q": b.rigid.q, "v": b.rigid.v, "w": b.rigid.w, "kin": b.rigid.kinematic,
-           "impulse": b.rigid.impulse_cache, "x": b.x, "xv": b.v, "q_ws": b.fem._q_ws, "acc": b.acc,
+           "impulse": b.rigid.impulse_cache, "x": b.x, "xv": b.v, "acc": b.acc,
            "states": c.states, "angles": c.angles, "tips": c.tips, "airborne": c.airborne, "ik_failed": c.ik_failed,
            "c_T": c.c_T, "R_T": c.R_T, "brain_steps": c.brain_steps,
            "scalars": np.array([c.brain, c._step, c._turn_left, c._turn_memory, c._avoid_dir, c._avoid_until,
@@ -38,6 +38,8 @@ def state(cr):
            "rng": c.rng.bit_generator.state["state"]["state"],
            "act_R": cr.stepper.act.support_R, "act_c": cr.stepper.act.support_c,
            "act_kin": cr.stepper.act.support_kinematic}
+    if hasattr(b, "fem"):
+        out["q_ws"] = b.fem._q_ws
     if c.antennae is not None:
         a = c.antennae
         out.update(ant_points=a.points, ant_target=a.root_target, ant_offsets=a.offsets, ant_contact=a.contact,
@@ -134,8 +136,15 @@ def test_cases_that_are_not_fused_keep_the_python_path(sets, reason):
     assert reason in cr.stepper.fused_reason
 
 
+def test_fused_equals_python_on_the_massspring_centipede():
+    case, fused, ref = pair("walk", 18, body="massspring")
+    walk_both(case, fused, ref, [50] * 45 + [7, 993, 1, 2000])   # 2.3 s: ADJUSTMENT, then RANDOM-WALK
+    assert fused.controller.brain == 3 and fused.controller.brain_steps[0] > 0
+    assert_same_record(fused, ref)
+
+
 def test_other_bodies_keep_the_python_path():
-    case = resolve_case("centipede", "massspring", "walk", overrides=["creature.segments=6"])
+    case = resolve_case("centipede", "fem", "walk", overrides=["creature.segments=6"])
     cr = Creature(case)
     assert cr.stepper.fused is None and "no fused legged path" in cr.stepper.fused_reason
 

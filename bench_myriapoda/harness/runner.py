@@ -30,7 +30,7 @@ from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
 from ..world.water_coupling import WaterCoupling, has_water
-from ..fused import hybrid_walk
+from ..fused import legged_walk
 from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
 from .recorder import Recorder, Series
@@ -107,7 +107,8 @@ class Stepper:
     paper Sec. 4.1: supported segments are moved kinematically), then runs to the next tick.
 
     Fused: when ``fused`` is True and the pair has a compiled composition (``bench_myriapoda.fused``:
-    today the hybrid body with the leg controller, ``fused.hybrid_walk`` says which cases), the
+    today the hybrid and mass-spring bodies with the leg controller, ``fused.legged_walk`` says which
+    cases), the
     closed loop runs in one compiled call per ``advance`` instead, with the same result step for
     step; ``fused_reason`` says why a pair runs on the Python path (None when fused).
     """
@@ -125,9 +126,9 @@ class Stepper:
         self.fused_reason: str | None = "the open-loop path is already one call per chunk" if self.open_loop \
             else "fused path switched off"
         if fused and not self.open_loop:
-            self.fused_reason = hybrid_walk.unsupported_reason(body, controller, self.steps_per_tick, self.act)
+            self.fused_reason = legged_walk.unsupported_reason(body, controller, self.steps_per_tick, self.act)
             if self.fused_reason is None:
-                self.fused = hybrid_walk.FusedHybridWalk(body, controller, self.act, monitor)
+                self.fused = legged_walk.FusedLeggedWalk(body, controller, self.act, monitor)
 
     def start(self) -> None:
         """The actuation at t = 0 (a body's energy at the first sample uses it); loads the fused kernel."""
