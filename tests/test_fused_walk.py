@@ -28,8 +28,7 @@ def pair(scenario, segments, *sets, body="hybrid"):
 def state(cr):
     """Every array the next step depends on, plus the controller's counters."""
     b, c = cr.body, cr.controller
-    out = {"c": b.rigid.c, "q": b.rigid.q, "v": b.rigid.v, "w": b.rigid.w, "kin": b.rigid.kinematic,
-           "impulse": b.rigid.impulse_cache, "x": b.x, "xv": b.v, "acc": b.acc,
+    out = {"x": b.x, "xv": b.v, "acc": b.acc,
            "states": c.states, "angles": c.angles, "tips": c.tips, "airborne": c.airborne, "ik_failed": c.ik_failed,
            "c_T": c.c_T, "R_T": c.R_T, "brain_steps": c.brain_steps,
            "scalars": np.array([c.brain, c._step, c._turn_left, c._turn_memory, c._avoid_dir, c._avoid_until,
@@ -38,8 +37,13 @@ def state(cr):
            "rng": c.rng.bit_generator.state["state"]["state"],
            "act_R": cr.stepper.act.support_R, "act_c": cr.stepper.act.support_c,
            "act_kin": cr.stepper.act.support_kinematic}
+    if hasattr(b, "rigid"):
+        out.update(c=b.rigid.c, q=b.rigid.q, v=b.rigid.v, w=b.rigid.w, kin=b.rigid.kinematic,
+                   impulse=b.rigid.impulse_cache)
     if hasattr(b, "fem"):
         out["q_ws"] = b.fem._q_ws
+    if hasattr(b, "att_target"):
+        out.update(att_target=b.att_target, support=b.support)
     if c.antennae is not None:
         a = c.antennae
         out.update(ant_points=a.points, ant_target=a.root_target, ant_offsets=a.offsets, ant_contact=a.contact,
@@ -143,10 +147,34 @@ def test_fused_equals_python_on_the_massspring_centipede():
     assert_same_record(fused, ref)
 
 
-def test_other_bodies_keep_the_python_path():
-    case = resolve_case("centipede", "fem", "walk", overrides=["creature.segments=6"])
-    cr = Creature(case)
-    assert cr.stepper.fused is None and "no fused legged path" in cr.stepper.fused_reason
+def test_fused_equals_python_on_the_fem_centipede():
+    case, fused, ref = pair("walk", 18, body="fem")
+    walk_both(case, fused, ref, [50] * 30 + [7, 13, 480, 1, 1500])   # 1.5 s: ADJUSTMENT, then RANDOM-WALK
+    assert fused.controller.brain == 3 and fused.controller.brain_steps[0] > 0
+    assert np.array_equal(fused.body.att_target, ref.body.att_target)
+    assert np.array_equal(fused.body.support, ref.body.support)
+    assert_same_record(fused, ref)
+
+
+def test_a_controller_of_another_class_keeps_the_python_path():
+    from bench_myriapoda.controllers.myriapod.controller import MyriapodController
+
+    class Tweaked(MyriapodController):
+        pass
+
+    case = resolve_case("centipede", "hybrid", "walk", overrides=["creature.segments=6"])
+    cr = Creature(case, controller=Tweaked(case))
+    assert cr.stepper.fused is None and "has no compiled step" in cr.stepper.fused_reason
+
+
+def test_numpys_einsum_order_that_the_fem_support_reproduces():
+    # fused.legged_walk.fem_chunk adds the products of BodyFEMChain.set_support's einsums in numpy's order
+    rng = np.random.default_rng(0)
+    R, d = rng.normal(size=(50, 3, 3)), rng.normal(size=(50, 3))
+    a = [R[:, j, :] * d[:, j, None] for j in range(3)]
+    assert np.array_equal(np.einsum("nji,nj->ni", R, d), (a[0] + a[1]) + a[2])
+    a = [R[:, :, j] * d[:, j, None] for j in range(3)]
+    assert np.array_equal(np.einsum("nij,nj->ni", R, d), (a[0] + a[2]) + a[1])
 
 
 @pytest.mark.parametrize("n", [0, 1, 7, 8, 9, 18, 127, 128, 129, 200, 300, 1000, 5000])

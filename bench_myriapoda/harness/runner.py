@@ -107,8 +107,7 @@ class Stepper:
     paper Sec. 4.1: supported segments are moved kinematically), then runs to the next tick.
 
     Fused: when ``fused`` is True and the pair has a compiled composition (``bench_myriapoda.fused``:
-    today the hybrid and mass-spring bodies with the leg controller, ``fused.legged_walk`` says which
-    cases), the
+    today the three legged bodies with the leg controller, ``fused.legged_walk`` says which cases), the
     closed loop runs in one compiled call per ``advance`` instead, with the same result step for
     step; ``fused_reason`` says why a pair runs on the Python path (None when fused).
     """
