@@ -342,6 +342,11 @@ def setup_massspring_centipede(steps: int = 3000) -> tuple[Step, int]:
     return _centipede_setup("massspring-centipede", "massspring", True, steps)
 
 
+def setup_fem_centipede(steps: int = 1000) -> tuple[Step, int]:
+    """The walking 18-segment FEM centipede (stiff blocks in one mesh), fused."""
+    return _centipede_setup("fem-centipede", "fem", True, steps)
+
+
 def setup_rigid_boxes(steps: int = 6000) -> tuple[Step, int]:
     """The rigid-box core: 18 boxes on the plane, restarted from the same state at every call."""
     boxes = rigid_scene()
@@ -369,6 +374,7 @@ SUITE: dict[str, SuiteEntry] = {e.name: e for e in (
                setup_hybrid_centipede_python),
     SuiteEntry("massspring-centipede", "walking 18-segment mass-spring centipede (controller + step, fused)",
                setup_massspring_centipede),
+    SuiteEntry("fem-centipede", "walking 18-segment FEM centipede (controller + step, fused)", setup_fem_centipede),
     SuiteEntry("rigid-boxes", "rigid-box core, 18 boxes with contact and friction", setup_rigid_boxes),
 )}
 

@@ -18,10 +18,10 @@ STEPS_PER_CALL = 300
 @pytest.mark.parametrize("body,segments,fused", [("hybrid", 6, True), ("hybrid", 18, True), ("hybrid", 36, True),
                                                  ("hybrid", 100, True), ("hybrid", 18, False),
                                                  ("massspring", 18, True), ("massspring", 18, False),
-                                                 ("fem", 18, True)])
+                                                 ("fem", 18, True), ("fem", 18, False)])
 def test_centipede_walk_step(benchmark, body, segments, fused):
-    # fused: one compiled call per chunk (fused.legged_walk; the fem body has no fused path and runs the
-    # Python path either way); False: the controller sequenced from Python every step, for the ratio
+    # fused: one compiled call per chunk (fused.legged_walk); False: the controller sequenced from Python
+    # every step, for the ratio
     case, b = walking_centipede(segments, body, fused=fused)  # compiled and walked in for WALK_IN_STEPS (1.5 s)
     t = [WALK_IN_STEPS * case.dt]
 
