@@ -71,9 +71,15 @@ class LeggedMonitor:
         when the controller recorded this step in its timeline."""
         if not self.controller.recorded:
             return
-        c = self.body.segment_poses()[0]
+        c, R = self.body.segment_poses()
+        self.sample(c, R, self.body.segment_centers(), self.controller.tips)
+
+    def sample(self, c: np.ndarray, R: np.ndarray, centres: np.ndarray, tips: np.ndarray) -> None:
+        """One timeline sample from the segment poses (c (n, 3) [m], R (n, 3, 3)), the body's centres
+        (``segment_centers``) and the leg tips (n_legs, 3) [m] (also fed by ``fused``'s buffered samples)."""
         self._com.append(c.mean(axis=0))
-        self.behaviour.sample(*self.sample_points(), c[0])
+        corners = c[:, None, :] + np.einsum("nij,nkj->nki", R, BOX_SIGNS[None] * self.body.segment_half_extents[:, None, :])
+        self.behaviour.sample(centres, corners.reshape(-1, 3), tips, c[0])
 
     def sample_points(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(segment centres (n, 3), box corners (8 n_seg, 3), leg tips (n_legs, 3)) [m] now.

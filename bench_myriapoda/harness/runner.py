@@ -30,6 +30,7 @@ from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import energy_metrics, locomotion_metrics
 from ..world.water_coupling import WaterCoupling, has_water
+from ..fused import legged_walk
 from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
 from .recorder import Recorder, Series
@@ -104,9 +105,14 @@ class Stepper:
     Closed loop: the controller ticks every ``steps_per_tick`` steps on a fresh observation
     (``body.sense``); a body with SEGMENTS takes the new support at once (``apply_support``,
     paper Sec. 4.1: supported segments are moved kinematically), then runs to the next tick.
+
+    Fused: when ``fused`` is True and the pair has a compiled composition (``bench_myriapoda.fused``:
+    today the three legged bodies with the leg controller, ``fused.legged_walk`` says which cases), the
+    closed loop runs in one compiled call per ``advance`` instead, with the same result step for
+    step; ``fused_reason`` says why a pair runs on the Python path (None when fused).
     """
 
-    def __init__(self, case: Case, body, controller, monitor: LeggedMonitor | None = None):
+    def __init__(self, case: Case, body, controller, monitor: LeggedMonitor | None = None, fused: bool = True):
         self.body, self.controller, self.monitor = body, controller, monitor
         self.dt = case.dt
         _, self.open_loop, rate = controller_settings(controller)
@@ -115,18 +121,31 @@ class Stepper:
         self.obs = Observation()
         self.supports = SEGMENTS in body.capabilities
         self.step_index = 0
+        self.fused = None
+        self.fused_reason: str | None = "the open-loop path is already one call per chunk" if self.open_loop \
+            else "fused path switched off"
+        if fused and not self.open_loop:
+            self.fused_reason = legged_walk.unsupported_reason(body, controller, self.steps_per_tick, self.act)
+            if self.fused_reason is None:
+                self.fused = legged_walk.FusedLeggedWalk(body, controller, self.act, monitor)
 
     def start(self) -> None:
-        """The actuation at t = 0 (a body's energy at the first sample uses it)."""
+        """The actuation at t = 0 (a body's energy at the first sample uses it); loads the fused kernel."""
         if self.open_loop:
             self.controller.fill(0.0, self.dt, 1, self.act)
             self.body.advance(0.0, 0, self.act)
+        if self.fused is not None:
+            self.fused.compile()
 
     def advance(self, t0: float, n: int) -> tuple[int, int]:
         body, ctrl, act, dt = self.body, self.controller, self.act, self.dt
         if self.open_loop:
             ctrl.fill(t0, dt, n + 1, act)
             k, code = body.advance(t0, n, act)
+            self.step_index += k
+            return k, code
+        if self.fused is not None:
+            k, code = self.fused.advance(t0, n)
             self.step_index += k
             return k, code
         k = 0
@@ -169,7 +188,7 @@ class Creature:
     ``compile()`` compiles both and sets the actuation of t = 0.
     """
 
-    def __init__(self, case: Case, controller=None):
+    def __init__(self, case: Case, controller=None, fused: bool = True):
         self.case = case
         self.own_controller = controller is None
         self.body, self.controller = compose(case, controller)
@@ -177,7 +196,7 @@ class Creature:
         legged = LEGS in requires and SEGMENTS in requires
         self.monitor = LeggedMonitor(case, self.body, self.controller) if legged else None
         self.view = LeggedView(self.body, self.controller) if legged else self.body
-        self.stepper = Stepper(case, self.body, self.controller, self.monitor)
+        self.stepper = Stepper(case, self.body, self.controller, self.monitor, fused=fused)
 
     def __getattr__(self, name):
         return getattr(self.body, name)

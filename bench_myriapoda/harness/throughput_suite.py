@@ -115,13 +115,17 @@ def hybrid_state_fields(body) -> list[np.ndarray]:
 CENTIPEDE_WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has formed
 
 
-def walking_centipede(segments: int = 18, body: str = "hybrid", walk_in_steps: int = CENTIPEDE_WALK_IN_STEPS):
-    """A centipede on the ``walk`` scenario, compiled and walked in; returns (case, body)."""
+def walking_centipede(segments: int = 18, body: str = "hybrid", walk_in_steps: int = CENTIPEDE_WALK_IN_STEPS,
+                      fused: bool = True):
+    """A centipede on the ``walk`` scenario, compiled and walked in; returns (case, creature).
+
+    ``fused``: the runner's default, one compiled call per chunk where the body has a fused legged
+    path (``fused.legged_walk``); False keeps the Python path (controller sequenced every step)."""
     from ..core.config import resolve_case
     from .runner import Creature
 
     case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
-    b = Creature(case)
+    b = Creature(case, fused=fused)
     b.compile()
     done, status = b.advance(0.0, walk_in_steps)
     if status != 0:
@@ -308,17 +312,39 @@ def setup_hybrid_chain(steps: int = 1500) -> tuple[Step, int]:
     return step, steps
 
 
-def setup_hybrid_centipede(steps: int = 1500) -> tuple[Step, int]:
-    """The walking 18-segment hybrid centipede (leg controller + coupled step); walks on from call to call."""
-    case, body = walking_centipede(18, "hybrid")
+def _centipede_setup(name: str, body_name: str, fused: bool, steps: int) -> tuple[Step, int]:
+    """A walking 18-segment centipede on ``body_name``; walks on from call to call."""
+    case, body = walking_centipede(18, body_name, fused=fused)
+    if fused and body.stepper.fused is None:
+        raise RuntimeError(f"{name}: the fused path does not apply: {body.stepper.fused_reason}")
     t = [CENTIPEDE_WALK_IN_STEPS * case.dt]
 
     def step(n: int) -> None:
         done, status = body.advance(t[0], n)
         t[0] += done * case.dt
-        _check("hybrid-centipede", n, done, status)
+        _check(name, n, done, status)
 
     return step, steps
+
+
+def setup_hybrid_centipede(steps: int = 1500) -> tuple[Step, int]:
+    """The walking 18-segment hybrid centipede, fused: leg controller and coupled step in one compiled call per chunk."""
+    return _centipede_setup("hybrid-centipede", "hybrid", True, steps)
+
+
+def setup_hybrid_centipede_python(steps: int = 1500) -> tuple[Step, int]:
+    """The same centipede on the Python path (the controller sequenced from Python every step): the fused speed-up."""
+    return _centipede_setup("hybrid-centipede-python", "hybrid", False, steps)
+
+
+def setup_massspring_centipede(steps: int = 3000) -> tuple[Step, int]:
+    """The walking 18-segment mass-spring centipede (boxes + spring-cube links), fused."""
+    return _centipede_setup("massspring-centipede", "massspring", True, steps)
+
+
+def setup_fem_centipede(steps: int = 1000) -> tuple[Step, int]:
+    """The walking 18-segment FEM centipede (stiff blocks in one mesh), fused."""
+    return _centipede_setup("fem-centipede", "fem", True, steps)
 
 
 def setup_rigid_boxes(steps: int = 6000) -> tuple[Step, int]:
@@ -342,8 +368,13 @@ SUITE: dict[str, SuiteEntry] = {e.name: e for e in (
     SuiteEntry("fem-chain", "FEM advance kernel, 17-segment chain, 816 tets", setup_fem_chain),
     SuiteEntry("fem-worm", "FEM worm body kernel (muscles, friction)", setup_fem_worm),
     SuiteEntry("hybrid-chain", "hybrid coupled step, 18 boxes + 17 FEM links", setup_hybrid_chain),
-    SuiteEntry("hybrid-centipede", "walking 18-segment hybrid centipede (controller + coupled step)",
+    SuiteEntry("hybrid-centipede", "walking 18-segment hybrid centipede (controller + coupled step, fused)",
                setup_hybrid_centipede),
+    SuiteEntry("hybrid-centipede-python", "the same centipede, controller sequenced from Python every step",
+               setup_hybrid_centipede_python),
+    SuiteEntry("massspring-centipede", "walking 18-segment mass-spring centipede (controller + step, fused)",
+               setup_massspring_centipede),
+    SuiteEntry("fem-centipede", "walking 18-segment FEM centipede (controller + step, fused)", setup_fem_centipede),
     SuiteEntry("rigid-boxes", "rigid-box core, 18 boxes with contact and friction", setup_rigid_boxes),
 )}
 

@@ -1,4 +1,5 @@
-"""Throughput of a walking centipede (issue target: hybrid, 18 segments, dt = 1/3000 s, > 3,000 steps/s).
+"""Throughput of a walking centipede (issue 13 targets, one core, dt = 1/3000 s: hybrid >= 25,000 steps/s,
+massspring >= 40,000, fem >= 10,000; the fused path against the Python path side by side).
 
 Time it with:
     python -m pytest tests/benchmarks/test_bench_myriapod.py --benchmark-enable --benchmark-only
@@ -14,10 +15,14 @@ from bench_myriapoda.harness.throughput_suite import walking_centipede
 STEPS_PER_CALL = 300
 
 
-@pytest.mark.parametrize("body,segments", [("hybrid", 6), ("hybrid", 18), ("hybrid", 36), ("hybrid", 100),
-                                           ("massspring", 18), ("fem", 18)])
-def test_centipede_walk_step(benchmark, body, segments):
-    case, b = walking_centipede(segments, body)  # compiled and walked in for WALK_IN_STEPS (1.5 s)
+@pytest.mark.parametrize("body,segments,fused", [("hybrid", 6, True), ("hybrid", 18, True), ("hybrid", 36, True),
+                                                 ("hybrid", 100, True), ("hybrid", 18, False),
+                                                 ("massspring", 18, True), ("massspring", 18, False),
+                                                 ("fem", 18, True), ("fem", 18, False)])
+def test_centipede_walk_step(benchmark, body, segments, fused):
+    # fused: one compiled call per chunk (fused.legged_walk); False: the controller sequenced from Python
+    # every step, for the ratio
+    case, b = walking_centipede(segments, body, fused=fused)  # compiled and walked in for WALK_IN_STEPS (1.5 s)
     t = [WALK_IN_STEPS * case.dt]
 
     def chunk():
@@ -32,3 +37,4 @@ def test_centipede_walk_step(benchmark, body, segments):
         benchmark.extra_info["realtime_factor"] = STEPS_PER_CALL * case.dt / median
         benchmark.extra_info["segments"] = segments
         benchmark.extra_info["body"] = body
+        benchmark.extra_info["fused"] = b.stepper.fused is not None

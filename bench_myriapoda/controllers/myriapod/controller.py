@@ -32,7 +32,10 @@ segments and their target poses into the actuation (``support_kinematic``, ``sup
 body itself, so the same controller drives the hybrid, mass-spring and FEM myriapods.
 
 The kernels (``targeter``, ``switcher``, ``kinematics.legs``) run in numba; this
-class only sequences them, a few calls per time step.
+class only sequences them, a few calls per time step.  ``compiled.controller_step`` is the
+same step as one numba kernel on this object's arrays (the runner's fused path,
+``bench_myriapoda.fused``, runs it with the body's step in one call per chunk); this class
+stays the reference, and the path for what that kernel does not cover (food, the body wave).
 """
 from __future__ import annotations
 

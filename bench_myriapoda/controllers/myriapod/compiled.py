@@ -1,0 +1,412 @@
+"""The leg controller's step (``controller.MyriapodController.step``) as one numba kernel on flat arrays.
+
+``MyriapodController.step`` is the reference: it sequences the numba kernels of the
+Targeter, the Switcher, the leg kinematics, the leg collisions and the antennae from
+Python, once per time step (paper Sec. 6 order, documented there).  ``controller_step``
+below runs the same kernels in the same order on the same arrays, with the head's
+Python logic (brain modes, head command, turn memory, CONTROL heading, tracking error)
+ported line for line, so that a caller can run the controller and a body's step inside
+one compiled loop (``bench_myriapoda.fused``) and enter Python only at the sample rate.
+
+What it covers (``unsupported_reason`` says why a controller is not covered):
+
+* brain modes ADJUSTMENT, AVOIDANCE, RANDOM-WALK and CONTROL; antennae on or off; legs
+  colliding with the terrain or not; any terrain of ``world.terrain_kernels``;
+* not covered: food (TROPHOTROPISM, eating), the lateral body wave
+  (``body_wave_amplitude`` > 0), a controller ticking slower than every step.
+
+State: the controller's own arrays are used in place (no copy), so its attributes
+stay current.  Its scalars travel in two vectors, ``fs`` (float64, ``F_*``) and
+``ints`` (int64, ``I_*``), built by ``ControllerState.pack`` before a chunk of steps and
+written back by ``ControllerState.unpack`` after it.
+
+Random numbers: the controller draws a new random-walk turn from ``controller.rng``
+(``Generator.uniform(-turn_max, turn_max)``) and the antennae draw new root targets from
+their own generator.  numpy computes ``uniform(lo, hi)`` as ``lo + (hi - lo) u`` with u the
+generator's next double, so a chunk pre-draws the doubles it might need (``rng.random``),
+uses them in order, and the generator is then rewound and advanced by exactly the number
+used (``ControllerState.draws`` / ``settle``): both paths consume the same stream.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ...kinematics import legs as L
+from . import antennae as AN
+from . import leg_collision as LC
+from . import switcher as SW
+from . import targeter as TG
+
+# brain modes, as controller.py (which imports this module's users, not the reverse)
+ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
+
+# float scalars (``fs``): parameters, then state
+(F_DT, F_CONTACT_DIST, F_THETA_MIN, F_MAJORITY, F_HEAD_SPEED, F_TURN_MAX, F_TURN_RATE, F_AVOID_RATE,
+ F_AVOID_HOLD, F_AVOID_SPEED, F_MAX_BODY_TURN, F_TURN_MEMORY_LENGTH,
+ F_AVOID_DIR, F_TURN_MEMORY, F_AVOID_UNTIL, F_TURN_LEFT, F_T_WALK, F_TOUCH_AT_WALK, F_TRACKING_SUM,
+ F_HEADING_CMD, F_HEADING_ERR_SUM, F_LEG_PEN_MAX) = range(22)
+N_FS = 22
+# int scalars (``ints``)
+(I_TERR_KIND, I_MIN_STANCE, I_WALK_MODE, I_RECORD_EVERY, I_COLLIDE, I_HAS_ANTENNAE, I_PRIORITY_LEFT,
+ I_BRAIN, I_STEP, I_TRACKING_N, I_HEADING_ERR_N, I_LEG_STOPS, I_LEG_STUCK, I_CONTACT_EVENTS, I_TARGETS_DRAWN,
+ I_RECORDED, I_RND_USED, I_ANT_RND_USED) = range(18)
+N_INTS = 18
+# positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
+A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 34
+
+# (controller attribute, fs index) of the float scalars, (attribute, ints index) of the int ones
+_FLOATS = (("dt", F_DT), ("contact_distance", F_CONTACT_DIST), ("theta_min", F_THETA_MIN),
+           ("majority", F_MAJORITY), ("head_speed", F_HEAD_SPEED), ("turn_max", F_TURN_MAX),
+           ("turn_rate", F_TURN_RATE), ("avoid_rate", F_AVOID_RATE), ("avoid_hold", F_AVOID_HOLD),
+           ("avoid_speed", F_AVOID_SPEED), ("max_body_turn", F_MAX_BODY_TURN),
+           ("turn_memory_length", F_TURN_MEMORY_LENGTH), ("_avoid_dir", F_AVOID_DIR),
+           ("_turn_memory", F_TURN_MEMORY), ("_avoid_until", F_AVOID_UNTIL), ("_turn_left", F_TURN_LEFT),
+           ("t_walk", F_T_WALK), ("touch_fraction_at_walk", F_TOUCH_AT_WALK), ("tracking_sq_sum", F_TRACKING_SUM),
+           ("heading_cmd", F_HEADING_CMD), ("heading_err_sum", F_HEADING_ERR_SUM),
+           ("leg_penetration_max", F_LEG_PEN_MAX))
+_STATE_FLOATS = _FLOATS[12:]   # written back after a chunk
+_INTS = (("terr_kind", I_TERR_KIND), ("min_stance", I_MIN_STANCE), ("walk_mode", I_WALK_MODE),
+         ("record_every", I_RECORD_EVERY), ("collide", I_COLLIDE), ("brain", I_BRAIN), ("_step", I_STEP),
+         ("tracking_n", I_TRACKING_N), ("heading_err_n", I_HEADING_ERR_N), ("leg_stops", I_LEG_STOPS),
+         ("leg_stuck", I_LEG_STUCK))
+_STATE_INTS = _INTS[5:]
+
+
+def unsupported_reason(controller) -> str | None:
+    """Why ``controller_step`` cannot stand in for ``controller.step`` (None when it can)."""
+    if controller.has_food:
+        return "food (TROPHOTROPISM, eating) is not compiled"
+    if controller.wave_amp > 0.0:
+        return "the lateral body wave (body_wave_amplitude > 0) is not compiled"
+    return None
+
+
+class ControllerState:
+    """The flat-array view of one ``MyriapodController`` that ``controller_step`` works on.
+
+    ``arrays`` is the tuple of the controller's own arrays (layout of ``controller_step``'s
+    ``A``) -- rebuilt by ``pack`` so that it always refers to the controller's current arrays.
+    """
+
+    def __init__(self, controller):
+        if unsupported_reason(controller) is not None:
+            raise ValueError(f"controller not compilable: {unsupported_reason(controller)}")
+        self.ctrl = controller
+        self.fs = np.zeros(N_FS)
+        self.ints = np.zeros(N_INTS, dtype=np.int64)
+        c = controller
+        n_legs = c.n_legs
+        self.stance_tips = np.zeros((n_legs, 3))
+        ant = c.antennae
+        if ant is None:  # typed stand-ins, never read (I_HAS_ANTENNAE = 0)
+            n = 1
+            self._ant = (np.zeros(AN.N_ANTENNA_PARAMS), np.zeros(len(c.terr)), np.zeros((2, n, 2)),
+                         np.zeros((2, n, 2)), np.zeros((2, 2)), np.zeros(2), np.zeros(2, np.bool_),
+                         np.zeros(2, np.bool_), np.zeros(2, np.bool_), np.zeros((2, 3)), np.zeros((2, 3)),
+                         np.zeros(2), np.zeros(2, np.bool_), np.zeros((2, n + 1, 3)), np.zeros((2, n + 1, 3, 3)))
+        times, speed, rate = c.schedule
+        self._schedule = (np.ascontiguousarray(times, dtype=np.float64), np.ascontiguousarray(speed, dtype=np.float64),
+                          np.ascontiguousarray(rate, dtype=np.float64))
+        self.rnd = np.zeros(1)
+        self.ant_rnd = np.zeros(1)
+
+    def pack(self) -> tuple:
+        """Scalars into ``fs``/``ints``; returns the array tuple ``A``."""
+        c = self.ctrl
+        fs, ints = self.fs, self.ints
+        for name, k in _FLOATS:
+            fs[k] = getattr(c, name)
+        for name, k in _INTS:
+            ints[k] = int(getattr(c, name))
+        ant = c.antennae
+        ints[I_HAS_ANTENNAE] = ant is not None
+        ints[I_PRIORITY_LEFT] = c.avoid_priority == "left"
+        ints[I_CONTACT_EVENTS] = ant.contact_events if ant is not None else 0
+        ints[I_TARGETS_DRAWN] = ant.targets_drawn if ant is not None else 0
+        ints[I_RECORDED] = c.recorded
+        ints[I_RND_USED] = 0
+        ints[I_ANT_RND_USED] = 0
+        if ant is not None:
+            a = (ant.params, ant.f, ant.nominal, ant.offsets, ant.root_target, ant.root_omega, ant.retracting,
+                 ant.contact, ant.rising, ant.contact_point, ant.contact_normal, ant.contact_depth, ant.arrived,
+                 ant.points, ant.frames)
+        else:
+            a = self._ant
+        return (c.states, c.angles, c.tips, c._O, c._M, c.touching, c.airborne, c.ik_failed, c.entered, c.supported,
+                c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, self.stance_tips, c.brain_steps,
+                c.geom, c.sw_params, c.tg_params, c.terr, c.terr_walk, c.link_rest, c.height_target) \
+            + self._schedule + a
+
+    def draws(self, n_steps: int) -> None:
+        """Pre-draw the doubles a chunk of ``n_steps`` steps may use (at most one random-walk turn and two
+        antenna targets of two draws each per step), remembering where each generator stood."""
+        c = self.ctrl
+        self._rng_state = c.rng.bit_generator.state
+        self.rnd = c.rng.random(n_steps)
+        ant = c.antennae
+        if ant is not None:
+            self._ant_state = ant.rng.bit_generator.state
+            self.ant_rnd = ant.rng.random(4 * n_steps)
+
+    def settle(self) -> None:
+        """Rewind the generators to the chunk's start and advance them by the draws actually used."""
+        c = self.ctrl
+        c.rng.bit_generator.state = self._rng_state
+        if self.ints[I_RND_USED]:
+            c.rng.random(int(self.ints[I_RND_USED]))
+        ant = c.antennae
+        if ant is not None:
+            ant.rng.bit_generator.state = self._ant_state
+            if self.ints[I_ANT_RND_USED]:
+                ant.rng.random(int(self.ints[I_ANT_RND_USED]))
+
+    def unpack(self) -> None:
+        """The chunk's scalars back into the controller."""
+        c = self.ctrl
+        fs, ints = self.fs, self.ints
+        for name, k in _STATE_FLOATS:
+            setattr(c, name, float(fs[k]))
+        for name, k in _STATE_INTS:
+            setattr(c, name, int(ints[k]))
+        c.recorded = bool(ints[I_RECORDED])
+        ant = c.antennae
+        if ant is not None:
+            ant.contact_events = int(ints[I_CONTACT_EVENTS])
+            ant.targets_drawn = int(ints[I_TARGETS_DRAWN])
+
+
+@njit(cache=True)
+def _block_sum(a, start, n):
+    """numpy's pairwise_sum on a[start:start + n] for n <= 128: eight partial sums (sequential below 8)."""
+    if n < 8:
+        res = 0.0
+        for i in range(start, start + n):
+            res += a[i]
+        return res
+    r0, r1, r2, r3 = a[start], a[start + 1], a[start + 2], a[start + 3]
+    r4, r5, r6, r7 = a[start + 4], a[start + 5], a[start + 6], a[start + 7]
+    i = 8
+    while i < n - n % 8:
+        r0 += a[start + i]
+        r1 += a[start + i + 1]
+        r2 += a[start + i + 2]
+        r3 += a[start + i + 3]
+        r4 += a[start + i + 4]
+        r5 += a[start + i + 5]
+        r6 += a[start + i + 6]
+        r7 += a[start + i + 7]
+        i += 8
+    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    while i < n:
+        res += a[start + i]
+        i += 1
+    return res
+
+
+@njit(cache=True)
+def numpy_sum(a, n):
+    """Sum of a[:n] in numpy's order (``np.add.reduce`` on a contiguous float64 array: blocks of up to
+    128 summed with eight partial sums, larger ranges split in two halves, a multiple of 8 first, and
+    the halves' sums added), so a sum the reference takes with numpy is the same double.
+
+    numba's on-disk cache does not load recursive functions reliably, so the halving is an explicit
+    post-order walk: ``lo``/``ln`` hold the pending ranges, ``val`` the finished partial sums.
+    """
+    if n <= 128:
+        return _block_sum(a, 0, n)
+    # stack of (start, length, visited) ranges; a visited range pops its two children's sums
+    st = np.empty(128, np.int64)
+    ln = np.empty(128, np.int64)
+    vis = np.zeros(128, np.bool_)
+    val = np.empty(128)
+    top, nv = 0, 0
+    st[0], ln[0], vis[0] = 0, n, False
+    top = 1
+    while top > 0:
+        top -= 1
+        s0, m, seen = st[top], ln[top], vis[top]
+        if m <= 128:
+            val[nv] = _block_sum(a, s0, m)
+            nv += 1
+        elif seen:
+            nv -= 1
+            val[nv - 1] = val[nv - 1] + val[nv]
+        else:
+            m2 = m // 2
+            m2 -= m2 % 8
+            st[top], ln[top], vis[top] = s0, m, True
+            st[top + 1], ln[top + 1], vis[top + 1] = s0 + m2, m - m2, False   # right, evaluated second
+            st[top + 2], ln[top + 2], vis[top + 2] = s0, m2, False            # left, evaluated first
+            top += 3
+    return val[0]
+
+
+@njit(cache=True)
+def _avoidance_turn(left, right, priority_left):
+    """``controller.avoidance_turn``: +1 turn left, -1 right, 0 without contact."""
+    if left and right:
+        return -1.0 if priority_left else 1.0
+    if left:
+        return -1.0
+    if right:
+        return 1.0
+    return 0.0
+
+
+@njit(cache=True)
+def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
+    """One ``MyriapodController.step`` (its docstring has the order) for the step starting at t [s].
+
+    c (n_seg, 3) [m], R (n_seg, 3, 3): the segments' current poses (read only).  fs, ints: the
+    scalars (``F_*``, ``I_*``), updated.  A: the controller's arrays (``ControllerState.pack``),
+    updated in place -- afterwards ``kinematic``, ``c_T``, ``R_T`` (A[10], A[11], A[12]) are the
+    support the body must carry this step.  rnd, ant_rnd: pre-drawn doubles of the controller's and
+    the antennae's generators, consumed from ints[I_RND_USED], ints[I_ANT_RND_USED].
+    err_scratch: (n_seg,) scratch.  Returns whether this step is recorded in the timeline.
+    """
+    (states, angles, tips, O, M, touching, airborne, ik_failed, entered, supported, kinematic, c_T, R_T,
+     prev_angles, stopped, stance_tips, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
+     height_target, sched_t, sched_speed, sched_rate, ant_params, ant_f, nominal, offsets, root_target,
+     root_omega, retracting, contact, rising, contact_point, contact_normal, contact_depth, arrived, points,
+     frames) = A
+    dt = fs[F_DT]
+    kind = ints[I_TERR_KIND]
+    n_seg = c.shape[0]
+    n_legs = states.shape[0]
+    step = ints[I_STEP]
+    if step > 0:  # record_tracking: how well the body followed the last step's targets
+        m = 0
+        for i in range(n_seg):
+            if supported[i]:
+                dx = c[i, 0] - c_T[i, 0]
+                dy = c[i, 1] - c_T[i, 1]
+                dz = c[i, 2] - c_T[i, 2]
+                err_scratch[m] = math.sqrt(dx * dx + dy * dy + dz * dz)
+                m += 1
+        fs[F_TRACKING_SUM] += numpy_sum(err_scratch, m)
+        ints[I_TRACKING_N] += m
+    if step == 0:
+        L.legs_forward_kinematics(c, R, geom, angles, O, M, tips)
+    # 1. antennae (food is not compiled)
+    has_ant = ints[I_HAS_ANTENNAE] != 0
+    if has_ant:
+        n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f, nominal, offsets,
+                                                 root_target, root_omega, retracting, contact, rising,
+                                                 contact_point, contact_normal, contact_depth, arrived, points,
+                                                 frames)
+        ints[I_CONTACT_EVENTS] += n_rising
+        if any_arrived:
+            for a in range(2):
+                if arrived[a]:  # Antennae._draw: uniform(theta range), then uniform(phi range)
+                    u = ant_rnd[ints[I_ANT_RND_USED]]
+                    lo, hi = ant_params[AN.P_TH_LO], ant_params[AN.P_TH_HI]
+                    root_target[a, 0] = lo + (hi - lo) * u
+                    u = ant_rnd[ints[I_ANT_RND_USED] + 1]
+                    lo, hi = ant_params[AN.P_PH_LO], ant_params[AN.P_PH_HI]
+                    root_target[a, 1] = lo + (hi - lo) * u
+                    ints[I_ANT_RND_USED] += 2
+                    ints[I_TARGETS_DRAWN] += 1
+    # 2. head: brain mode
+    L.tips_touching(kind, terr, tips, fs[F_CONTACT_DIST], touching)
+    n_touch = 0
+    for k in range(n_legs):
+        if touching[k]:
+            n_touch += 1
+    frac = n_touch / n_legs
+    brain = ints[I_BRAIN]
+    if brain == ADJUSTMENT and frac > fs[F_MAJORITY]:
+        brain = ints[I_WALK_MODE]
+        fs[F_T_WALK] = t
+        fs[F_TOUCH_AT_WALK] = frac
+    if brain != ADJUSTMENT and brain != CONTROL:  # _switch_brain
+        left = has_ant and contact[0]
+        right = has_ant and contact[1]
+        if left or right:
+            if brain != AVOIDANCE or (left and right):
+                fs[F_AVOID_DIR] = _avoidance_turn(left, right, ints[I_PRIORITY_LEFT] != 0)
+            fs[F_AVOID_UNTIL] = t + fs[F_AVOID_HOLD]
+            brain = AVOIDANCE
+        elif brain == AVOIDANCE and t < fs[F_AVOID_UNTIL]:
+            pass
+        else:
+            brain = RANDOM_WALK
+    ints[I_BRAIN] = brain
+    brain_steps[brain] += 1
+    # _head_command
+    speed, rate, turn_dir = 0.0, 0.0, 0.0
+    if brain == AVOIDANCE:
+        speed, rate, turn_dir = fs[F_AVOID_SPEED], fs[F_AVOID_RATE], fs[F_AVOID_DIR]
+    elif brain == CONTROL:
+        k = 0  # np.searchsorted(times, t, side="right") - 1, at least 0
+        while k < sched_t.shape[0] and sched_t[k] <= t:
+            k += 1
+        k = max(k - 1, 0)
+        r = sched_rate[k]
+        speed, rate = sched_speed[k], abs(r)
+        turn_dir = math.copysign(1.0, r) if r != 0 else 0.0
+    elif brain == RANDOM_WALK:
+        turn_rate = fs[F_TURN_RATE]
+        if abs(fs[F_TURN_LEFT]) <= turn_rate * dt:
+            u = rnd[ints[I_RND_USED]]
+            ints[I_RND_USED] += 1
+            lo, hi = -fs[F_TURN_MAX], fs[F_TURN_MAX]
+            fs[F_TURN_LEFT] = lo + (hi - lo) * u
+        tl = fs[F_TURN_LEFT]
+        st = math.copysign(min(abs(tl), turn_rate * dt), tl)
+        fs[F_TURN_LEFT] = tl - st
+        speed, rate = fs[F_HEAD_SPEED], turn_rate
+        turn_dir = math.copysign(1.0, st) if st != 0 else 0.0
+    turn = turn_dir * rate * dt
+    tm = fs[F_TURN_MEMORY]
+    if ((brain == AVOIDANCE or brain == TROPHOTROPISM) and abs(tm + turn) > fs[F_MAX_BODY_TURN]
+            and abs(tm + turn) > abs(tm)):
+        rate, turn_dir, turn = 0.0, 0.0, 0.0
+    fs[F_TURN_MEMORY] = tm * math.exp(-speed * dt / fs[F_TURN_MEMORY_LENGTH]) + turn
+    if brain == CONTROL:
+        heading = math.atan2(-R[0, 2, 0], R[0, 0, 0])
+        if math.isnan(fs[F_HEADING_CMD]):
+            fs[F_HEADING_CMD] = heading
+        err = (heading - fs[F_HEADING_CMD] + math.pi) % (2 * math.pi) - math.pi
+        fs[F_HEADING_ERR_SUM] += abs(err)
+        ints[I_HEADING_ERR_N] += 1
+        fs[F_HEADING_CMD] += turn_dir * rate * dt
+    # 3. rigid segments
+    TG.segments_supported(states, ints[I_MIN_STANCE], supported)
+    for i in range(n_seg):
+        kinematic[i] = supported[i]
+    kinematic[0] = brain != ADJUSTMENT
+    TG.targeter_step(c, R, kinematic, kind, terr_walk, tg_params, link_rest, height_target, speed, rate, turn_dir,
+                     dt, c_T, R_T)
+    # 4. legs
+    collide = ints[I_COLLIDE] != 0
+    if collide:
+        prev_angles[:, :] = angles
+    SW.switcher_step(states, angles, airborne, touching, ik_failed, sw_params, dt, entered)
+    if collide:
+        ints[I_LEG_STUCK] += LC.stop_swinging_legs(states, prev_angles, angles, c_T, R_T, geom, kind, terr, stopped)
+        for k in range(n_legs):
+            if stopped[k]:
+                ints[I_LEG_STOPS] += 1
+    SW.fix_stance_tips(entered, c_T, R_T, geom, angles, tips)
+    if collide:
+        LC.surface_touchdown_tips(entered, tips, kind, terr)
+    SW.stance_inverse_kinematics(states, c_T, R_T, geom, tips, angles, ik_failed)
+    theta_min = fs[F_THETA_MIN]
+    for k in range(n_legs):
+        if states[k] == SW.STANCE and angles[k, 0] < theta_min:
+            ik_failed[k] = True
+    stance_tips[:, :] = tips
+    L.legs_forward_kinematics(c_T, R_T, geom, angles, O, M, tips)
+    for k in range(n_legs):
+        if states[k] == SW.STANCE:  # a planted tip stays where it touched down
+            tips[k, 0], tips[k, 1], tips[k, 2] = stance_tips[k, 0], stance_tips[k, 1], stance_tips[k, 2]
+    if collide:
+        LC.stance_knees_inside(states, M, kind, terr, ik_failed)
+    fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX], LC.legs_penetration(kind, terr, M, tips))
+    recorded = step % ints[I_RECORD_EVERY] == 0
+    ints[I_RECORDED] = recorded
+    ints[I_STEP] = step + 1
+    return recorded
