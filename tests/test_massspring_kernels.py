@@ -161,7 +161,8 @@ def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n
         if x[n, 1] < fric[FK.CONTACT_DISTANCE]:
             # the normal impulse the collision below delivers: only when the step's path reaches the ground
             travel_y = dt * (0.5 * (v[n, 1] + vn[n, 1]) if euler else vn[n, 1])
-            jn = -(1 + r_n) * vn[n, 1] if (vn[n, 1] < 0 and x[n, 1] + travel_y < 0) else 0.0
+            reaches = fric_model == FK.STICK or x[n, 1] + travel_y < 0
+            jn = -(1 + r_n) * vn[n, 1] if (vn[n, 1] < 0 and reaches) else 0.0
             vn[n] = FK.ground_friction_numpy(fric_model, fric, vn[n], np.array([0.0, 1.0, 0.0]), sp, jn)
         q = x[n] + dt * (0.5 * (v[n] + vn[n]) if euler else vn[n])
         if q[1] < 0:

@@ -28,7 +28,7 @@ import math
 from numba import njit
 
 from ..world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
-from .friction_kernels import ground_friction
+from .friction_kernels import STICK, ground_friction
 from .step_status import ACC_MAX_PEN, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 
 
@@ -44,10 +44,15 @@ def contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy,
     The normal impulse per unit mass is -(1 + r_n) v.n when the path reaches the surface
     (phi + d.n < 0, the first-order test of ``collide_path``'s crossing; exact on planes) and
     v.n < 0, else 0: friction never exceeds mu times the normal impulse the step delivers.
+    The STICK model holds every mass within the contact distance that moves toward the surface.
     """
     nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
     vn = vx * nx + vy * ny + vz * nz
-    reaches = phi + dx * nx + dy * ny + dz * nz < 0.0
+    # Miller's caterpillar rule (STICK) is kinematic, not a force law: a mass within the contact
+    # distance that presses toward the surface is held, whether or not this step reaches it.  (With
+    # the reaching test the vibrating fem caterpillar slid off the 45 degree descent, and the
+    # lattice one held on: tests/test_miller_images.py; issue 11.)
+    reaches = fric_model == STICK or phi + dx * nx + dy * ny + dz * nz < 0.0
     jn = -(1.0 + r_n) * vn if (vn < 0.0 and reaches) else 0.0
     return ground_friction(fric_model, fric, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn)
 
