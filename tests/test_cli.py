@@ -149,6 +149,11 @@ def test_bad_input_gives_one_line_exit_2_and_writes_nothing(capsys, tmp_path, mo
     ("[creature]\nsegments = 5\ndefault_gait = 'rectilinear'\n[bodies.massspring]\nstiffness = -2\n",
      "bodies.massspring.stiffness"),
     ("[creature]\nsegments = 5\n[skeleton]\n", "skeleton: unknown table"),
+    # a gait's own body keys ([gaits.<gait>.bodies.<body>], models/snake.toml's sidewinder) are checked too
+    ("[creature]\nsegments = 5\n[gaits.sidewinding.bodies.massspring]\nstiffness = -2\n[bodies.massspring]\n",
+     "gaits.sidewinding.bodies.massspring.stiffness"),
+    ("[creature]\nsegments = 5\n[gaits.sidewinding.bodies.rubber]\n[bodies.massspring]\n",
+     "gaits.sidewinding.bodies.rubber: unknown body model"),
 ])
 def test_bad_creature_file_names_the_file_and_key(capsys, tmp_path, monkeypatch, content, expected):
     monkeypatch.chdir(tmp_path)

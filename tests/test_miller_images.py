@@ -32,10 +32,6 @@ def check(key: str, fn, body: str = BODY) -> MI.ImageCheck:
     return c
 
 
-SIDEWINDING_FIX = ("the lattice sidewinder rolls like a log with ~95 % of its segments on the ground; "
-                   "sidewinding without rolling is issue 11's body-physics part (helper i11b)")
-
-
 def test_image_1a_worm_nose_slides_forward_on_impact():
     check("worm-book", MI.worm_nose_slides_forward)
 
@@ -60,17 +56,14 @@ def test_image_2d_snake_segments_follow_one_path():
     check("snake-undulation", MI.snake_segments_follow_one_path)
 
 
-@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
 def test_image_3a_sidewinder_contact_is_localised():
     check("sidewinder", MI.sidewinder_contact_localised)
 
 
-@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
 def test_image_3d_sidewinder_travels_diagonally():
     check("sidewinder", MI.sidewinder_travels_diagonally)
 
 
-@pytest.mark.xfail(reason=SIDEWINDING_FIX, strict=False)
 def test_image_3_sidewinder_does_not_roll():
     check("sidewinder", MI.sidewinder_does_not_roll)
 

@@ -60,7 +60,10 @@ def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False,
     A bending gait with ``gait.curvature_amplitude`` > 0 commands its shape: the LATERAL amplitude
     is curvature_amplitude x ``strain_per_curvature`` (the body's own gain, strain per unit of
     curvature x body length, measured by the body and passed in ``body_info``); without the gain
-    the raw strain ``amplitude`` is used (a table built before the body is known).
+    the raw strain ``amplitude`` is used (a table built before the body is known).  Sidewinding's
+    DORSAL amplitude is likewise ``vertical_curvature_amplitude`` x the same gain when both are
+    given: the gain is measured in the lateral plane, and the bodies' cross-sections are square
+    (width = height, the same fibre layout about both axes), so it holds in the vertical plane too.
     """
     table = np.zeros((N_CHANNELS, 5))
     if passive or gait.name == "passive":
@@ -78,7 +81,10 @@ def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False,
         amplitude = gait.curvature_amplitude * strain_per_curvature
     table[main] = (amplitude, k, omega, phase, profile)
     if gait.name == "sidewinding":
-        table[DORSAL] = (gait.vertical_amplitude, k, omega, phase + math.radians(gait.vertical_phase_deg), PROFILE_SINE)
+        vertical = gait.vertical_amplitude
+        if gait.vertical_curvature_amplitude > 0.0 and strain_per_curvature is not None:
+            vertical = gait.vertical_curvature_amplitude * strain_per_curvature
+        table[DORSAL] = (vertical, k, omega, phase + math.radians(gait.vertical_phase_deg), PROFILE_SINE)
     if gait.name == "arching":
         # Lifted segments shorten and reach forward while the others hold (Miller: "the underside is
         # lifted and thrust forward and then placed down again"); with 180 degrees the arched segments
@@ -149,7 +155,7 @@ class MuscleWaveController:
     def reset(self, case, body_info, rng=None) -> None:
         self.s_seg = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
         gait = case.gait
-        if gait.name in CURVATURE_GAITS and gait.curvature_amplitude > 0.0:
+        if gait.name in CURVATURE_GAITS and (gait.curvature_amplitude > 0.0 or gait.vertical_curvature_amplitude > 0.0):
             gain = body_info.get("strain_per_curvature")
             if gain is None:
                 # a reset outside the runner (a bare core.protocols.body_info): the raw strain amplitude

@@ -4,7 +4,8 @@ Layers, later ones win:
 
 1. the defaults of each section (``schema.py``, the backend's config class);
 2. the creature file ``models/<creature>.toml`` (its ``[gaits.<gait>]`` and
-   ``[bodies.<body>]`` tables fill the ``gait`` and ``body`` sections);
+   ``[bodies.<body>]`` tables fill the ``gait`` and ``body`` sections; a gait's
+   ``[gaits.<gait>.bodies.<body>]`` table replaces body keys while that gait runs);
 3. the scenario file ``scenarios/<scenario>.toml``;
 4. command-line flags ``--duration``, ``--dt``, ``--seed``;
 5. ``--set KEY=VALUE`` overrides by dotted path.
@@ -189,7 +190,11 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
         if gait not in registry.GAITS:
             raise InputError(src, f"gaits.{gait}", f"unknown gait{did_you_mean(gait, registry.GAITS)}; choose one of "
                                                    f"{', '.join(sorted(registry.GAITS))}")
-        check_section(GaitConfig, table, src, f"gaits.{gait}")
+        if not isinstance(table, dict):
+            check_section(GaitConfig, table, src, f"gaits.{gait}")  # names the bad value
+            continue
+        check_section(GaitConfig, {k: v for k, v in table.items() if k != GAIT_BODY_TABLE}, src, f"gaits.{gait}")
+        _check_gait_bodies(table.get(GAIT_BODY_TABLE, {}), src, gait)
     for body, table in data.get("bodies", {}).items():
         if body not in registry.BODIES:
             raise InputError(src, f"bodies.{body}", f"unknown body model{did_you_mean(body, registry.BODIES)}; "
@@ -201,6 +206,26 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
             raise InputError(src, "creature.gaits", f"unknown gait {gait!r}{did_you_mean(gait, registry.GAITS)}; "
                                                     f"choose from {', '.join(sorted(registry.GAITS))}")
     return path, data
+
+
+GAIT_BODY_TABLE = "bodies"  # [gaits.<gait>.bodies.<body>]: body keys that hold while the creature uses this gait
+
+
+def _check_gait_bodies(tables: Any, src: str, gait: str) -> None:
+    """Validate ``[gaits.<gait>.bodies.<body>]`` tables: body-model keys that replace the creature's
+    ``[bodies.<body>]`` ones while it uses this gait (a sidewinder braces its body: models/snake.toml)."""
+    where = f"gaits.{gait}.{GAIT_BODY_TABLE}"
+    if not isinstance(tables, dict):
+        raise InputError(src, where, f"expected tables [{where}.BODY], got {tables!r}")
+    for body, table in tables.items():
+        if body not in registry.BODIES:
+            raise InputError(src, f"{where}.{body}", f"unknown body model{did_you_mean(body, registry.BODIES)}; "
+                                                     f"choose one of {', '.join(sorted(registry.BODIES))}")
+        if not isinstance(table, dict):
+            raise InputError(src, f"{where}.{body}", f"expected a table of body keys, got {table!r}")
+        if "name" in table:
+            raise InputError(src, f"{where}.{body}.name", "not allowed: the body model is named by the table")
+        check_section(registry.BODIES[body].config_cls, table, src, f"{where}.{body}")
 
 
 def load_scenario_file(name: str) -> tuple[Path, dict[str, Any]]:
@@ -362,10 +387,13 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
         raise InputError("--gait", None, f"unsupported combination: body {body!r} cannot honour gait {gait!r} "
                                          f"(needs {', '.join(sorted(missing))})")
 
+    gait_table = dict(cdata.get("gaits", {}).get(gait, {}))
+    gait_bodies = gait_table.pop(GAIT_BODY_TABLE, {})
     layers: dict[str, Any] = {
         "creature": cre,
-        "body": {"name": body, **cdata["bodies"][body]},
-        "gait": {"name": gait, **cdata.get("gaits", {}).get(gait, {})},
+        # the gait's own body keys ([gaits.<gait>.bodies.<body>]) win over the creature's [bodies.<body>]
+        "body": {"name": body, **cdata["bodies"][body], **gait_bodies.get(body, {})},
+        "gait": {"name": gait, **gait_table},
         "scenario": {"name": spath.stem, **sdata["scenario"]},
     }
     for table in ("legs", "controller", "antennae", "food", "friction", "collision", "record", "stability", "metrics"):

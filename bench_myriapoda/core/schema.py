@@ -115,6 +115,10 @@ class GaitConfig:
     direction: str = rng("head-to-tail", choices=("head-to-tail", "tail-to-head"),
                          doc="way the wave travels along the body (Miller's worm: head to tail)")
     vertical_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="sidewinding: vertical wave strain amplitude")
+    vertical_curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
+                                              doc="sidewinding: commanded peak vertical curvature x body length [-], "
+                                                  "turned into strain with the body's own gain as "
+                                                  "curvature_amplitude; 0: use the raw 'vertical_amplitude'")
     vertical_phase_deg: float = rng(90.0, doc="sidewinding: phase of the vertical wave relative to the lateral wave [deg]")
     axial_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="arching: axial strain amplitude of the contraction coupled to the arch")
     axial_phase_deg: float = rng(180.0, doc="arching: phase of the axial wave relative to the arch (180: arched segments are shortest)")

@@ -19,7 +19,8 @@ CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
 
 def needs_curvature_gain(case) -> bool:
     """True when ``case``'s gait commands a curvature (and so needs the body's gain)."""
-    return case.gait.name in CURVATURE_GAITS and case.gait.curvature_amplitude > 0.0
+    g = case.gait
+    return g.name in CURVATURE_GAITS and (g.curvature_amplitude > 0.0 or g.vertical_curvature_amplitude > 0.0)
 
 
 def calibrated_body_info(body, case) -> dict[str, Any]:

@@ -24,7 +24,6 @@ from .core import Context, Outcome, failed_run, holds, not_applicable, relative
 MILLER = "Miller 1988"
 PATH_FOLLOWING_MAX_BL = 0.05      # Image 2: segments within 5 % of a body length of the head's path
 SNAKE_MIN_BL_PER_CYCLE = 0.02     # ... while it really moves (VALIDATION.md: isotropic snake stays below this)
-SIDEWINDER_MIN_ANGLE_DEG = 45.0   # Image 3: diagonal travel
 SIDEWINDER_REVERSAL_RATIO = 0.5   # the reversed gait's sideways speed at least half the forward one's
 SLITHERING_REL_TOL = 0.25         # dynamic snake vs the inertia-free kinematic model (Fr small, not zero)
 SLITHERING_RATIOS = (2.0, 4.0, 8.0)  # mu_t / mu_f of the sweep
@@ -88,6 +87,25 @@ def judge_worm_book(com, sc) -> Outcome:
                  f"height < {0.5 * sc.slab_height_m * 100:g} cm, x > edge",
                  f"started at height {com[0, 1] * 100:.1f} cm; book {sc.slab_height_m * 100:g} cm",
                  final_height_m=float(com[-1, 1]), final_x_m=float(com[-1, 0]))
+
+
+# --------------------------------------------------------------------------- Image 3
+
+def judge_sidewinder(m: dict) -> Outcome:
+    """Image 3 criteria on a sidewinding run's metrics, those of ``reference.miller_images``: diagonal
+    travel, localised contact, no roll (the reversal needs a second run: the validate row has it)."""
+    mod = optional_reference("miller_images")
+    if mod is None:
+        return not_applicable("bench_myriapoda.reference.miller_images (issue 11) is not on this branch")
+    lo, hi = mod.DIAGONAL_DEG
+    ang = m.get("travel_angle_deg", math.nan)
+    contact = m.get("segment_contact_fraction", math.nan)
+    roll = m.get("roll_max_deg", math.nan)
+    ok = lo < abs(ang) < hi and contact < mod.LOCALISED_CONTACT and roll < mod.ROLL_MAX_DEG
+    return holds(bool(ok), round(ang, 1), f"{lo:g} < |travel angle| < {hi:g} deg",
+                 f"diagonal; segment contact < {mod.LOCALISED_CONTACT:g}; roll < {mod.ROLL_MAX_DEG:g} deg",
+                 f"segment contact {contact:.2f}, roll max {roll:.0f} deg (the reversal with the phase: see the "
+                 "validate row)", "deg", travel_angle_deg=ang, segment_contact_fraction=contact, roll_max_deg=roll)
 
 
 # --------------------------------------------------------------------------- Image 2

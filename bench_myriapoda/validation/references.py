@@ -57,6 +57,39 @@ def semi_implicit_oscillator_factor(c: float, h: float) -> float:
     return 1.0 / np.sqrt(1.0 + c * h)
 
 
+def single_node_tet(rho: float = 1.0, gamma: float = 40.0, E: float = 2.0e4, nu: float = 0.3) -> FEMSystem:
+    """One unit corner tet (4 nodes, m) whose nodes 0-2 are fixed: only node 3 moves.
+
+    The smallest system on which the per-step map of App. A can be linearised by hand."""
+    nodes = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    s = FEMSystem(nodes, np.array([[0, 1, 2, 3]]), E=E, nu=nu, rho=rho, gamma=gamma)
+    s.set_fixed(np.array([True, True, True, False]))
+    return s
+
+
+def one_step_map_eigenvalues(s: FEMSystem, node: int, h: float, eps: float = 1e-7) -> np.ndarray:
+    """Eigenvalues (6,) complex of the linearised one-step map of one free node's (x, v), by central differences.
+
+    ``s`` is reset to its rest positions ``s.X`` (m) with zero velocity before every probe; each probe
+    perturbs one of the node's 3 position (m) or 3 velocity (m/s) components by +-eps and takes one step
+    of h (s) without gravity.  |eigenvalue| is the per-step amplitude factor of that mode."""
+    rest = s.X.copy()
+    J = np.zeros((6, 6))
+    for j in range(6):
+        out = []
+        for sign in (1.0, -1.0):
+            s.x[:] = rest
+            s.v[:] = 0.0
+            if j < 3:
+                s.x[node, j] += sign * eps
+            else:
+                s.v[node, j - 3] += sign * eps
+            s.advance(1, dt=h, gravity=(0.0, 0.0, 0.0))
+            out.append(np.concatenate([s.x[node] - rest[node], s.v[node]]))
+        J[:, j] = (out[0] - out[1]) / (2 * eps)
+    return np.linalg.eigvals(J)
+
+
 # --------------------------------------------------------------------------- static solves
 
 def relax(s: FEMSystem, dt: float, chunk: int, max_steps: int, probe, rtol: float = 1e-6, **kw) -> float:
