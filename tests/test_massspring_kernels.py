@@ -159,7 +159,10 @@ def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n
         sp = faces[max(j - 1, 0)] - faces[min(j + 1, nf - 1)]
         sp /= np.linalg.norm(sp)
         if x[n, 1] < fric[FK.CONTACT_DISTANCE]:
-            jn = -(1 + r_n) * vn[n, 1] if vn[n, 1] < 0 else 0.0
+            # the normal impulse the collision below delivers: only when the step's path reaches the ground
+            travel_y = dt * (0.5 * (v[n, 1] + vn[n, 1]) if euler else vn[n, 1])
+            reaches = fric_model == FK.STICK or x[n, 1] + travel_y < 0
+            jn = -(1 + r_n) * vn[n, 1] if (vn[n, 1] < 0 and reaches) else 0.0
             vn[n] = FK.ground_friction_numpy(fric_model, fric, vn[n], np.array([0.0, 1.0, 0.0]), sp, jn)
         q = x[n] + dt * (0.5 * (v[n] + vn[n]) if euler else vn[n])
         if q[1] < 0:
@@ -228,3 +231,22 @@ def test_miller_presets_fill_unset_constants_only():
     worm = resolve_case("worm", "massspring", "flat")
     assert (worm.body.stiffness, worm.body.damping, worm.body.substeps_per_frame) == (1.5, 0.9, 10)
     assert worm.dt == pytest.approx(1.0 / (worm.body.frame_rate_hz * 10))
+
+
+def test_a_mass_above_the_ground_gets_no_friction_until_its_step_reaches_the_ground():
+    """Friction is at most mu times the normal impulse the step's collision delivers: a mass inside
+    the contact distance that moves down but does not reach the surface this step keeps its
+    tangential velocity; one whose step reaches it is braked by mu (1 + r_n) |v_n|."""
+    from bench_myriapoda.bodies.contact_kernels import contact_friction
+
+    p = np.zeros(FK.N_FRICTION_PARAMS)
+    p[FK.CONTACT_DISTANCE], p[FK.MU_F], p[FK.MU_B], p[FK.MU_T] = 0.005, 0.5, 0.5, 0.5
+    p[FK.MUS_F], p[FK.MUS_B], p[FK.MUS_T] = 0.5, 0.5, 0.5
+    kind, terr = TK.PLANE, np.zeros(TK.N_TERRAIN_PARAMS)  # the plane y = 0
+    dt, v = 1e-3, np.array([0.3, -0.2, 0.0])
+    above = contact_friction(kind, terr, FK.COULOMB, p, 0.0, 0.0, 0.002, 0.0, *v, 1.0, 0.0, 0.0,
+                             0.002, *(dt * v))
+    np.testing.assert_allclose(above, v)
+    reaching = contact_friction(kind, terr, FK.COULOMB, p, 0.0, 0.0, 0.0001, 0.0, *v, 1.0, 0.0, 0.0,
+                                0.0001, *(dt * v))
+    np.testing.assert_allclose(reaching, [0.3 - 0.5 * 0.2, -0.2, 0.0])

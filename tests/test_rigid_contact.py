@@ -336,3 +336,29 @@ def test_coulomb_friction_impulse_matches_brute_force_maximum_dissipation():
         np.testing.assert_allclose(got, ref, atol=FRICTION_KERNEL_TOL * limit)
         n_kinetic += np.linalg.norm(Kinv @ u) > limit
     assert 20 < n_kinetic < 60  # both branches exercised
+
+
+def test_anisotropic_box_friction_follows_hu_et_al_law():
+    """A sliding box contact takes Hu et al.'s friction -lam_n (mu_1 s_1, mu_2 s_2), s the unit
+    resulting slip (the law of the point nodes and of reference.slithering), not the
+    maximum-dissipation point of the same ellipse; sticking when -K^-1 u lies in the ellipse."""
+    from bench_myriapoda.bodies.rigid_kernels import _hu_friction_impulse
+
+    rng = np.random.default_rng(11)
+    n_kinetic = 0
+    for _ in range(200):
+        A = rng.normal(size=(2, 2))
+        K = A @ A.T + 0.05 * np.eye(2)
+        u = rng.normal(size=2)
+        m1, m2 = rng.uniform(0.05, 1.0, 2)
+        lam = rng.uniform(0.01, 2.0)
+        got = np.array(_hu_friction_impulse(K[0, 0], K[0, 1], K[1, 1], u[0], u[1], m1, m2, lam))
+        stick = -np.linalg.solve(K, u)
+        if (stick[0] / m1) ** 2 + (stick[1] / m2) ** 2 <= lam ** 2:
+            np.testing.assert_allclose(got, stick, rtol=1e-9, atol=1e-12)
+            continue
+        n_kinetic += 1
+        slip = u + K @ got
+        s = slip / np.linalg.norm(slip)
+        np.testing.assert_allclose(got, -lam * np.array([m1 * s[0], m2 * s[1]]), atol=1e-8 * lam)
+    assert 50 < n_kinetic < 200

@@ -436,6 +436,61 @@ def _coulomb_friction_impulse(a, b, d, ia, ib, id_, u1, u2, limit):
 
 
 @njit(cache=True)
+def _hu_friction_impulse(a, b, d, u1, u2, m1, m2, lam_n):
+    """Anisotropic friction impulse (l1, l2) [N s] of one contact by Hu et al.'s law (PNAS 2009).
+
+    Axis 1 is the box's forward axis on the surface, axis 2 across it; m1 = mu_f or mu_b, m2 = mu_t
+    (> 0); lam_n [N s] the normal impulse; u = (u1, u2) [m/s] the slip without this impulse and
+    K = [[a, b], [b, d]] [1/kg] the tangential inverse effective mass (slip after: u + K l).
+    Static: l = -K^-1 u when it lies in the ellipse (l1 / m1)^2 + (l2 / m2)^2 <= lam_n^2.
+    Kinetic: Hu et al.'s friction l = -lam_n (m1 s1, m2 s2) with s the unit direction of the
+    resulting slip u + K l, the law the point nodes (``friction_kernels``, COULOMB) and the
+    kinematic reference (``reference.slithering``) use.  (The maximum-dissipation point of the
+    same ellipse, -lam_n (m1^2 s1, m2^2 s2) / |M s|, resists a small sideways slip mu_t / mu_f
+    times harder, so the hybrid snake's boxes barely slipped sideways and it slithered 62 %
+    faster than the reference at mu_t / mu_f = 5; issue 11.)
+    With l = M l', M = diag(m1, m2): u + K M l' = -alpha l' for some alpha > 0 and |l'| = lam_n,
+    i.e. l' = -(K M + alpha I)^-1 u; 1 / |l'(alpha)| - 1 / lam_n is solved for alpha by Newton,
+    kept inside a bisection bracket.
+    """
+    det0 = a * d - b * b
+    l1 = -(d * u1 - b * u2) / det0
+    l2 = -(-b * u1 + a * u2) / det0
+    if (l1 / m1) ** 2 + (l2 / m2) ** 2 <= lam_n * lam_n:
+        return l1, l2
+    if lam_n <= 0.0:
+        return 0.0, 0.0
+    lo, hi = 0.0, -1.0  # |l'(lo)| > lam_n; hi: first alpha found with |l'| < lam_n
+    alpha = 0.0
+    p1 = p2 = 0.0
+    for _ in range(60):
+        a11, a12, a21, a22 = a * m1 + alpha, b * m2, b * m1, d * m2 + alpha
+        det = a11 * a22 - a12 * a21
+        p1 = -(a22 * u1 - a12 * u2) / det
+        p2 = -(-a21 * u1 + a11 * u2) / det
+        nl = math.sqrt(p1 * p1 + p2 * p2)
+        if abs(nl - lam_n) <= 1e-10 * lam_n:
+            break
+        if nl > lam_n:
+            lo = alpha
+        else:
+            hi = alpha
+        # Newton on 1/|l'| - 1/lam_n: d l'/d alpha = -A^-1 l', so d(1/|l'|)/d alpha = l'.A^-1 l' / |l'|^3
+        q1 = (a22 * p1 - a12 * p2) / det
+        q2 = (-a21 * p1 + a11 * p2) / det
+        slope = (p1 * q1 + p2 * q2) / (nl * nl * nl)
+        nxt = alpha + (1.0 / lam_n - 1.0 / nl) / slope if slope > 0.0 else -1.0
+        if hi < 0.0:
+            if nxt <= lo:
+                nxt = 2.0 * lo + (a * m1 + d * m2)
+        elif nxt <= lo or nxt >= hi:
+            nxt = 0.5 * (lo + hi)
+        alpha = nxt
+    scale = lam_n / math.sqrt(p1 * p1 + p2 * p2)
+    return m1 * p1 * scale, m2 * p2 * scale
+
+
+@njit(cache=True)
 def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
                     bounce_threshold, n_iterations, tolerance, impulse_cache, corner_of,
                     lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
@@ -456,9 +511,9 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
     Anisotropic friction (``aniso[ANISO_ON]`` set: a body segment with scales, Hu et al. 2009):
     the tangent basis is the box's x axis (forward) projected on the surface and its normal
     cross product, and the friction set is the ellipse |l_1 / mu_1|^2 + |l_2 / mu_2|^2 <=
-    lam_n^2 with mu_1 = mu_f or mu_b by the sign of the forward slip and mu_2 = mu_t.  With
-    l = M l', M = diag(mu_1, mu_2), the maximum-dissipation problem becomes the disk problem of
-    ``_coulomb_friction_impulse`` for K' = M K M and u' = M u, solved as for isotropic friction.
+    lam_n^2 with mu_1 = mu_f or mu_b by the sign of the forward slip and mu_2 = mu_t; a sliding
+    contact takes Hu et al.'s point of it, -lam_n (mu_1 s_1, mu_2 s_2) for the unit slip s
+    (``_hu_friction_impulse``), as the point nodes do.
 
     Projected Gauss-Seidel over the contacts on accumulated impulses
     (sequential impulses; Catto 2005), warm-started with the impulses the same
@@ -560,10 +615,7 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
             if aniso_on:
                 m1 = max(aniso[ANISO_MU_F] if u1 > 0.0 else aniso[ANISO_MU_B], _MU_FLOOR)
                 m2 = max(aniso[ANISO_MU_T], _MU_FLOOR)
-                s1, s2 = _coulomb_friction_impulse(m1 * m1 * kt[j, 0], m1 * m2 * kt[j, 1], m2 * m2 * kt[j, 2],
-                                                   kt[j, 3] / (m1 * m1), kt[j, 4] / (m1 * m2),
-                                                   kt[j, 5] / (m2 * m2), m1 * u1, m2 * u2, lam[j, 0])
-                l1, l2 = m1 * s1, m2 * s2
+                l1, l2 = _hu_friction_impulse(kt[j, 0], kt[j, 1], kt[j, 2], u1, u2, m1, m2, lam[j, 0])
             else:
                 l1, l2 = _coulomb_friction_impulse(kt[j, 0], kt[j, 1], kt[j, 2], kt[j, 3],
                                                    kt[j, 4], kt[j, 5], u1, u2, mu * lam[j, 0])

@@ -94,7 +94,7 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
 @njit(cache=True, error_model="numpy")
 def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_buf,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-            node_seg, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
+            node_seg, node_seg_b, node_w, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
             Dm_inv_eff, coef, q_ws, F_work, H_work, force, b_work, act, centers, spine, acc):
     """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
 
@@ -104,8 +104,9 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     tets, Dm_inv (rest), vol, mu, lam: the mesh; tet_seg, tet_y, tet_z: each
     tet's segment and section position; perm, sky_*, fp_*: the factorization of
     (M + dt D)_ff over the free nodes ``perm`` (``FEMSystem.solver``); nodes not
-    in ``perm`` are held (v = 0).  node_seg (n_nodes,): segment whose spine a
-    node uses; seg_ptr/seg_nodes: CSR of each segment's nodes.  Work arrays are
+    in ``perm`` are held (v = 0).  node_seg, node_seg_b, node_w (n_nodes,): a node's friction
+    frame is the spine (1 - w) spine[a] + w spine[b], normalized (``body.spine_interpolation``:
+    the tangent at the node's own place on the body); seg_ptr/seg_nodes: CSR of each segment's nodes.  Work arrays are
     overwritten; ``acc`` accumulates statistics (``step_status``).
     """
     g = phys[GRAVITY]
@@ -134,9 +135,17 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
-            s = node_seg[i]
-            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1],
-                                         spine[s, 2], dt, terr_kind, terr, fric_model, fric, r_n, r_t,
+            sa = node_seg[i]
+            sb = node_seg_b[i]
+            w = node_w[i]
+            sx = (1.0 - w) * spine[sa, 0] + w * spine[sb, 0]
+            sy = (1.0 - w) * spine[sa, 1] + w * spine[sb, 1]
+            sz = (1.0 - w) * spine[sa, 2] + w * spine[sb, 2]
+            nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+            if nrm > 0.0:
+                sx, sy, sz = sx / nrm, sy / nrm, sz / nrm
+            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], sx, sy, sz, dt, terr_kind, terr,
+                                         fric_model, fric, r_n, r_t,
                                          contact_dist, phys[MAX_PEN], max_speed2, acc, False, 0.0, 0.0, 0.0)
             n_contact += touching
             if st != OK:
