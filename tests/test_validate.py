@@ -17,8 +17,6 @@ from bench_myriapoda.validation.run import run_checks, select
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
 # APPLICABLE with a reason).
 KNOWN_FAILURES = {
-    ("analytic.worm-eps-lambda", "hybrid"): "the hybrid worm moves 0.053 m per cycle: its rigid boxes",
-    ("cross_body.worm-speed", "all"): "the hybrid worm is 33 % slower than the lattice",
     ("cross_body.hang-elongation", "all"): "static elongation fem 21.8 cm, hybrid 14.1 cm (1.55x, not 1.0-1.3x): "
                                            "the hybrid's links, glued to rigid faces with 2 cells along 0.5 m, are "
                                            "too stiff at resolution 3 (at resolution 5: fem 23.2, hybrid 19.9 cm, "

@@ -9,7 +9,6 @@ Measured at this commit (error vs eps * Lambda, both time steps alike to 0.1 %):
 """
 from __future__ import annotations
 
-import os
 
 import pytest
 
@@ -34,12 +33,7 @@ def displacement(body, wavelength_bl, dt_factor):
     return r.metrics["displacement_per_cycle_m"], expected
 
 
-HYBRID_OFF = pytest.mark.xfail(reason="hybrid worm 27 % short of eps * Lambda: the short links glued to rigid faces "
-                                      "do not reach the commanded axial strain (not done in issue 11's session)",
-                               strict=False, run=os.environ.get("BENCH_LONG_TESTS", "") == "1")
-
-
-@pytest.mark.parametrize("body", ["massspring", "fem", pytest.param("hybrid", marks=HYBRID_OFF)])
+@pytest.mark.parametrize("body", ["massspring", "fem", "hybrid"])
 @pytest.mark.parametrize("wavelength_bl", [0.5, 1.0])
 def test_worm_moves_eps_lambda_per_cycle_at_two_time_steps(body, wavelength_bl):
     d1, expected = displacement(body, wavelength_bl, 1.0)

@@ -318,7 +318,11 @@ class BodyHybrid(SupportedSegments):
         phys[K.SLOP] = contact.slop
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
-        phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
+        # Miller's volume conservation (gait.volume_conserving) thickens a shortening section.  Here the
+        # rigid boxes hold the cross-section of both ends of every link, so no thickening can happen; asked
+        # for one, the glued link only builds transverse stress that resists its own axial shortening (the
+        # worm then fell 27 % short of eps * Lambda; -0.2 % without it).  The links are driven axially only.
+        phys[K.VOLUME] = 0.0
         phys[K.RIGID_ANISO:K.RIGID_ANISO + rk.N_ANISO] = box_friction(
             case.friction, cfg.rigid_friction_mu,
             scaled=not case.creature.legs_per_segment and case.gait.name != "passive")
