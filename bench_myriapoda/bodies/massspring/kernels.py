@@ -310,7 +310,10 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     contact_dist = fric[CONTACT_DISTANCE]
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
-    act[:, :] = act_buf[min(n_steps, n_rows - 1)]
+    last = act_buf[min(n_steps, n_rows - 1)]
+    for i in range(act.shape[0]):  # element-wise: a slice copy compiles numba's shape-error formatting
+        for j in range(act.shape[1]):
+            act[i, j] = last[i, j]
     _corner_major(x, xc)
     _corner_major(v, vc)
     for step in range(n_steps):
