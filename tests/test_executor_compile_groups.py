@@ -13,3 +13,36 @@ def test_first_case_of_every_compile_group_goes_first_and_the_rest_keep_their_or
     assert compile_group(centipede)[1] and not compile_group(worm_ms)[1]
     order = [i for i, _ in compile_first_order(cases)]
     assert order == [0, 2, 3, 1, 4]
+
+
+def test_a_group_sharing_kernels_with_a_compiling_one_waits_behind_warm_cases():
+    from bench_myriapoda.harness.executors import CompileScheduler, shares_kernels
+
+    chain = resolve_case("chain", "hybrid", "fig4-drop")  # hybrid, legless
+    walk_h = resolve_case("centipede", "hybrid", "walk")  # hybrid, legged: the same body kernels
+    worm = resolve_case("worm", "massspring", "flat")
+    worm_2 = resolve_case("worm", "massspring", "flat", duration=1.0)
+    walk_fem = resolve_case("centipede", "fem", "walk")  # legged: the same leg-controller kernels as walk_h
+    assert shares_kernels(compile_group(chain), compile_group(walk_h))
+    assert not shares_kernels(compile_group(chain), compile_group(worm))
+    s = CompileScheduler([worm, chain, walk_h, worm_2, walk_fem])
+    assert s.next_job()[0] == 0  # the worm's kernels start compiling
+    s.finished(0)
+    assert s.next_job()[0] == 1  # the chain compiles the hybrid body ...
+    assert s.next_job()[0] == 4  # ... the FEM walk shares nothing with it: it compiles in parallel
+    assert s.next_job()[0] == 3  # the hybrid walk shares kernels with both: the warm worm case goes first
+    assert s.next_job()[0] == 2  # no warm work left: the hybrid walk starts (better than an idle worker)
+    assert s.next_job() is None and not s.pending
+
+
+def test_scheduler_waits_only_when_every_pending_case_is_in_a_compiling_group():
+    from bench_myriapoda.harness.executors import CompileScheduler
+
+    worm = resolve_case("worm", "massspring", "flat")
+    worm_2 = resolve_case("worm", "massspring", "flat", duration=1.0)
+    s = CompileScheduler([worm, worm_2])
+    assert s.next_job()[0] == 0
+    assert s.next_job() is None  # worm_2 waits for the worm's kernels to reach the cache
+    s.finished(0)
+    assert s.next_job()[0] == 1
+    assert s.next_job() is None and not s.pending

@@ -10,7 +10,9 @@ kernels they compile (``compile_group``); the first case of every group goes out
 first, and the other cases of a group wait until that one has finished, by when
 its kernels are in numba's on-disk cache and the other workers load them instead
 of compiling them again.  With fewer groups than workers the idle workers start
-on the next group's first case, so different kernels compile in parallel.  A case that outruns ``timeout_per_case`` (measured from the
+on the next group's first case, so different kernels compile in parallel; a group
+that shares large kernels with one compiling now (same body, or both legged) waits
+behind the warm cases (``CompileScheduler``).  A case that outruns ``timeout_per_case`` (measured from the
 moment it is handed to a worker) is recorded with status ``timeout``; its worker
 is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
 recorded as ``error`` with its exit code and replaced.  A case that raises is
@@ -180,24 +182,70 @@ def compile_first_order(cases: Sequence[Case]) -> list[tuple[int, Case]]:
     return first + rest
 
 
+def shares_kernels(g: tuple, h: tuple) -> bool:
+    """Whether compile groups g and h compile some of the same large kernels: the same body model's
+    step, the leg controller's kernels (both legged) or the water solver (both with water)."""
+    return g[0] == h[0] or (g[1] and h[1]) or (g[2] and h[2])
+
+
+class CompileScheduler:
+    """Which pending case a free local worker takes next (compile once, not once per worker).
+
+    ``cases`` in :func:`compile_first_order`.  A case whose group is neither warm (a case of it has
+    finished: its kernels are in numba's disk cache) nor compiling (its first case is running) starts
+    that group's compile.  Preference, first match wins:
+
+    1. a cold group sharing no large kernels (:func:`shares_kernels`) with a group compiling now: its
+       compile runs in parallel with the others without doing any of their work again;
+    2. a case of a warm group;
+    3. a cold group that shares kernels with a compiling group (better than an idle worker);
+    4. nothing: the worker waits for a group to turn warm.
+    """
+
+    def __init__(self, cases: Sequence[Case]):
+        self.pending = deque(compile_first_order(cases))
+        self.groups = [compile_group(c) for c in cases]
+        self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
+        self.warm: set = set()  # groups with a finished case
+
+    def next_job(self) -> tuple[int, Case] | None:
+        """The (index, case) to hand out now, removed from the pending cases; None: wait."""
+        best, rank = None, 4
+        for k, (i, _c) in enumerate(self.pending):
+            g = self.groups[i]
+            if g in self.warm:
+                r = 2
+            elif g in self.compiling:
+                continue
+            elif any(shares_kernels(g, h) for h in self.compiling):
+                r = 3
+            else:
+                r = 1
+            if r < rank:
+                best, rank = k, r
+                if r == 1:
+                    break
+        if best is None:
+            return None
+        job = self.pending[best]
+        del self.pending[best]
+        g = self.groups[job[0]]
+        if g not in self.warm:
+            self.compiling.add(g)
+        return job
+
+    def finished(self, index: int) -> None:
+        """Case ``index`` ended (any status): its group's kernels are compiled and cached."""
+        g = self.groups[index]
+        self.warm.add(g)
+        self.compiling.discard(g)
+
+
 def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None]) -> None:
     ctx = mp.get_context("spawn")
-    pending = deque(compile_first_order(cases))
-    groups = [compile_group(c) for c in cases]
-    compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
-    warm: set = set()  # groups with a finished case
-
-    def next_job():
-        """The first pending case whose group is warm or not compiling anywhere (None: wait)."""
-        for k, (i, _c) in enumerate(pending):
-            g = groups[i]
-            if g in warm or g not in compiling:
-                job = pending[k]
-                del pending[k]
-                if g not in warm:
-                    compiling.add(g)
-                return job
-        return None
+    sched = CompileScheduler(cases)
+    pending = sched.pending
+    next_job = sched.next_job
 
     slots = [_start_slot(ctx) for _ in range(max(1, min(workers, len(cases))))]
     try:
@@ -239,8 +287,7 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     s.stop(kill=True)
                     slots[i] = _start_slot(ctx)
                 if result is not None:
-                    warm.add(groups[s.job[0]])
-                    compiling.discard(groups[s.job[0]])
+                    sched.finished(s.job[0])
                     slots[i].job = None
                     emit(result)
     finally:

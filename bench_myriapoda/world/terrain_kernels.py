@@ -629,8 +629,9 @@ def mesh_exact(f, m, px, py, pz, band, t0):
     r0 = int(f[cb + 3])
     best2 = np.inf
     bqx, bqy, bqz = px, py, pz
-    bt = -1
-    bfeat = 0
+    # np.int64, not a literal: a literal argument would compile _candidate and _descend a second time
+    bt = np.int64(-1)
+    bfeat = np.int64(0)
     # nothing within (r0 - 1) h + wall of p: clamp
     if r0 >= 1 and (r0 - 1) * h + wall >= band:
         r = -1
@@ -765,7 +766,7 @@ def mesh_query(f, m, px, py, pz):
     gz = (pz - oz) * invh
     band = f[m + MB_BAND]
     if not (gx >= 0.0 and gx < nx and gy >= 0.0 and gy < ny and gz >= 0.0 and gz < nz):
-        return mesh_exact(f, m, px, py, pz, band, -1)[:5]  # outside the grid: +band at once
+        return mesh_exact(f, m, px, py, pz, band, np.int64(-1))[:5]  # outside the grid: +band at once
     ci, cj, ck = int(gx), int(gy), int(gz)
     u, v, w = gx - ci, gy - cj, gz - ck
     nyc, nzc = ny + 1, nz + 1

@@ -122,7 +122,9 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     for step in range(n_steps):
         if muscles:
             row = act_buf[min(step, n_rows - 1)]
-            act[:, :] = row
+            for i in range(act.shape[0]):  # element-wise: a slice copy compiles numba's shape-error formatting
+                for j in range(act.shape[1]):
+                    act[i, j] = row[i, j]
             active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, row, 1.0, volume, Dm_inv_eff, coef)
         force[:, :] = 0.0
         elastic_forces(x, tets, Dm_inv_eff, coef, q_ws, F_work, H_work, force)

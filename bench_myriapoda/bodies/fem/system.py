@@ -136,9 +136,11 @@ class FEMSystem:
         K.rest_shape(self.X, self.tets, self.Dm_inv, self.vol)
         self.Dm_inv_eff = self.Dm_inv.copy()
         lam, mu = lame_parameters(E, nu)
-        self.lam = np.ascontiguousarray(np.broadcast_to(lam, (m,)), dtype=np.float64)
-        self.mu = np.ascontiguousarray(np.broadcast_to(mu, (m,)), dtype=np.float64)
-        self.rho = np.ascontiguousarray(np.broadcast_to(np.asarray(rho, dtype=float), (m,)))
+        # writeable copies: a read-only broadcast view (E given per tet) would give the kernels taking
+        # them a second compiled signature
+        self.lam = np.array(np.broadcast_to(lam, (m,)), dtype=np.float64)
+        self.mu = np.array(np.broadcast_to(mu, (m,)), dtype=np.float64)
+        self.rho = np.array(np.broadcast_to(np.asarray(rho, dtype=float), (m,)))
         self.gamma = float(gamma)
         self.mass = np.empty(n)
         K.lumped_mass(self.tets, self.vol, self.rho, self.mass)

@@ -63,19 +63,13 @@ def fibre_stretch(act, i, c):
 
 
 @njit(cache=True, error_model="numpy")
-def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face_scale, stretch, out):
-    """Overwrite ``out`` (n_springs,) with spring rest lengths [m] for activation ``act`` (n_seg, 3).
+def face_scales(act, volume_conserving, face_scale):
+    """Overwrite ``face_scale`` (n_seg + 1,) with each cross-section face's circumferential scale.
 
-    face_scale (n_seg + 1,) is overwritten with each cross-section face's
-    circumferential scale: 1 / sqrt(mean axial stretch of its segments) when
-    ``volume_conserving`` (Miller Sec. 4), else 1.  stretch (n_seg, 4) is
-    overwritten with the fibre stretches (computed once per segment, used by
-    every spring of the segment).
+    Miller Sec. 4: 1 / sqrt(mean axial stretch of the face's segments) when
+    ``volume_conserving``, else 1.  act (n_seg, 3): the step's muscle strains.
     """
     n_seg = act.shape[0]
-    for i in range(n_seg):
-        for c in range(4):
-            stretch[i, c] = fibre_stretch(act, i, c)
     for j in range(n_seg + 1):
         if volume_conserving:
             tot = 0.0
@@ -89,6 +83,23 @@ def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face
             face_scale[j] = 1.0 / math.sqrt(tot / cnt)
         else:
             face_scale[j] = 1.0
+
+
+@njit(cache=True, error_model="numpy")
+def lattice_rest_lengths(act, volume_conserving, kind, seg, ca, cb, L0, Lc, face_scale, stretch, out):
+    """Overwrite ``out`` (n_springs,) with spring rest lengths [m] for activation ``act`` (n_seg, 3).
+
+    face_scale (n_seg + 1,) is overwritten with each cross-section face's
+    circumferential scale: 1 / sqrt(mean axial stretch of its segments) when
+    ``volume_conserving`` (Miller Sec. 4), else 1.  stretch (n_seg, 4) is
+    overwritten with the fibre stretches (computed once per segment, used by
+    every spring of the segment).
+    """
+    n_seg = act.shape[0]
+    for i in range(n_seg):
+        for c in range(4):
+            stretch[i, c] = fibre_stretch(act, i, c)
+    face_scales(act, volume_conserving, face_scale)
     for e in range(kind.shape[0]):
         k = kind[e]
         i = seg[e]
@@ -202,19 +213,7 @@ def family_rest_lengths(act, volume_conserving, fam, params, stretch, face_scale
     for c in range(4):
         for i in range(n_seg):
             stretch[c, i] = fibre_stretch(act, i, c)
-    for j in range(n_seg + 1):
-        if volume_conserving:
-            tot = 0.0
-            cnt = 0
-            if j > 0:
-                tot += max(1.0 + act[j - 1, 0], MIN_STRETCH)
-                cnt += 1
-            if j < n_seg:
-                tot += max(1.0 + act[j, 0], MIN_STRETCH)
-                cnt += 1
-            face_scale[j] = 1.0 / math.sqrt(tot / cnt)
-        else:
-            face_scale[j] = 1.0
+    face_scales(act, volume_conserving, face_scale)
     for q in range(fam.shape[0]):
         kind = fam[q, FAM_KIND]
         count = n_seg + 1 - fam[q, FAM_SHIFT]
@@ -310,7 +309,10 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     contact_dist = fric[CONTACT_DISTANCE]
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
-    act[:, :] = act_buf[min(n_steps, n_rows - 1)]
+    last = act_buf[min(n_steps, n_rows - 1)]
+    for i in range(act.shape[0]):  # element-wise: a slice copy compiles numba's shape-error formatting
+        for j in range(act.shape[1]):
+            act[i, j] = last[i, j]
     _corner_major(x, xc)
     _corner_major(v, vc)
     for step in range(n_steps):
