@@ -361,8 +361,7 @@ def advance(x, v, inv_mass, fam, params, act_buf,
                 phi = signed_distance(terr_kind, terr, px, py, pz)
                 if phi < contact_dist:
                     n_contact += 1
-                held = not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])
-                if phi < contact_dist and held:
+                if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
                     if euler:
                         dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
                     else:
