@@ -7,7 +7,7 @@ import pytest
 from bench_myriapoda.bodies import friction_kernels as FK
 from bench_myriapoda.bodies.massspring import kernels as K
 from bench_myriapoda.bodies.massspring.body import BodyMassSpring
-from bench_myriapoda.bodies.massspring.lattice import AXIAL, CROSS, build_lattice
+from bench_myriapoda.bodies.massspring.lattice import AXIAL, CROSS, SIDE_FACES, build_lattice
 from bench_myriapoda.controllers.muscle_waves import (CORNER_Y, CORNER_Z, segment_activation,
                                                       segment_activation_numpy)
 from bench_myriapoda.core.config import resolve_case
@@ -152,13 +152,19 @@ def reference_step(x, v, inv_mass, lat, k, c, rest, g, dt, fric_model, fric, r_n
     np.add.at(f, lat.springs[:, 1], mag[:, None] * u)
     faces = x.reshape(-1, 4, 3).mean(axis=1)
     nf = faces.shape[0]
+    # Miller's stick rule holds the corners of segments in contact: a side face's centre within
+    # the contact distance (corner pairs of lattice.SIDE_FACES on faces i and i + 1)
+    quads = x.reshape(-1, 4, 3)
+    seg_held = [any(quads[i:i + 2][:, [a, b], 1].mean() < fric[FK.CONTACT_DISTANCE] for a, b in SIDE_FACES)
+                for i in range(nf - 1)]
     vn = v + dt * (f * inv_mass[:, None] - np.array([0.0, g, 0.0]))
     xn = x.copy()
     for n in range(x.shape[0]):
         j = n // 4
         sp = faces[max(j - 1, 0)] - faces[min(j + 1, nf - 1)]
         sp /= np.linalg.norm(sp)
-        if x[n, 1] < fric[FK.CONTACT_DISTANCE]:
+        held = fric_model != FK.STICK or (j > 0 and seg_held[j - 1]) or (j < nf - 1 and seg_held[j])
+        if x[n, 1] < fric[FK.CONTACT_DISTANCE] and held:
             # the normal impulse the collision below delivers: only when the step's path reaches the ground
             travel_y = dt * (0.5 * (v[n, 1] + vn[n, 1]) if euler else vn[n, 1])
             reaches = fric_model == FK.STICK or x[n, 1] + travel_y < 0
@@ -250,3 +256,21 @@ def test_a_mass_above_the_ground_gets_no_friction_until_its_step_reaches_the_gro
     reaching = contact_friction(kind, terr, FK.COULOMB, p, 0.0, 0.0, 0.0001, 0.0, *v, 1.0, 0.0, 0.0,
                                 0.0001, *(dt * v))
     np.testing.assert_allclose(reaching, [0.3 - 0.5 * 0.2, -0.2, 0.0])
+
+
+def test_stick_holds_segments_resting_a_face_on_the_ground_not_a_cube_on_one_edge():
+    """Miller's caterpillar rule (Sec. 4) holds the segments in contact.  A head cube standing on its
+    front ventral edge (its rear face lifted 2 cm) is not in contact: that edge keeps its sliding
+    velocity (held, it was the pivot the lattice caterpillar somersaulted over on the 45 degree
+    descent; issue 11), while the corners of the segments resting flat behind it are held."""
+    case = resolve_case("caterpillar", "massspring", "drop", overrides=[
+        "scenario.passive=true", "scenario.start_height_m=0.001", "body.stiffness=0", "body.damping=0"])
+    body = BodyMassSpring(case)
+    assert body.fric_model == FK.STICK
+    body.x[4:8, 1] += 0.02                      # face 1 (rear face of the head cube) lifted
+    body.v[:] = [1.0, -0.01, 0.0]               # sliding along +x, pressing toward the ground
+    done, status = body.advance(0.0, 1)
+    assert (done, status) == (1, K.OK)
+    np.testing.assert_allclose(body.v[0:2, 0], 1.0, atol=TOL_EXACT)   # the edge slides on
+    assert np.all(body.v[8:, 0][np.tile([True, True, False, False], body.v[8:].shape[0] // 4)] == 0.0)
+    np.testing.assert_allclose(body.v[2:4, 0], 1.0, atol=TOL_EXACT)   # dorsal corners: free flight

@@ -21,8 +21,6 @@ KNOWN_FAILURES = {
                                            "the hybrid's links, glued to rigid faces with 2 cells along 0.5 m, are "
                                            "too stiff at resolution 3 (at resolution 5: fem 23.2, hybrid 19.9 cm, "
                                            "1.17x); the old 6.9x read two phases of an undamped oscillation",
-    ("miller.image4-caterpillar-down", "massspring"): "reference.miller_images: lets go of the 45 degree slope "
-                                                      "going down and turns over",
 }
 
 

@@ -9,7 +9,9 @@
 3. spring forces f = k (L - l) - D dl/dt along each spring (Miller Sec. 3), plus gravity
    (``family_spring_forces``);
 4. velocity update, then ground friction for masses within the contact
-   distance (``friction_kernels.ground_friction``);
+   distance (``friction_kernels.ground_friction``); under Miller's caterpillar
+   rule (``stick``) only masses of segments in contact, a face of the cube on
+   the surface (see ``advance``);
 5. position update: semi-implicit (symplectic) Euler x += dt v_new, or
    Miller's Euler x += dt v + a dt^2 / 2 (here written dt (v_old + v_new) / 2
    so that friction's velocity change also applies to the position);
@@ -34,15 +36,17 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from numba import njit
 
 from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import collide_path, contact_friction
-from ..friction_kernels import CONTACT_DISTANCE
+from ..friction_kernels import CONTACT_DISTANCE, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
 from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, PAR_D, PAR_K, PAR_L0,
-                      PAR_LC)
+                      PAR_LC, SIDE_FACES)
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
@@ -315,11 +319,32 @@ def advance(x, v, inv_mass, fam, params, act_buf,
             act[i, j] = last[i, j]
     _corner_major(x, xc)
     _corner_major(v, vc)
+    stick = fric_model == STICK
+    n_seg = n_faces - 1
+    seg_held = np.zeros(max(n_seg, 1), dtype=np.bool_)
     for step in range(n_steps):
         family_rest_lengths(act_buf[min(step, n_rows - 1)], volume, fam, params, stretch, face_scale, rest)
         fc[:, :, :] = 0.0
         family_spring_forces(xc, vc, fam, params, rest, dfs, fc)
         spine_vectors_c(xc, spine)
+        if stick:
+            # Miller's caterpillar rule (Sec. 4, Image 4) holds the *segments* in contact with the
+            # surface: segment i is in contact when the centre of one of its four side faces is
+            # within the contact distance, i.e. a face of the cube rests on the surface.  Only the
+            # corners of such segments are held (``contact_friction``).  A cube that touches along
+            # one edge only is not held: held corner by corner, the head cube on the 45 degree
+            # descent stood on its front ventral edge -- a cube on a 45 degree slope held at its
+            # downhill edge has its centre of mass right above that edge -- and the arch behind
+            # rolled it over the held edge; the body somersaulted over its head and let go at
+            # 11.7 s (issue 11).  Corners of segments not in contact feel only the collision.
+            for i in range(n_seg):
+                seg_held[i] = False
+                for ca, cb in SIDE_FACES:
+                    mx = 0.25 * (xc[0, ca, i] + xc[0, cb, i] + xc[0, ca, i + 1] + xc[0, cb, i + 1])
+                    my = 0.25 * (xc[1, ca, i] + xc[1, cb, i] + xc[1, ca, i + 1] + xc[1, cb, i + 1])
+                    mz = 0.25 * (xc[2, ca, i] + xc[2, cb, i] + xc[2, ca, i + 1] + xc[2, cb, i + 1])
+                    if signed_distance(terr_kind, terr, mx, my, mz) < contact_dist:
+                        seg_held[i] = True
         n_contact = 0
         status = OK
         for f in range(n_faces):
@@ -338,6 +363,7 @@ def advance(x, v, inv_mass, fam, params, act_buf,
                 phi = signed_distance(terr_kind, terr, px, py, pz)
                 if phi < contact_dist:
                     n_contact += 1
+                if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
                     if euler:
                         dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
                     else:
