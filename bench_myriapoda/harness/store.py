@@ -273,19 +273,28 @@ def record_validation_run(path: Path | str, rows: list[dict[str, Any]], quick: b
     mach = json.dumps(machine_fingerprint(), sort_keys=True)
     commit, dirty = git_commit()
     stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    return _insert_numbered_run(
+        path, "validation",
+        "INSERT INTO validation (run_id, check_name, family, body, quantity, measured_json, reference_json,"
+        " source, tolerance, verdict, detail, unit, seconds, figures_json, quick, out_dir, git_commit,"
+        " git_dirty, machine_json, timestamp) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+        lambda run_id: [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(_finite(r["measured"])),
+                         json.dumps(_finite(r["reference"])), r["source"], r["tolerance"], r["verdict"], r["detail"],
+                         r["unit"], _finite(r["seconds"]), json.dumps(r["figures"], sort_keys=True), int(quick),
+                         out_dir, commit, None if dirty is None else int(dirty), mach, stamp) for r in rows])
+
+
+def _insert_numbered_run(path: Path | str, table: str, sql: str, make_rows) -> int:
+    """Insert one run's rows into ``table`` under the next run id (1, 2, ... per store), in one transaction.
+
+    ``make_rows(run_id)`` gives the parameter tuples of ``sql``.  BEGIN IMMEDIATE takes the write lock before
+    the id is read, so two concurrent writers never share a run id; any failure rolls the whole run back."""
     con = connect(path)
     try:
         con.execute("BEGIN IMMEDIATE")
         try:
-            run_id = con.execute("SELECT COALESCE(MAX(run_id), 0) + 1 FROM validation").fetchone()[0]
-            con.executemany(
-                "INSERT INTO validation (run_id, check_name, family, body, quantity, measured_json, reference_json,"
-                " source, tolerance, verdict, detail, unit, seconds, figures_json, quick, out_dir, git_commit,"
-                " git_dirty, machine_json, timestamp) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
-                [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(_finite(r["measured"])),
-                  json.dumps(_finite(r["reference"])), r["source"], r["tolerance"], r["verdict"], r["detail"], r["unit"],
-                  _finite(r["seconds"]), json.dumps(r["figures"], sort_keys=True), int(quick), out_dir, commit,
-                  None if dirty is None else int(dirty), mach, stamp) for r in rows])
+            run_id = con.execute(f"SELECT COALESCE(MAX(run_id), 0) + 1 FROM {table}").fetchone()[0]
+            con.executemany(sql, make_rows(run_id))
             con.commit()
         except BaseException:
             con.rollback()
@@ -308,20 +317,9 @@ def record_regress_run(path: Path | str, rows: list[dict[str, Any]]) -> int:
     mach = json.dumps(machine_fingerprint(), sort_keys=True)
     commit, dirty = git_commit()
     stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
-    con = connect(path)
-    try:
-        con.execute("BEGIN IMMEDIATE")  # the new run id and its rows: one writer, one transaction
-        try:
-            run_id = con.execute("SELECT COALESCE(MAX(run_id), 0) + 1 FROM regress_history").fetchone()[0]
-            con.executemany(
-                "INSERT INTO regress_history (run_id, git_commit, git_dirty, machine_json, timestamp, "
-                + ", ".join(REGRESS_FIELDS) + ") VALUES (?,?,?,?,?," + ",".join("?" * len(REGRESS_FIELDS)) + ")",
-                [(run_id, commit, None if dirty is None else int(dirty), mach, stamp,
-                  *(_finite(r[k]) for k in REGRESS_FIELDS)) for r in rows])
-            con.commit()
-        except BaseException:
-            con.rollback()
-            raise
-        return int(run_id)
-    finally:
-        con.close()
+    return _insert_numbered_run(
+        path, "regress_history",
+        "INSERT INTO regress_history (run_id, git_commit, git_dirty, machine_json, timestamp, "
+        + ", ".join(REGRESS_FIELDS) + ") VALUES (?,?,?,?,?," + ",".join("?" * len(REGRESS_FIELDS)) + ")",
+        lambda run_id: [(run_id, commit, None if dirty is None else int(dirty), mach, stamp,
+                         *(_finite(r[k]) for k in REGRESS_FIELDS)) for r in rows])

@@ -37,13 +37,14 @@ from pathlib import Path
 
 import pandas as pd
 
+from ..core.cells import fmt
 from ..harness.recorder import series_from_recording
 from . import body_wave, sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
 from .figure_files import report_style
-from .tables import comparison_tables, fmt, footnote_marks, html_table, md_table
+from .tables import comparison_tables, footnote_marks, html_table, md_table
 from .validation import figure_verdict, load_validation, section as validation_section
 
 SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),

@@ -20,6 +20,8 @@ from typing import Sequence
 
 import pandas as pd
 
+from ..core.cells import fmt
+
 # (column of the matrix DataFrame, header, group)
 COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("metric.speed_m_per_s", "speed [m/s]", "speed"),
@@ -87,17 +89,6 @@ def swept_values(row, grid_columns: Sequence[str]) -> str:
         key = col.removeprefix("grid.")
         parts.append(f"{key}={v:.4g}" if isinstance(v, float) else f"{key}={v}")
     return ", ".join(parts)
-
-
-def fmt(v) -> str:
-    """A table cell: 4 significant digits, '-' for missing or undefined."""
-    if v is None:
-        return "-"
-    if isinstance(v, float):
-        if not math.isfinite(v):
-            return "-"
-        return f"{v:.4g}"
-    return str(v)
 
 
 @dataclass

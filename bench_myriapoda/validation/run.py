@@ -7,12 +7,12 @@ that raises as a FAIL row with the exception; ``format_table`` is what ``validat
 from __future__ import annotations
 
 import json
-import math
 import time
 import traceback
 from pathlib import Path
 from typing import Callable, Sequence
 
+from ..core.cells import fmt
 from ..core.errors import InputError
 from .core import ALL_BODIES, CROSS, FAIL, NA, Check, Context, Row
 from .registry import BY_NAME, CHECKS
@@ -75,21 +75,11 @@ def run_checks(pairs: list[tuple[Check, str]], quick: bool, bodies: tuple[str, .
     return rows
 
 
-def _fmt(v) -> str:
-    if v is None:
-        return "-"
-    if isinstance(v, float):
-        if not math.isfinite(v):
-            return "-"
-        return f"{v:.4g}"
-    return str(v)
-
-
 def format_table(rows: list[Row]) -> list[str]:
     """The human-readable table ``validate`` prints: one line per row, then the reason lines."""
     head = ("check", "body", "measured", "reference", "tolerance", "verdict", "s")
-    cells = [(r.check, r.body, _fmt(r.measured) + (f" {r.unit}" if r.unit and isinstance(r.measured, (int, float)) else ""),
-              _fmt(r.reference), r.tolerance, r.verdict, f"{r.seconds:.1f}") for r in rows]
+    cells = [(r.check, r.body, fmt(r.measured) + (f" {r.unit}" if r.unit and isinstance(r.measured, (int, float)) else ""),
+              fmt(r.reference), r.tolerance, r.verdict, f"{r.seconds:.1f}") for r in rows]
     w = [max(len(h), *(len(c[i]) for c in cells)) if cells else len(h) for i, h in enumerate(head)]
     w = [min(x, 48) for x in w]
     out = ["  ".join(h.ljust(w[i]) for i, h in enumerate(head))]
