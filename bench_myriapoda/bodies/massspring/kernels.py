@@ -248,15 +248,6 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
     [:, c, t]); fam, params: ``lattice.SpringFamilies``; rest (n_fam, n_faces) [m]; dfs
     (3, n_faces) scratch.  Per spring the arithmetic of ``spring_forces`` (a spring shorter
     than 1e-12 m pulls nothing), written as selects so the loop vectorises.
-
-    Two loop shapes with the same result bit for bit: a family of at least ``_SPLIT_MIN``
-    springs runs three passes (forces into ``dfs``, then subtract at the a ends, then add at the
-    b ends), which vectorise; a shorter family (a short body) runs one pass, because there the
-    fixed cost of the three passes per family, not the arithmetic, is the step's cost and made
-    time per step fall short of linear in the segment count (issue 13).  Every node gets the same
-    additions in the same order either way: a family joining two different corners touches each
-    node once; one joining corner a to itself (shift s >= 1) gives node (a, u) -g[u] first and
-    +g[u - s] second in both shapes.
     """
     n_faces = xc.shape[2]
     for q in range(fam.shape[0]):
@@ -267,9 +258,6 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
         k = params[PAR_K, q]
         d = params[PAR_D, q]
         r = rest[q]
-        if count < _SPLIT_MIN:
-            _short_family(xc, vc, a, b, s, count, k, d, r, dfs, fc)
-            continue
         xa0, xa1, xa2 = xc[0, a], xc[1, a], xc[2, a]
         xb0, xb1, xb2 = xc[0, b, s:], xc[1, b, s:], xc[2, b, s:]
         va0, va1, va2 = vc[0, a], vc[1, a], vc[2, a]
@@ -297,41 +285,6 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
             g = dfs[c]
             for t in range(count):
                 fb[t] += g[t]
-
-
-_SPLIT_MIN = 24  # families shorter than this run in one pass (``family_spring_forces``)
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def _short_family(xc, vc, a, b, s, count, k, d, r, dfs, fc):
-    """``family_spring_forces``' one-pass loop for family (a, b, shift s) of ``count`` springs."""
-    for u in range(count + s if a == b else count):
-        if u < count:
-            dx = xc[0, b, u + s] - xc[0, a, u]
-            dy = xc[1, b, u + s] - xc[1, a, u]
-            dz = xc[2, b, u + s] - xc[2, a, u]
-            length = math.sqrt(dx * dx + dy * dy + dz * dz)
-            ux, uy, uz = dx / length, dy / length, dz / length
-            ldot = ((vc[0, b, u + s] - vc[0, a, u]) * ux + (vc[1, b, u + s] - vc[1, a, u]) * uy
-                    + (vc[2, b, u + s] - vc[2, a, u]) * uz)
-            f = k[u] * (r[u] - length) - d[u] * ldot
-            live = length >= 1e-12
-            g0 = f * ux if live else 0.0
-            g1 = f * uy if live else 0.0
-            g2 = f * uz if live else 0.0
-            fc[0, a, u] -= g0
-            fc[1, a, u] -= g1
-            fc[2, a, u] -= g2
-            if a == b:  # node (a, u + s) takes this spring's +g after its own -g, at step u + s
-                dfs[0, u], dfs[1, u], dfs[2, u] = g0, g1, g2
-            else:
-                fc[0, b, u + s] += g0
-                fc[1, b, u + s] += g1
-                fc[2, b, u + s] += g2
-        if a == b and u >= s:
-            fc[0, a, u] += dfs[0, u - s]
-            fc[1, a, u] += dfs[1, u - s]
-            fc[2, a, u] += dfs[2, u - s]
 
 
 @njit(cache=True, error_model="numpy")
