@@ -214,7 +214,6 @@ def test_the_chunk_replay_samples_equal_per_sample_calls(terrain_none):
         many.sample_many(c[:5], R[:5], centres[:5], tips[:5])  # two chunks: the path continues across them
         many.sample_many(c[5:], R[5:], centres[5:], tips[5:])
         assert np.array_equal(np.array(one._com), np.array(many._com))
-        assert one.behaviour.metrics() == many.behaviour.metrics() or terrain_none
         a, b = one.behaviour.metrics(), many.behaviour.metrics()
         assert a["path_length_m"] == b["path_length_m"] and a["path_length_m"] > 0
         assert np.array_equal(a["terrain_clearance_min_m"], b["terrain_clearance_min_m"], equal_nan=True)
