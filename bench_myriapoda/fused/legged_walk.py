@@ -351,18 +351,24 @@ class FusedLeggedWalk:
 
     def _replay(self, n_rec: int) -> None:
         """The chunk's timeline samples into the controller's lists and the monitor (as ``step`` and
-        ``LeggedMonitor.after_control`` append them)."""
+        ``LeggedMonitor.after_control`` append them).  Each buffer's rows are copied once per chunk and
+        the lists get row views of that copy (the Python path appends a copy per row: the same values),
+        and the monitor takes the chunk's samples in one ``sample_many`` call: a chunk's replay no
+        longer costs Python work per sample (a fixed cost per step that made small bodies slow)."""
+        if n_rec == 0:
+            return
         ctrl, mon = self.controller, self.monitor
         n_seg = ctrl.n_seg
-        for r in range(n_rec):
-            ctrl.timeline_t.append(float(self.rec_t[r]))
-            ctrl.timeline_states.append(self.rec_states[r].copy())
-            ctrl.timeline_tips.append(self.rec_tips[r].copy())
-            ctrl.timeline_brain.append(int(self.rec_brain[r]))
-            ctrl.timeline_contact.append(self.rec_contact[r].copy())
-            ctrl.timeline_centers.append(self.rec_centres[r].copy())
-            if mon is not None:
-                centres = np.empty((2 * n_seg - 1, 3))
-                centres[0::2] = self.rec_c[r]
-                centres[1::2] = self.rec_links[r]
-                mon.sample(self.rec_c[r], self.rec_R[r], centres, self.rec_tips[r])
+        tips = self.rec_tips[:n_rec].copy()
+        rec_c = self.rec_c[:n_rec]
+        ctrl.timeline_t.extend(self.rec_t[:n_rec].tolist())
+        ctrl.timeline_states.extend(self.rec_states[:n_rec].copy())
+        ctrl.timeline_tips.extend(tips)
+        ctrl.timeline_brain.extend(self.rec_brain[:n_rec].tolist())
+        ctrl.timeline_contact.extend(self.rec_contact[:n_rec].copy())
+        ctrl.timeline_centers.extend(self.rec_centres[:n_rec].copy())
+        if mon is not None:
+            centres = np.empty((n_rec, 2 * n_seg - 1, 3))
+            centres[:, 0::2] = rec_c
+            centres[:, 1::2] = self.rec_links[:n_rec]
+            mon.sample_many(rec_c, self.rec_R[:n_rec], centres, tips)
