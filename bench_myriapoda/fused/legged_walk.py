@@ -152,7 +152,8 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
      f_work, b_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
      R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc) = BA
     dt = phys[K.DT]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
                                      residual, dt, S, REC, n_rec)
@@ -160,7 +161,7 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
                                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                  fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
                                  c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
-                                 gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                 gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                  f_work, b_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                  R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
@@ -178,13 +179,14 @@ def massspring_chunk(t0, n_steps, C, BA, S, REC):
      f_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
      R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc) = BA
     dt = phys[K.DT]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
                                      residual, dt, S, REC, n_rec)
         done, status = MS.advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, springs, stiffness,
                                         damping, rest, c, q, vr, w, rmass, inertia_body, half_extents, kinematic,
-                                        impulse_cache, gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                        impulse_cache, gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                         R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
@@ -214,7 +216,8 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
     rec_c, rec_R, rec_links = REC[6], REC[7], REC[8]
     dt = phys[FM.DT]
     n_seg = cseg.shape[0]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         FM.block_poses(x, block_nodes_s, rest_offsets, cseg, A_scr, Rseg)
         recorded = _control(t0 + k * dt, C, cseg, Rseg, REC, n_rec)
@@ -243,7 +246,7 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
         done, status = FM.advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
                                         perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                         block_nodes, node_spine, att_nodes, att_block, att_target, support,
-                                        gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                        gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, b_work, cent, spine, acc)
         if status != K.OK:
             return k + 1, status, n_rec
