@@ -42,7 +42,12 @@ Images and checks (Miller's words in quotes):
      ``DIAGONAL_DEG``.  And its cross-sections do not roll over: ``roll_max_deg`` < 90.
 * Image 4, the caterpillar (``arching``):
   4b "the caterpillar arching its back" (``flat``): the highest segment centre rises more than
-     one body height above its resting height.
+     one body height above its resting height.  The preset's DORSAL wave alone, followed
+     perfectly, rises 2 kappa / k^2 = 3.65 cm (kappa = 2 x 0.2 / 5 cm, wavelength 0.3 m), under
+     one body height: the lattice and the fem pass through Miller's stick rule on their
+     deformable bellies (a held segment that the AXIAL wave lengthens can only lengthen its back,
+     so it bends upward); the hybrid's rigid box bellies cannot, and it arches 2.1 cm (README,
+     validate: the measurements).
   "the ability to scale steep gradients both up the slope and down" (``slope`` at +45 and -45
   degrees, facing +x): it advances along the slope in the direction it faces by more than
   ``ADVANCE_MIN_BL`` per cycle, keeps some segment on the surface at every sample after the
