@@ -133,3 +133,17 @@ def test_image_2b_window_ends_when_the_body_has_formed_its_coils():
     series, case, metrics = _synthetic_snake(head_speed_after_s=0.5)
     c = MI.snake_head_fixed_while_coils_form(series, case, metrics)
     assert not c.passed and c.measured > 0.25, c.line()
+
+
+def test_image_4b_lattice_arches_above_one_body_height_only_through_the_stick_rule():
+    # Why the hybrid arches 2.1 cm (README, validate): the preset's DORSAL wave alone, followed
+    # perfectly, rises 2 kappa / k^2 = 3.65 cm.  The lattice passes 4b (8 cm) because Miller's stick
+    # rule holds its belly nodes while the AXIAL wave lengthens the held segments, which then bend
+    # upward; without the stick rule, or without the AXIAL wave, it stays under one body height.
+    for over in (["friction.model=coulomb", "friction.mu_forward=1", "friction.mu_backward=1",
+                  "friction.mu_transverse=1"], ["gait.axial_amplitude=0"]):
+        r = MI.RUNS["caterpillar-arch"]
+        res = run_case(resolve_case(r.creature, BODY, r.scenario, r.gait, duration=r.duration_s, overrides=over))
+        assert res.status == "ok", res.message
+        c = MI.caterpillar_arches(res.series, res.case, res.metrics)
+        assert 0.01 < c.measured < 0.8 * res.case.creature.height_m, (over, c.line())
