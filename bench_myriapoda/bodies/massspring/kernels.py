@@ -31,6 +31,12 @@ arithmetic is that of ``spring_forces``; only the order in which a node's spring
 summed differs (by family, not by spring index), so results agree to round-off (~1e-16
 relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
 references (and serve the energy and the legged chain).
+
+The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
+on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` runs it instead: the
+touching nodes' friction is gathered and computed in one vectorised loop
+(``coulomb_friction_batch``), bitwise the same results (the friction was 45 % of the snake's step
+called node by node).
 """
 from __future__ import annotations
 
@@ -353,6 +359,72 @@ def coulomb_friction_batch(p, nx, ny, nz, vx, vy, vz, sx, sy, sz, jn, count):
         vz[k] = az if loose else rz
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric, terr_kind, terr, phys, acc):
+    """One step of every free node (any friction model and terrain): ``advance``'s node block.
+
+    Velocity update from the forces fc, contact friction (under ``stick`` only for the corners of
+    segments in ``seg_held``), position update, Miller's collision and the blow-up checks, node by
+    node.  xc, vc, fc (3, 4, n_faces).  Returns (nodes within the contact distance, status).
+    """
+    n_faces = xc.shape[2]
+    n_seg = n_faces - 1
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    n_contact = 0
+    status = OK
+    for f in range(n_faces):
+        for c in range(4):
+            n = 4 * f + c
+            im = inv_mass[n]
+            if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
+                continue
+            ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
+            vx = ox + dt * fc[0, c, f] * im
+            vy = oy + dt * (fc[1, c, f] * im - g)
+            vz = oz + dt * fc[2, c, f] * im
+            # The other backends call contact_kernels.advance_point for this block; here it stays
+            # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
+            px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+            if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
+                if euler:
+                    dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
+                else:
+                    dx, dy, dz = dt * vx, dt * vy, dt * vz
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[f, 0], spine[f, 1], spine[f, 2], phi, dx, dy, dz)
+            if euler:
+                qx = px + 0.5 * dt * (ox + vx)
+                qy = py + 0.5 * dt * (oy + vy)
+                qz = pz + 0.5 * dt * (oz + vz)
+            else:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > phys[MAX_PEN]:
+                    status = DEEP_PENETRATION
+            xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
+            vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
+            # Blow-up checks (status codes, never an exception); the step still finishes.
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = NONFINITE
+            elif vx * vx + vy * vy + vz * vz > max_speed2:
+                status = RUNAWAY_SPEED
+    return n_contact, status
+
+
 @njit(cache=True, error_model="numpy")
 def _nodes_coulomb_flat(xc, vc, fc, inv_mass, spine, fric, terr_kind, terr, phys, acc, work, touch):
     """One step of every free node under COULOMB friction on a plane or slope without obstacles.
@@ -456,14 +528,8 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     """
     n_nodes = x.shape[0]
     n_faces = n_nodes // 4
-    g = phys[GRAVITY]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    euler = phys[INTEGRATOR] == EULER
     volume = phys[VOLUME] != 0.0
     contact_dist = fric[CONTACT_DISTANCE]
-    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
     last = act_buf[min(n_steps, n_rows - 1)]
     for i in range(act.shape[0]):  # element-wise: a slice copy compiles numba's shape-error formatting
@@ -475,7 +541,7 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     n_seg = n_faces - 1
     seg_held = np.zeros(max(n_seg, 1), dtype=np.bool_)
     # Anisotropic Coulomb friction on a plane or slope without obstacles (the snake's scene): the
-    # node block runs batched (``_nodes_coulomb_flat``), bitwise the same as the loop below.
+    # node block runs batched (``_nodes_coulomb_flat``), bitwise the same as ``_nodes_general``.
     batched = fric_model == COULOMB and (terr_kind == PLANE or terr_kind == SLOPE) and terr[H_NOBST] <= 0.0
     work = np.empty((N_WORK, n_nodes if batched else 0))
     touch = np.empty(n_nodes if batched else 0, dtype=np.int64)
@@ -502,55 +568,12 @@ def advance(x, v, inv_mass, fam, params, act_buf,
                     mz = 0.25 * (xc[2, ca, i] + xc[2, cb, i] + xc[2, ca, i + 1] + xc[2, cb, i + 1])
                     if signed_distance(terr_kind, terr, mx, my, mz) < contact_dist:
                         seg_held[i] = True
-        n_contact = 0
-        status = OK
         if batched:
             n_contact, status = _nodes_coulomb_flat(xc, vc, fc, inv_mass, spine, fric, terr_kind, terr, phys, acc,
                                                     work, touch)
-        for f in range(n_faces if not batched else 0):
-            for c in range(4):
-                n = 4 * f + c
-                im = inv_mass[n]
-                if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
-                    continue
-                ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
-                vx = ox + dt * fc[0, c, f] * im
-                vy = oy + dt * (fc[1, c, f] * im - g)
-                vz = oz + dt * fc[2, c, f] * im
-                # The other backends call contact_kernels.advance_point for this block; here it stays
-                # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
-                px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
-                phi = signed_distance(terr_kind, terr, px, py, pz)
-                if phi < contact_dist:
-                    n_contact += 1
-                if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
-                    if euler:
-                        dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
-                    else:
-                        dx, dy, dz = dt * vx, dt * vy, dt * vz
-                    vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                                  spine[f, 0], spine[f, 1], spine[f, 2], phi, dx, dy, dz)
-                if euler:
-                    qx = px + 0.5 * dt * (ox + vx)
-                    qy = py + 0.5 * dt * (oy + vy)
-                    qz = pz + 0.5 * dt * (oz + vz)
-                else:
-                    qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi_q < 0.0:
-                    qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                               qx, qy, qz, phi_q, vx, vy, vz)
-                    if pen > acc[ACC_MAX_PEN]:
-                        acc[ACC_MAX_PEN] = pen
-                    if pen > phys[MAX_PEN]:
-                        status = DEEP_PENETRATION
-                xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
-                vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
-                # Blow-up checks (status codes, never an exception); the step still finishes.
-                if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                    status = NONFINITE
-                elif vx * vx + vy * vy + vz * vz > max_speed2:
-                    status = RUNAWAY_SPEED
+        else:
+            n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
+                                               terr_kind, terr, phys, acc)
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:
