@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 from bench_myriapoda.bodies import friction_kernels as FK
-from bench_myriapoda.bodies import step_status as S
 from bench_myriapoda.bodies.massspring import kernels as K
 from bench_myriapoda.bodies.massspring.body import BodyMassSpring
 from bench_myriapoda.bodies.massspring.lattice import AXIAL, CROSS, SIDE_FACES, build_lattice
@@ -344,10 +343,13 @@ def test_coulomb_friction_batch_bitwise_equals_ground_friction(normal):
     assert np.array_equal(np.stack(got, axis=1).view(np.int64), ref.view(np.int64))  # the bits, signed zeros too
 
 
-@pytest.mark.parametrize("scenario,integrator", [("flat", "symplectic"), ("flat", "euler"), ("slope", "symplectic")])
-def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integrator):
+@pytest.mark.parametrize("scenario,integrator,blowup", [("flat", "symplectic", ""), ("flat", "euler", ""),
+                                                        ("slope", "symplectic", ""), ("flat", "symplectic", "speed"),
+                                                        ("slope", "euler", "nan")])
+def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integrator, blowup):
     """``_nodes_coulomb_flat`` (the snake's node pass) and ``_nodes_general`` give the same bits: friction,
-    collisions (nodes started inside and below the plane), held nodes, contact count and statistics."""
+    collisions (nodes started inside and below the plane), held nodes, contact count, statistics and the
+    step's status (a runaway speed, a non-finite force)."""
     case = resolve_case("snake", "massspring", scenario, overrides=["creature.segments=12", f"body.integrator={integrator}",
                                                                     "collision.r_n=0.2", "collision.r_t=0.9"])
     body = BodyMassSpring(case)
@@ -371,16 +373,25 @@ def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integ
     spine = r.normal(size=(n_nodes // 4, 3))
     spine /= np.linalg.norm(spine, axis=1)[:, None]
     spine[2] = [0.0, 1.0, 0.0]  # a face standing up
+    phys = body.phys.copy()
+    if blowup == "speed":
+        phys[K.MAX_SPEED] = 0.08  # some nodes, not all, are faster
+    elif blowup == "nan":
+        fc[1, 2, 5] = np.nan
     acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
     xa, va, xb, vb = xc.copy(), vc.copy(), xc.copy(), vc.copy()
     seg_held = np.zeros(n_nodes // 4 - 1, dtype=np.bool_)
     work, touch = np.zeros((K.N_WORK, n_nodes)), np.zeros(n_nodes, dtype=np.int64)
-    got = K._nodes_coulomb_flat(xa, va, fc, inv_mass, spine, body.fric, body.terr_kind, body.terr, body.phys, acc_a,
-                                work, touch)
+    imc = np.ascontiguousarray(inv_mass.reshape(-1, 4).T)
+    code = np.zeros((4, n_nodes // 4), dtype=np.int64)
+    got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, phys, acc_a,
+                                work, touch, code)
     ref = K._nodes_general(xb, vb, fc, inv_mass, spine, False, seg_held, body.fric_model, body.fric, body.terr_kind,
-                           body.terr, body.phys, acc_b)
+                           body.terr, phys, acc_b)
     assert got == ref and 0 < got[0] < n_nodes
+    assert ref[1] == {"": K.OK, "speed": K.RUNAWAY_SPEED, "nan": K.NONFINITE}[blowup]
     assert np.sum((np.einsum("d,dcf->cf", normal, va) > 0.0) & (np.einsum("d,dcf->cf", normal, vc) < 0.0)) > 2  # collided
     assert np.array_equal(xa.view(np.int64), xb.view(np.int64)) and np.array_equal(va.view(np.int64), vb.view(np.int64))
+    assert np.array_equal(acc_a.view(np.int64), acc_b.view(np.int64))
     assert np.array_equal(acc_a, acc_b)
     assert np.array_equal(xa[:, 3, 0], xc[:, 3, 0]) and np.array_equal(va[:, 1, 4], vc[:, 1, 4])
