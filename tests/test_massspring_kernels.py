@@ -311,3 +311,87 @@ def test_family_spring_forces_bitwise_equal_numpys_three_pass_order(segments):
             ref[:, a, :n] -= g
             ref[:, b, s:] += g
     assert np.array_equal(fc, ref)
+
+
+def _coulomb_cases(r, n_cases, n):
+    """(v, s, jn) rows for the batched Coulomb friction, with the edge cases of ``ground_friction``:
+    no normal impulse, no tangential speed, a spine along the normal, static and kinetic friction."""
+    v = r.normal(size=(n_cases, 3))
+    s = r.normal(size=(n_cases, 3))
+    s /= np.linalg.norm(s, axis=1)[:, None]
+    jn = np.abs(r.normal(size=n_cases)) * r.choice([0.0, 0.05, 0.3, 3.0], size=n_cases)
+    v[0:8] = v[0:8] @ np.outer(n, n)  # moving along the normal only: zero tangential speed
+    s[8:16] = n * r.choice([-1.0, 1.0], size=(8, 1))  # spine along the normal (fl < 1e-12)
+    jn[16:20] = 0.0
+    jn[20:24] = -0.1
+    v[24] = 0.0
+    v[25] = [0.0, -0.0, 0.0]
+    return v, s, jn
+
+
+@pytest.mark.parametrize("normal", [(0.0, 1.0, 0.0), (-math.sin(0.4), math.cos(0.4), 0.0)])
+def test_coulomb_friction_batch_bitwise_equals_ground_friction(normal):
+    """The vectorised friction of the batched node pass gives the bits of ``ground_friction``."""
+    r = np.random.default_rng(13)
+    _, p = FK.friction_params(resolve_case("snake", "massspring", "flat").friction)
+    n = np.array(normal)
+    m = 400
+    v, s, jn = _coulomb_cases(r, m, n)
+    ref = np.array([FK.ground_friction(FK.COULOMB, p, *v[k], *n, *s[k], jn[k]) for k in range(m)])
+    got = [np.ascontiguousarray(v[:, d]) for d in range(3)]
+    K.coulomb_friction_batch(p, *n, *got, *(np.ascontiguousarray(s[:, d]) for d in range(3)), jn, m)
+    assert np.array_equal(np.stack(got, axis=1).view(np.int64), ref.view(np.int64))  # the bits, signed zeros too
+
+
+@pytest.mark.parametrize("scenario,integrator,blowup", [("flat", "symplectic", ""), ("flat", "euler", ""),
+                                                        ("slope", "symplectic", ""), ("flat", "symplectic", "speed"),
+                                                        ("slope", "euler", "nan")])
+def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integrator, blowup):
+    """``_nodes_coulomb_flat`` (the snake's node pass) and ``_nodes_general`` give the same bits: friction,
+    collisions (nodes started inside and below the plane), held nodes, contact count, statistics and the
+    step's status (a runaway speed, a non-finite force)."""
+    case = resolve_case("snake", "massspring", scenario, overrides=["creature.segments=12", f"body.integrator={integrator}",
+                                                                    "collision.r_n=0.2", "collision.r_t=0.9"])
+    body = BodyMassSpring(case)
+    assert body.fric_model == FK.COULOMB and body.terr_kind in (TK.PLANE, TK.SLOPE)
+    r = np.random.default_rng(11)
+    n_nodes = body.x.shape[0]
+    phi = np.array([TK.signed_distance(body.terr_kind, body.terr, *p) for p in body.x])
+    x = body.x - np.outer(phi, [0.0, 1.0, 0.0]) + np.outer(r.uniform(-2e-5, 0.002, n_nodes), [0.0, 1.0, 0.0])
+    x += r.normal(scale=1e-3, size=x.shape) * [1.0, 0.0, 1.0]
+    v = r.normal(scale=0.05, size=x.shape)
+    normal = np.array(TK.surface_normal(body.terr_kind, body.terr, 0.0, 0.0, 0.0))
+    hit = np.arange(0, n_nodes, 5)  # 1e-5 m above the surface, moving into it at 0.1 m/s: they collide
+    x[hit] += np.outer(1e-5 - np.array([TK.signed_distance(body.terr_kind, body.terr, *p) for p in x[hit]]), normal)
+    v[hit] -= 0.1 * normal
+    inv_mass = body.inv_mass.copy()
+    inv_mass[[3, 17]] = 0.0  # held nodes are left in place
+    xc, vc, fc = (np.zeros((3, 4, n_nodes // 4)) for _ in range(3))
+    K._corner_major(x, xc)
+    K._corner_major(v, vc)
+    fc[:] = r.normal(scale=2.0, size=fc.shape) * body.mass[0]
+    spine = r.normal(size=(n_nodes // 4, 3))
+    spine /= np.linalg.norm(spine, axis=1)[:, None]
+    spine[2] = [0.0, 1.0, 0.0]  # a face standing up
+    phys = body.phys.copy()
+    if blowup == "speed":
+        phys[K.MAX_SPEED] = 0.08  # some nodes, not all, are faster
+    elif blowup == "nan":
+        fc[1, 2, 5] = np.nan
+    acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
+    xa, va, xb, vb = xc.copy(), vc.copy(), xc.copy(), vc.copy()
+    seg_held = np.zeros(n_nodes // 4 - 1, dtype=np.bool_)
+    work, touch = np.zeros((K.N_WORK, n_nodes)), np.zeros(n_nodes, dtype=np.int64)
+    imc = np.ascontiguousarray(inv_mass.reshape(-1, 4).T)
+    code = np.zeros((4, n_nodes // 4), dtype=np.int64)
+    got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, phys, acc_a,
+                                work, touch, code)
+    ref = K._nodes_general(xb, vb, fc, inv_mass, spine, False, seg_held, body.fric_model, body.fric, body.terr_kind,
+                           body.terr, phys, acc_b)
+    assert got == ref and 0 < got[0] < n_nodes
+    assert ref[1] == {"": K.OK, "speed": K.RUNAWAY_SPEED, "nan": K.NONFINITE}[blowup]
+    assert np.sum((np.einsum("d,dcf->cf", normal, va) > 0.0) & (np.einsum("d,dcf->cf", normal, vc) < 0.0)) > 2  # collided
+    assert np.array_equal(xa.view(np.int64), xb.view(np.int64)) and np.array_equal(va.view(np.int64), vb.view(np.int64))
+    assert np.array_equal(acc_a.view(np.int64), acc_b.view(np.int64))
+    assert np.array_equal(acc_a, acc_b)
+    assert np.array_equal(xa[:, 3, 0], xc[:, 3, 0]) and np.array_equal(va[:, 1, 4], vc[:, 1, 4])

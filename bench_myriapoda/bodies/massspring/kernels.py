@@ -31,6 +31,12 @@ arithmetic is that of ``spring_forces``; only the order in which a node's spring
 summed differs (by family, not by spring index), so results agree to round-off (~1e-16
 relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
 references (and serve the energy and the legged chain).
+
+The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
+on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` runs it instead: the
+touching nodes' friction is gathered and computed in one vectorised loop
+(``coulomb_friction_batch``), bitwise the same results (the friction was 45 % of the snake's step
+called node by node).
 """
 from __future__ import annotations
 
@@ -40,9 +46,9 @@ import numpy as np
 
 from numba import njit
 
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain_kernels import H_NOBST, PLANE, SLOPE, signed_distance, surface_normal
 from ..contact_kernels import collide_path, contact_friction
-from ..friction_kernels import CONTACT_DISTANCE, STICK
+from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
 from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, PAR_D, PAR_K, PAR_L0,
@@ -287,6 +293,285 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
                 fb[t] += g[t]
 
 
+# rows of the batched node pass's work array (``advance``: n_nodes columns)
+W_VX, W_VY, W_VZ, W_PHI, W_PEN, B_VX, B_VY, B_VZ, B_SX, B_SY, B_SZ, B_JN = range(12)
+N_WORK = 12
+
+
+@njit(cache=True, error_model="numpy")
+def coulomb_friction_batch(p, nx, ny, nz, vx, vy, vz, sx, sy, sz, jn, count):
+    """``friction_kernels.ground_friction``'s COULOMB model for ``count`` masses at once, on one normal.
+
+    p: the friction parameter vector; n: the unit surface normal, the same for every mass (a plane
+    or slope without obstacles); vx, vy, vz (>= count,) [m/s]: velocities after the step's forces,
+    overwritten with the velocities after friction; s (sx, sy, sz): unit spine vectors toward the
+    head; jn [m/s]: normal impulses per unit mass.  The arithmetic, operation by operation, of
+    ``ground_friction`` (Hu et al. 2009 anisotropic Coulomb friction; module docstring there), with
+    its early returns and branches written as selects computed after both sides, so that the loop
+    vectorises (IEEE sqrt and division give the same bits in SIMD lanes): bitwise the same
+    velocities (tests/test_massspring_kernels.py).  On the 50-segment snake half of the masses
+    touch the plane every step, and this model cost 45 % of the step called mass by mass.
+    """
+    mus_f, mus_b, mus_t = p[MUS_F], p[MUS_B], p[MUS_T]
+    mu_f, mu_b, mu_t = p[MU_F], p[MU_B], p[MU_T]
+    for k in range(count):
+        ax, ay, az = vx[k], vy[k], vz[k]
+        j = jn[k]
+        vn = ax * nx + ay * ny + az * nz
+        tx, ty, tz = ax - vn * nx, ay - vn * ny, az - vn * nz
+        # tangent frame: f = spine projected on the tangent plane, q = n x f
+        sn = sx[k] * nx + sy[k] * ny + sz[k] * nz
+        fx, fy, fz = sx[k] - sn * nx, sy[k] - sn * ny, sz[k] - sn * nz
+        fl = math.sqrt(fx * fx + fy * fy + fz * fz)
+        small = fl < 1e-12  # spine along the normal: isotropic transverse friction
+        fx = 0.0 if small else fx / fl
+        fy = 0.0 if small else fy / fl
+        fz = 0.0 if small else fz / fl
+        qx, qy, qz = ny * fz - nz * fy, nz * fx - nx * fz, nx * fy - ny * fx
+        va = tx * fx + ty * fy + tz * fz
+        vq = tx * qx + ty * qy + tz * qz
+        vq = math.sqrt(tx * tx + ty * ty + tz * tz) if small else vq
+        va = 0.0 if small else va
+        speed = math.sqrt(va * va + vq * vq)
+        ua, uq = va / speed, vq / speed
+        fwd = va > 0.0
+        mus_a = mus_f if fwd else mus_b
+        mus = math.sqrt((mus_a * ua) ** 2 + (mus_t * uq) ** 2)
+        mu_a = mu_f if fwd else mu_b
+        da = mu_a * j * abs(ua)
+        dq = mu_t * j * abs(uq)
+        wa = 0.0 if abs(va) <= da else va - math.copysign(da, va)
+        wq = 0.0 if abs(vq) <= dq else vq - math.copysign(dq, vq)
+        stuck = speed <= mus * j  # static friction holds the mass
+        wa = 0.0 if stuck else wa
+        wq = 0.0 if stuck else wq
+        scale = wq / speed if speed > 0 else 0.0
+        rx = vn * nx + tx * scale if small else vn * nx + wa * fx + wq * qx
+        ry = vn * ny + ty * scale if small else vn * ny + wa * fy + wq * qy
+        rz = vn * nz + tz * scale if small else vn * nz + wa * fz + wq * qz
+        at_rest = speed <= 0.0
+        rx = vn * nx if at_rest else rx
+        ry = vn * ny if at_rest else ry
+        rz = vn * nz if at_rest else rz
+        loose = j <= 0.0  # not pressed into the surface: no friction
+        vx[k] = ax if loose else rx
+        vy[k] = ay if loose else ry
+        vz[k] = az if loose else rz
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric, terr_kind, terr, phys, acc):
+    """One step of every free node (any friction model and terrain): ``advance``'s node block.
+
+    Velocity update from the forces fc, contact friction (under ``stick`` only for the corners of
+    segments in ``seg_held``), position update, Miller's collision and the blow-up checks, node by
+    node.  xc, vc, fc (3, 4, n_faces).  Returns (nodes within the contact distance, status).
+    """
+    n_faces = xc.shape[2]
+    n_seg = n_faces - 1
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    n_contact = 0
+    status = OK
+    for f in range(n_faces):
+        for c in range(4):
+            n = 4 * f + c
+            im = inv_mass[n]
+            if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
+                continue
+            ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
+            vx = ox + dt * fc[0, c, f] * im
+            vy = oy + dt * (fc[1, c, f] * im - g)
+            vz = oz + dt * fc[2, c, f] * im
+            # The other backends call contact_kernels.advance_point for this block; here it stays
+            # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
+            px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
+            phi = signed_distance(terr_kind, terr, px, py, pz)
+            if phi < contact_dist:
+                n_contact += 1
+            if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
+                if euler:
+                    dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
+                else:
+                    dx, dy, dz = dt * vx, dt * vy, dt * vz
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
+                                              spine[f, 0], spine[f, 1], spine[f, 2], phi, dx, dy, dz)
+            if euler:
+                qx = px + 0.5 * dt * (ox + vx)
+                qy = py + 0.5 * dt * (oy + vy)
+                qz = pz + 0.5 * dt * (oz + vz)
+            else:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+            phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
+            if phi_q < 0.0:
+                qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
+                                                           qx, qy, qz, phi_q, vx, vy, vz)
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
+                if pen > phys[MAX_PEN]:
+                    status = DEEP_PENETRATION
+            xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
+            vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
+            # Blow-up checks (status codes, never an exception); the step still finishes.
+            if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                status = NONFINITE
+            elif vx * vx + vy * vy + vz * vz > max_speed2:
+                status = RUNAWAY_SPEED
+    return n_contact, status
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _flat_phi(plane, h, ms, cs, x, y):
+    """``signed_distance`` of a plane (``plane``: y - h) or a slope (ms x + cs (y - h), with ms = -sin and
+    cs = cos of its angle) without obstacles: the same operations, so the same bits, as a select."""
+    return y - h if plane else ms * x + cs * (y - h)
+
+
+@njit(cache=True, error_model="numpy")
+def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
+    """One step of every free node under COULOMB friction on a plane or slope without obstacles.
+
+    ``_nodes_general``'s arithmetic, operation by operation, in four passes that vectorise along
+    the corner-major rows: (1) each node's velocity after forces and signed distance; (2) the
+    touching nodes' friction inputs gathered into ``work``'s B_ rows and (3) their friction
+    (``coulomb_friction_batch``; the surface normal is the same for every node here); (4) position
+    update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
+    fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects.
+    The step's status is that of the last node in node order with a problem, as in the node loop.
+    xc, vc, fc (3, 4, n_faces); imc (4, n_faces): inverse masses [1/kg], corner-major (0: held in
+    place); work (N_WORK, 4 n_faces); touch (4 n_faces,) int64 and code (4, n_faces) int64 scratch.
+    Returns (nodes within the contact distance, status).
+    """
+    n_faces = xc.shape[2]
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
+    max_pen = phys[MAX_PEN]
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)  # one normal: no obstacles (caller checks)
+    plane = terr_kind == PLANE
+    h = terr[0]
+    ms = -math.sin(terr[1])
+    cs = math.cos(terr[1])
+    wvx, wvy, wvz = work[W_VX].reshape((4, n_faces)), work[W_VY].reshape((4, n_faces)), work[W_VZ].reshape((4, n_faces))
+    wphi, wpen = work[W_PHI].reshape((4, n_faces)), work[W_PEN].reshape((4, n_faces))
+    bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
+    bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
+    # (1) velocities after forces and signed distances (a held node's are computed and never used)
+    for c in range(4):
+        im, ox, oy, oz = imc[c], vc[0, c], vc[1, c], vc[2, c]
+        fx, fy, fz = fc[0, c], fc[1, c], fc[2, c]
+        px, py = xc[0, c], xc[1, c]
+        ux, uy, uz, ph = wvx[c], wvy[c], wvz[c], wphi[c]
+        for f in range(n_faces):
+            ux[f] = ox[f] + dt * fx[f] * im[f]
+            uy[f] = oy[f] + dt * (fy[f] * im[f] - g)
+            uz[f] = oz[f] + dt * fz[f] * im[f]
+            ph[f] = _flat_phi(plane, h, ms, cs, px[f], py[f])
+    # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
+    count = 0
+    for c in range(4):
+        for f in range(n_faces):
+            phi = wphi[c, f]
+            if phi < contact_dist and imc[c, f] != 0.0:
+                vx, vy, vz = wvx[c, f], wvy[c, f], wvz[c, f]
+                if euler:
+                    dx, dy, dz = 0.5 * dt * (vc[0, c, f] + vx), 0.5 * dt * (vc[1, c, f] + vy), 0.5 * dt * (vc[2, c, f] + vz)
+                else:
+                    dx, dy, dz = dt * vx, dt * vy, dt * vz
+                vn = vx * nx + vy * ny + vz * nz
+                reaches = phi + dx * nx + dy * ny + dz * nz < 0.0
+                bjn[count] = -(1.0 + r_n) * vn if (vn < 0.0 and reaches) else 0.0
+                bvx[count], bvy[count], bvz[count] = vx, vy, vz
+                bsx[count], bsy[count], bsz[count] = spine[f, 0], spine[f, 1], spine[f, 2]
+                touch[count] = c * n_faces + f
+                count += 1
+    # (3) friction, vectorised, and back to the nodes
+    coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
+    fvx, fvy, fvz = work[W_VX], work[W_VY], work[W_VZ]
+    for k in range(count):
+        i = touch[k]
+        fvx[i], fvy[i], fvz[i] = bvx[k], bvy[k], bvz[k]
+    # (4) positions, collisions, checks
+    n_pen = 0
+    n_bad = 0
+    pen0 = acc[ACC_MAX_PEN]  # a penetration not above this is not above the maximum at its node either
+    for c in range(4):
+        im = imc[c]
+        x0, x1, x2 = xc[0, c], xc[1, c], xc[2, c]
+        v0, v1, v2 = vc[0, c], vc[1, c], vc[2, c]
+        ux, uy, uz, ph, pn = wvx[c], wvy[c], wvz[c], wphi[c], wpen[c]
+        cd = code[c]
+        for f in range(n_faces):
+            px, py, pz = x0[f], x1[f], x2[f]
+            vx, vy, vz = ux[f], uy[f], uz[f]
+            qx = px + 0.5 * dt * (v0[f] + vx) if euler else px + dt * vx
+            qy = py + 0.5 * dt * (v1[f] + vy) if euler else py + dt * vy
+            qz = pz + 0.5 * dt * (v2[f] + vz) if euler else pz + dt * vz
+            phi = ph[f]
+            phi_q = _flat_phi(plane, h, ms, cs, qx, qy)
+            # contact_kernels.collide_path: crossing point, reflection of the part beyond, push-out
+            s = 0.0 if phi <= 0.0 else phi / (phi - phi_q)
+            ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
+            dx, dy, dz = qx - ix, qy - iy, qz - iz
+            dn = dx * nx + dy * ny + dz * nz
+            tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
+            rx = ix - r_n * dn * nx + r_t * tx
+            ry = iy - r_n * dn * ny + r_t * ty
+            rz = iz - r_n * dn * nz + r_t * tz
+            vn = vx * nx + vy * ny + vz * nz
+            into = vn < 0.0
+            wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
+            bx = r_t * wx - r_n * vn * nx if into else vx
+            by = r_t * wy - r_n * vn * ny if into else vy
+            bz = r_t * wz - r_n * vn * nz if into else vz
+            phi_r = _flat_phi(plane, h, ms, cs, rx, ry)
+            inside = phi_r < 0.0
+            rx = rx - phi_r * nx if inside else rx
+            ry = ry - phi_r * ny if inside else ry
+            rz = rz - phi_r * nz if inside else rz
+            hit = phi_q < 0.0
+            held = im[f] == 0.0  # held in place: no forces, no gravity, no motion
+            qx = px if held else (rx if hit else qx)
+            qy = py if held else (ry if hit else qy)
+            qz = pz if held else (rz if hit else qz)
+            vx = v0[f] if held else (bx if hit else vx)
+            vy = v1[f] if held else (by if hit else vy)
+            vz = v2[f] if held else (bz if hit else vz)
+            x0[f], x1[f], x2[f] = qx, qy, qz
+            v0[f], v1[f], v2[f] = vx, vy, vz
+            valid = hit and not held
+            pen = -phi_r if inside else 0.0
+            pn[f] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
+            n_pen += 1 if (valid and pen > pen0) else 0
+            st = DEEP_PENETRATION if (valid and pen > max_pen) else OK
+            st = RUNAWAY_SPEED if vx * vx + vy * vy + vz * vz > max_speed2 else st
+            st = NONFINITE if not math.isfinite(qx + qy + qz + vx + vy + vz) else st
+            st = OK if held else st
+            cd[f] = st
+            n_bad += 1 if st != OK else 0
+    if n_pen > 0:  # a collision left a penetration above the maximum so far: raise it in node order
+        for f in range(n_faces):
+            for c in range(4):
+                if wpen[c, f] > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = wpen[c, f]
+    status = OK
+    if n_bad > 0:  # the node loop's status: the last node (node order 4 f + c) that set one
+        for f in range(n_faces):
+            for c in range(4):
+                if code[c, f] != OK:
+                    status = code[c, f]
+    return count, status
+
+
 @njit(cache=True, error_model="numpy")
 def advance(x, v, inv_mass, fam, params, act_buf,
             fric_model, fric, terr_kind, terr, phys, n_steps,
@@ -304,14 +589,8 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     """
     n_nodes = x.shape[0]
     n_faces = n_nodes // 4
-    g = phys[GRAVITY]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    euler = phys[INTEGRATOR] == EULER
     volume = phys[VOLUME] != 0.0
     contact_dist = fric[CONTACT_DISTANCE]
-    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
     n_rows = act_buf.shape[0]
     last = act_buf[min(n_steps, n_rows - 1)]
     for i in range(act.shape[0]):  # element-wise: a slice copy compiles numba's shape-error formatting
@@ -322,6 +601,16 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     stick = fric_model == STICK
     n_seg = n_faces - 1
     seg_held = np.zeros(max(n_seg, 1), dtype=np.bool_)
+    # Anisotropic Coulomb friction on a plane or slope without obstacles (the snake's scene): the
+    # node block runs batched (``_nodes_coulomb_flat``), bitwise the same as ``_nodes_general``.
+    batched = fric_model == COULOMB and (terr_kind == PLANE or terr_kind == SLOPE) and terr[H_NOBST] <= 0.0
+    work = np.empty((N_WORK, n_nodes if batched else 0))
+    touch = np.empty(n_nodes if batched else 0, dtype=np.int64)
+    code = np.empty((4, n_faces if batched else 0), dtype=np.int64)
+    imc = np.empty((4, n_faces))
+    for f in range(n_faces):
+        for c in range(4):
+            imc[c, f] = inv_mass[4 * f + c]
     for step in range(n_steps):
         family_rest_lengths(act_buf[min(step, n_rows - 1)], volume, fam, params, stretch, face_scale, rest)
         fc[:, :, :] = 0.0
@@ -345,52 +634,12 @@ def advance(x, v, inv_mass, fam, params, act_buf,
                     mz = 0.25 * (xc[2, ca, i] + xc[2, cb, i] + xc[2, ca, i + 1] + xc[2, cb, i + 1])
                     if signed_distance(terr_kind, terr, mx, my, mz) < contact_dist:
                         seg_held[i] = True
-        n_contact = 0
-        status = OK
-        for f in range(n_faces):
-            for c in range(4):
-                n = 4 * f + c
-                im = inv_mass[n]
-                if im == 0.0:  # held in place (e.g. a suspended head): no forces, no gravity, no motion
-                    continue
-                ox, oy, oz = vc[0, c, f], vc[1, c, f], vc[2, c, f]
-                vx = ox + dt * fc[0, c, f] * im
-                vy = oy + dt * (fc[1, c, f] * im - g)
-                vz = oz + dt * fc[2, c, f] * im
-                # The other backends call contact_kernels.advance_point for this block; here it stays
-                # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
-                px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
-                phi = signed_distance(terr_kind, terr, px, py, pz)
-                if phi < contact_dist:
-                    n_contact += 1
-                if phi < contact_dist and (not stick or (f > 0 and seg_held[f - 1]) or (f < n_seg and seg_held[f])):
-                    if euler:
-                        dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
-                    else:
-                        dx, dy, dz = dt * vx, dt * vy, dt * vz
-                    vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                                  spine[f, 0], spine[f, 1], spine[f, 2], phi, dx, dy, dz)
-                if euler:
-                    qx = px + 0.5 * dt * (ox + vx)
-                    qy = py + 0.5 * dt * (oy + vy)
-                    qz = pz + 0.5 * dt * (oz + vz)
-                else:
-                    qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                phi_q = signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi_q < 0.0:
-                    qx, qy, qz, vx, vy, vz, pen = collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi,
-                                                               qx, qy, qz, phi_q, vx, vy, vz)
-                    if pen > acc[ACC_MAX_PEN]:
-                        acc[ACC_MAX_PEN] = pen
-                    if pen > phys[MAX_PEN]:
-                        status = DEEP_PENETRATION
-                xc[0, c, f], xc[1, c, f], xc[2, c, f] = qx, qy, qz
-                vc[0, c, f], vc[1, c, f], vc[2, c, f] = vx, vy, vz
-                # Blow-up checks (status codes, never an exception); the step still finishes.
-                if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                    status = NONFINITE
-                elif vx * vx + vy * vy + vz * vz > max_speed2:
-                    status = RUNAWAY_SPEED
+        if batched:
+            n_contact, status = _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc,
+                                                    work, touch, code)
+        else:
+            n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
+                                               terr_kind, terr, phys, acc)
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:
