@@ -781,6 +781,15 @@ def _rotation_stress_pass(F, coef, q, H):
     the nodal forces and H row 9 with the squared half-angle of the second step
     (inf if a step was invalid); tets with H row 9 >= _NEWTON_TOL_HH need
     ``_rotation_fixup``.
+
+    Each block goes through three short loops over its lanes (first step; second
+    step and acceptance; stress and forces) rather than one long one.  One tet's
+    whole chain is some 500 dependent vector instructions, more than the
+    processor's reorder window, so in a single loop the next lanes could not start
+    until the last ones were nearly done; each short loop's lanes overlap.  The
+    first step's quaternion and its ok flag wait in H rows 0-4, which the third
+    loop overwrites.  The arithmetic, and so every bit of the result, is that of
+    the single loop.
     """
     L = LANES
     for b in range(F.shape[0]):
@@ -788,25 +797,34 @@ def _rotation_stress_pass(F, coef, q, H):
             f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
             f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
             f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-            qw, qx, qy, qz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
             aw, ax, ay, az, _hh1, ok1 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                     qw, qx, qy, qz)
+                                                     q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+            H[b, l] = aw
+            H[b, L + l] = ax
+            H[b, 2 * L + l] = ay
+            H[b, 3 * L + l] = az
+            H[b, 4 * L + l] = 1.0 if ok1 else 0.0
+        for l in range(L):
+            f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+            f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+            f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
             bw, bx, by, bz, hh2, ok2 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                    aw, ax, ay, az)
+                                                    H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
             bw, bx, by, bz = _renormalize(bw, bx, by, bz)
-            ok = ok1 & ok2
-            qw = bw if ok else qw
-            qx = bx if ok else qx
-            qy = by if ok else qy
-            qz = bz if ok else qz
-            q[b, l] = qw
-            q[b, L + l] = qx
-            q[b, 2 * L + l] = qy
-            q[b, 3 * L + l] = qz
-            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
+            ok = (H[b, 4 * L + l] != 0.0) & ok2
+            q[b, l] = bw if ok else q[b, l]
+            q[b, L + l] = bx if ok else q[b, L + l]
+            q[b, 2 * L + l] = by if ok else q[b, 2 * L + l]
+            q[b, 3 * L + l] = bz if ok else q[b, 3 * L + l]
+            H[b, 9 * L + l] = hh2 if ok else np.inf
+        for l in range(L):
+            f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+            f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+            f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(q[b, l], q[b, L + l], q[b, 2 * L + l],
+                                                                       q[b, 3 * L + l])
             _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
                                 r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
-            H[b, 9 * L + l] = hh2 if ok else np.inf
 
 
 @njit(cache=True, error_model="numpy")
@@ -990,40 +1008,132 @@ def skyline_solve(first, ptr, L, b):
     """Solve L L^T y = b for three right-hand sides at once (x, y, z share the matrix).
 
     L: Cholesky factor from ``skyline_cholesky``; b: (n, 3), overwritten with y.
+
+    Both sweeps take two rows per pass, and every entry of b sees exactly the
+    operations, in the order, of the one-row loops (forward: row i's sum over its
+    columns k ascending; backward, a column sweep: b[k] takes row i's update and
+    then row i - 1's), so the result is bit for bit theirs.  Two rows per pass
+    give two independent chains of dependent subtractions to overlap, and the
+    backward sweep reads and writes each b[k] once for both rows.
     """
     n = first.shape[0]
-    # forward: L z = b (row-oriented)
-    for i in range(n):
-        fi = first[i]
-        pi = ptr[i]
-        s0 = b[i, 0]
-        s1 = b[i, 1]
-        s2 = b[i, 2]
-        for k in range(fi, i):
-            l = L[pi + k - fi]
-            s0 -= l * b[k, 0]
-            s1 -= l * b[k, 1]
-            s2 -= l * b[k, 2]
-        d = L[pi + i - fi]
-        b[i, 0] = s0 / d
-        b[i, 1] = s1 / d
-        b[i, 2] = s2 / d
-    # backward: L^T y = z (column sweep over the rows of L)
-    for i in range(n - 1, -1, -1):
-        fi = first[i]
-        pi = ptr[i]
-        d = L[pi + i - fi]
-        y0 = b[i, 0] / d
-        y1 = b[i, 1] / d
-        y2 = b[i, 2] / d
-        b[i, 0] = y0
-        b[i, 1] = y1
-        b[i, 2] = y2
-        for k in range(fi, i):
-            l = L[pi + k - fi]
-            b[k, 0] -= l * y0
-            b[k, 1] -= l * y1
-            b[k, 2] -= l * y2
+    # forward: L z = b (row-oriented), rows i and i + 1
+    i = 0
+    while i + 1 < n:
+        fa = first[i]
+        pa = ptr[i]
+        fb = first[i + 1]
+        pb = ptr[i + 1]
+        a0 = b[i, 0]
+        a1 = b[i, 1]
+        a2 = b[i, 2]
+        c0 = b[i + 1, 0]
+        c1 = b[i + 1, 1]
+        c2 = b[i + 1, 2]
+        # the columns only one of the two rows has (at most one of these loops runs), then the shared ones
+        for k in range(fa, min(fb, i)):
+            l = L[pa + k - fa]
+            a0 -= l * b[k, 0]
+            a1 -= l * b[k, 1]
+            a2 -= l * b[k, 2]
+        for k in range(fb, min(fa, i)):
+            l = L[pb + k - fb]
+            c0 -= l * b[k, 0]
+            c1 -= l * b[k, 1]
+            c2 -= l * b[k, 2]
+        for k in range(max(fa, fb), i):
+            la = L[pa + k - fa]
+            lb = L[pb + k - fb]
+            z0 = b[k, 0]
+            z1 = b[k, 1]
+            z2 = b[k, 2]
+            a0 -= la * z0
+            a1 -= la * z1
+            a2 -= la * z2
+            c0 -= lb * z0
+            c1 -= lb * z1
+            c2 -= lb * z2
+        d = L[pa + i - fa]
+        a0 = a0 / d
+        a1 = a1 / d
+        a2 = a2 / d
+        b[i, 0] = a0
+        b[i, 1] = a1
+        b[i, 2] = a2
+        if fb <= i:
+            l = L[pb + i - fb]
+            c0 -= l * a0
+            c1 -= l * a1
+            c2 -= l * a2
+        d = L[pb + i + 1 - fb]
+        b[i + 1, 0] = c0 / d
+        b[i + 1, 1] = c1 / d
+        b[i + 1, 2] = c2 / d
+        i += 2
+    if i < n:  # odd n: the last row alone
+        fa = first[i]
+        pa = ptr[i]
+        a0 = b[i, 0]
+        a1 = b[i, 1]
+        a2 = b[i, 2]
+        for k in range(fa, i):
+            l = L[pa + k - fa]
+            a0 -= l * b[k, 0]
+            a1 -= l * b[k, 1]
+            a2 -= l * b[k, 2]
+        d = L[pa + i - fa]
+        b[i, 0] = a0 / d
+        b[i, 1] = a1 / d
+        b[i, 2] = a2 / d
+    # backward: L^T y = z (column sweep over the rows of L), rows i and j = i - 1
+    i = n - 1
+    while i >= 1:
+        j = i - 1
+        fa = first[i]
+        pa = ptr[i]
+        fb = first[j]
+        pb = ptr[j]
+        d = L[pa + i - fa]
+        ya0 = b[i, 0] / d
+        ya1 = b[i, 1] / d
+        ya2 = b[i, 2] / d
+        b[i, 0] = ya0
+        b[i, 1] = ya1
+        b[i, 2] = ya2
+        if fa <= j:
+            l = L[pa + j - fa]
+            b[j, 0] -= l * ya0
+            b[j, 1] -= l * ya1
+            b[j, 2] -= l * ya2
+        d = L[pb + j - fb]
+        yb0 = b[j, 0] / d
+        yb1 = b[j, 1] / d
+        yb2 = b[j, 2] / d
+        b[j, 0] = yb0
+        b[j, 1] = yb1
+        b[j, 2] = yb2
+        for k in range(fa, min(fb, j)):
+            l = L[pa + k - fa]
+            b[k, 0] -= l * ya0
+            b[k, 1] -= l * ya1
+            b[k, 2] -= l * ya2
+        for k in range(fb, min(fa, j)):
+            l = L[pb + k - fb]
+            b[k, 0] -= l * yb0
+            b[k, 1] -= l * yb1
+            b[k, 2] -= l * yb2
+        for k in range(max(fa, fb), j):
+            la = L[pa + k - fa]
+            lb = L[pb + k - fb]
+            b[k, 0] = (b[k, 0] - la * ya0) - lb * yb0
+            b[k, 1] = (b[k, 1] - la * ya1) - lb * yb1
+            b[k, 2] = (b[k, 2] - la * ya2) - lb * yb2
+        i -= 2
+    if i == 0:  # odd n: row 0 alone (it has no column left of the diagonal)
+        d = L[ptr[0]]
+        b[0, 0] = b[0, 0] / d
+        b[0, 1] = b[0, 1] / d
+        b[0, 2] = b[0, 2] / d
 
 
 # --------------------------------------------------------------------------------------
