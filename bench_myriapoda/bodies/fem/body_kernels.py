@@ -25,7 +25,7 @@ from numba import njit
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
-from .kernels import LANES, elastic_forces, semi_implicit_velocity
+from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces, semi_implicit_velocity
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(9)
@@ -41,7 +41,7 @@ def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, gain, 
     links, a fraction of the body's length, take the strain of the whole pitch).  A tet with
     tet_seg < 0 is passive (rest shape kept).
     F_e = F A^-1 with A diagonal in the rest frame, so Dm_inv_eff = Dm^-1 A^-1
-    scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu and lambda
+    scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu, lambda and Dm_inv_eff
     (layout of ``fem.kernels.pack_tet_coefficients``).  tet_y, tet_z: (n_tets,)
     centroid position across the section, scaled to [-1, 1].
     """
@@ -60,8 +60,9 @@ def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, gain, 
                 d = Dm_inv[e, r, c] * inv[c]
                 Dm_inv_eff[e, r, c] = d
                 coef[b, (3 * r + c) * LANES + ln] = -vol[e] * d
-        coef[b, 9 * LANES + ln] = 2.0 * mu[e]
-        coef[b, 10 * LANES + ln] = lam[e]
+                coef[b, (COEF_DM_INV + 3 * r + c) * LANES + ln] = d
+        coef[b, COEF_TWO_MU * LANES + ln] = 2.0 * mu[e]
+        coef[b, COEF_LAM * LANES + ln] = lam[e]
 
 
 @njit(cache=True, error_model="numpy")

@@ -148,7 +148,7 @@ class FEMSystem:
             raise ValueError("every node must belong to a tet with positive mass")
         self.D = damping_matrix(self.tets, self.vol, self.gamma, n)
 
-        self.coef = np.zeros((K.n_tet_blocks(m), 11 * K.LANES))
+        self.coef = np.zeros((K.n_tet_blocks(m), K.N_COEF * K.LANES))
         K.pack_tet_coefficients(self.Dm_inv_eff, self.vol, self.mu, self.lam, self.coef)
 
         self.x = self.X.copy()
