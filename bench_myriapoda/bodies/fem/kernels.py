@@ -775,7 +775,8 @@ def _edge_pass(x, tets, F):
     for e in range(tets.shape[0]):
         b = e // L
         l = e - b * L
-        i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+        # unsigned node ids: numba tests every signed index for wrap-around (ids are >= 0)
+        i0, i1, i2, i3 = np.uint64(tets[e, 0]), np.uint64(tets[e, 1]), np.uint64(tets[e, 2]), np.uint64(tets[e, 3])
         x0 = x[i0, 0]
         y0 = x[i0, 1]
         z0 = x[i0, 2]
@@ -906,7 +907,8 @@ def _scatter_pass(tets, H, f):
     for e in range(tets.shape[0]):
         b = e // L
         l = e - b * L
-        i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+        # unsigned node ids: no wrap-around test per index (as in ``_edge_pass``)
+        i0, i1, i2, i3 = np.uint64(tets[e, 0]), np.uint64(tets[e, 1]), np.uint64(tets[e, 2]), np.uint64(tets[e, 3])
         h00, h10, h20 = H[b, l], H[b, L + l], H[b, 2 * L + l]
         h01, h11, h21 = H[b, 3 * L + l], H[b, 4 * L + l], H[b, 5 * L + l]
         h02, h12, h22 = H[b, 6 * L + l], H[b, 7 * L + l], H[b, 8 * L + l]
