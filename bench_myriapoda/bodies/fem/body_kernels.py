@@ -25,7 +25,7 @@ from numba import njit
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
-from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces, semi_implicit_velocity
+from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces_gathered, semi_implicit_velocity
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(9)
@@ -96,7 +96,7 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
 def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_buf,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             node_seg, node_seg_b, node_w, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
-            Dm_inv_eff, coef, q_ws, F_work, H_work, force, b_work, act, centers, spine, acc):
+            Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force, b_work, act, centers, spine, acc):
     """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
 
     act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k (rows past the last repeat
@@ -107,7 +107,8 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     (M + dt D)_ff over the free nodes ``perm`` (``FEMSystem.solver``); nodes not
     in ``perm`` are held (v = 0).  node_seg, node_seg_b, node_w (n_nodes,): a node's friction
     frame is the spine (1 - w) spine[a] + w spine[b], normalized (``body.spine_interpolation``:
-    the tangent at the node's own place on the body); seg_ptr/seg_nodes: CSR of each segment's nodes.  Work arrays are
+    the tangent at the node's own place on the body); seg_ptr/seg_nodes: CSR of each segment's nodes.
+    inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets.  Work arrays are
     overwritten; ``acc`` accumulates statistics (``step_status``).
     """
     g = phys[GRAVITY]
@@ -128,7 +129,7 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
                     act[i, j] = row[i, j]
             active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, row, 1.0, volume, Dm_inv_eff, coef)
         force[:, :] = 0.0
-        elastic_forces(x, tets, Dm_inv_eff, coef, q_ws, F_work, H_work, force)
+        elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force)
         for k in range(n_free):
             i = perm[k]
             force[i, 1] -= mass[i] * g  # eq. 14: the gravity force M g (PAPER-NOTES)
