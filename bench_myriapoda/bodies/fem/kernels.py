@@ -1343,7 +1343,7 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
     fixed node ids) of D_fp [N s/m]; b: (n_free, 3) scratch.
     """
     for k in range(perm.shape[0]):
-        i = perm[k]
+        i = np.uint64(perm[k])  # node ids are >= 0: no wrap-around tests (``skyline_solve``)
         m = mass[i]
         b0 = m * v[i, 0] + dt * f[i, 0]
         b1 = m * v[i, 1] + dt * f[i, 1]
@@ -1359,7 +1359,7 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
         b[k, 2] = b2
     skyline_solve(sky_first, sky_ptr, sky_L, b)
     for k in range(perm.shape[0]):
-        i = perm[k]
+        i = np.uint64(perm[k])
         v[i, 0] = b[k, 0]
         v[i, 1] = b[k, 1]
         v[i, 2] = b[k, 2]
