@@ -181,3 +181,39 @@ def test_numpys_einsum_order_that_the_fem_support_reproduces():
 def test_numpy_sum_reproduces_numpys_order(n):
     a = np.random.default_rng(n).normal(size=n) * np.random.default_rng(n + 1).uniform(0.0, 1e6, size=n)
     assert CC.numpy_sum(a, n) == a.sum()
+
+
+@pytest.mark.parametrize("terrain_none", [False, True])
+def test_the_chunk_replay_samples_equal_per_sample_calls(terrain_none):
+    # fused.legged_walk replays a chunk's timeline samples with LeggedMonitor.sample_many: the same
+    # doubles as one sample() per row (centre of mass, clearance, head path), on random poses
+    from types import SimpleNamespace
+
+    from bench_myriapoda.harness.legged import LeggedMonitor
+    from bench_myriapoda.metrics.behaviour import BehaviourSampler
+    from bench_myriapoda.world import terrain_kernels as T
+
+    rng = np.random.default_rng(3)
+    f = np.zeros(T.N_TERRAIN_PARAMS)
+    for n_seg in (1, 6, 18, 57):
+        k, n_legs = 13, 2 * n_seg
+        c = rng.normal(size=(k, n_seg, 3)) * rng.uniform(0.1, 30.0)
+        R = rng.normal(size=(k, n_seg, 3, 3))
+        centres = rng.normal(size=(k, 2 * n_seg - 1, 3)) * 3.0
+        tips = rng.normal(size=(k, n_legs, 3))
+        mons = []
+        for _ in range(2):
+            m = LeggedMonitor.__new__(LeggedMonitor)
+            m.body = SimpleNamespace(segment_half_extents=np.full((n_seg, 3), 0.5))
+            m._com = []
+            m.behaviour = BehaviourSampler(T.PLANE, f, terrain_none)
+            mons.append(m)
+        one, many = mons
+        for r in range(k):
+            one.sample(c[r], R[r], centres[r], tips[r])
+        many.sample_many(c[:5], R[:5], centres[:5], tips[:5])  # two chunks: the path continues across them
+        many.sample_many(c[5:], R[5:], centres[5:], tips[5:])
+        assert np.array_equal(np.array(one._com), np.array(many._com))
+        a, b = one.behaviour.metrics(), many.behaviour.metrics()
+        assert a["path_length_m"] == b["path_length_m"] and a["path_length_m"] > 0
+        assert np.array_equal(a["terrain_clearance_min_m"], b["terrain_clearance_min_m"], equal_nan=True)

@@ -274,3 +274,40 @@ def test_stick_holds_segments_resting_a_face_on_the_ground_not_a_cube_on_one_edg
     np.testing.assert_allclose(body.v[0:2, 0], 1.0, atol=TOL_EXACT)   # the edge slides on
     assert np.all(body.v[8:, 0][np.tile([True, True, False, False], body.v[8:].shape[0] // 4)] == 0.0)
     np.testing.assert_allclose(body.v[2:4, 0], 1.0, atol=TOL_EXACT)   # dorsal corners: free flight
+
+
+@pytest.mark.parametrize("segments", [1, 3, 6, 12, 25, 38, 39, 60])
+def test_family_spring_forces_bitwise_equal_numpys_three_pass_order(segments):
+    # kernels.family_spring_forces gives every node the same doubles as numpy's three passes per family
+    # (forces, minus at the a ends, plus at the b ends), short and long lattices alike
+    from bench_myriapoda.bodies.massspring.lattice import FAM_A, FAM_B, FAM_SHIFT, PAR_D, PAR_K
+    case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
+    body = BodyMassSpring(case)
+    r = np.random.default_rng(segments)
+    x = body.x + r.normal(scale=0.003, size=body.x.shape)
+    x[4:8] = x[0:4]  # zero-length axial springs (a spring shorter than 1e-12 m pulls nothing)
+    v = r.normal(size=body.x.shape)
+    fam = body.families
+    xc, vc, fc = body._xc, body._vc, body._fc
+    K._corner_major(x, xc)
+    K._corner_major(v, vc)
+    K.family_rest_lengths(r.normal(scale=0.1, size=(segments, 3)), True, fam.index, fam.params, body._stretch_c,
+                          body._face_scale, body._rest_fam)
+    fc[:] = 0.0
+    K.family_spring_forces(xc, vc, fam.index, fam.params, body._rest_fam, body._dfs, fc)
+    ref = np.zeros_like(fc)
+    n_faces = xc.shape[2]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for q in range(fam.index.shape[0]):
+            a, b, s = fam.index[q, FAM_A], fam.index[q, FAM_B], fam.index[q, FAM_SHIFT]
+            n = n_faces - s
+            d = xc[:, b, s:] - xc[:, a, :n]
+            length = np.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
+            u = d / length
+            dv = vc[:, b, s:] - vc[:, a, :n]
+            ldot = dv[0] * u[0] + dv[1] * u[1] + dv[2] * u[2]
+            f = fam.params[PAR_K, q, :n] * (body._rest_fam[q, :n] - length) - fam.params[PAR_D, q, :n] * ldot
+            g = np.where(length >= 1e-12, f * u, 0.0)
+            ref[:, a, :n] -= g
+            ref[:, b, s:] += g
+    assert np.array_equal(fc, ref)

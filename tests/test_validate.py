@@ -16,12 +16,7 @@ from bench_myriapoda.validation.run import run_checks, select
 # Checks whose measured verdict is FAIL today, with the reason; the test expects the failure (strict:
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
 # APPLICABLE with a reason).
-KNOWN_FAILURES = {
-    ("cross_body.hang-elongation", "all"): "static elongation fem 21.8 cm, hybrid 14.1 cm (1.55x, not 1.0-1.3x): "
-                                           "the hybrid's links, glued to rigid faces with 2 cells along 0.5 m, are "
-                                           "too stiff at resolution 3 (at resolution 5: fem 23.2, hybrid 19.9 cm, "
-                                           "1.17x); the old 6.9x read two phases of an undamped oscillation",
-}
+KNOWN_FAILURES: dict[tuple[str, str], str] = {}
 
 
 def _cases():
@@ -228,3 +223,41 @@ def test_report_has_a_validation_section_and_a_verdict_next_to_every_paper_figur
     assert all(('DOES NOT REPRODUCE' in b and "#b00000" in b) for b in figs if 'data-verdict="FAIL"' in b)
     md = (d / "summary.md").read_text()
     assert "## Validation" in md and "**Verdict:" in md
+
+
+def test_hanging_bar_elongation_is_rho_g_l2_over_2e_piece_by_piece():
+    import numpy as np
+
+    from bench_myriapoda.validation.cross_body import bar_elongation
+
+    L, E, A, rho, g = 2.0, 1000.0, 0.1, 3.0, 9.81
+    s = np.linspace(0.0, L, 4001)
+    m = np.full(s.size, rho * A * L / s.size)
+    assert bar_elongation(s, m, np.array([0.0, L]), np.array([E * A]), 0.0, L, g) == pytest.approx(
+        rho * g * L ** 2 / (2 * E), rel=1e-3)
+    # a rigid top half stretches nothing: only the tension g m (> s) over the lower, elastic half counts
+    half = bar_elongation(s, m, np.array([0.0, 1.0, L]), np.array([np.inf, E * A]), 0.0, L, g)
+    assert half == pytest.approx(rho * g * 1.0 ** 2 / (2 * E), rel=1e-3)
+    # one point mass M at the bottom of a massless elastic bar: M g L / (E A)
+    assert bar_elongation(np.array([L]), np.array([2.0]), np.array([0.0, L]), np.array([E * A]), 0.0, L, g) == \
+        pytest.approx(2.0 * g * L / (E * A))
+
+
+def test_hanging_bar_reference_counts_each_bodys_own_masses():
+    from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.validation.cross_body import hanging_bar_reference
+
+    # hybrid centipede, 3 nodes per edge: 0.5 kg boxes, links 0.5 m of E A = 4000 x 0.5 N whose free
+    # middle node layer carries half a link's 0.25 kg; link j (0 at the head) holds 17 - j boxes, 16 - j
+    # links' free mass and half its own: g l / (E A) x sum_j (0.5 (17 - j) + 0.125 (16 - j) + 0.0625)
+    by_hand = 9.81 * 0.5 / 2000.0 * (0.5 * 153 + 0.125 * 136 + 0.0625 * 17)
+    bar, lower = hanging_bar_reference(resolve_case("centipede", "hybrid", "hang", None, duration=3.0))
+    assert bar == pytest.approx(by_hand, rel=1e-3)
+    assert lower == pytest.approx(1.4 * 0.2 / 0.6)  # E / M at nu = 0.4
+    # at 5 nodes per edge three of four node layers are free: the links carry 3/4 of their mass
+    bar5, _ = hanging_bar_reference(resolve_case("centipede", "hybrid", "hang", None, duration=3.0,
+                                                 overrides=["body.resolution=5"]))
+    assert bar5 == pytest.approx(9.81 * 0.5 / 2000.0 * (0.5 * 153 + 0.1875 * 136 + 0.09375 * 17), rel=1e-3)
+    # fem: the whole 0.25 kg link mass, and blocks 20x stiffer: more than the hybrid's
+    fem, _ = hanging_bar_reference(resolve_case("centipede", "fem", "hang", None, duration=3.0))
+    assert fem > bar5 > bar

@@ -152,7 +152,8 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
      f_work, b_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
      R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc) = BA
     dt = phys[K.DT]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
                                      residual, dt, S, REC, n_rec)
@@ -160,7 +161,7 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
                                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                  fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
                                  c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
-                                 gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                 gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                  f_work, b_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                  R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
@@ -178,13 +179,14 @@ def massspring_chunk(t0, n_steps, C, BA, S, REC):
      f_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
      R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc) = BA
     dt = phys[K.DT]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
                                      residual, dt, S, REC, n_rec)
         done, status = MS.advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, springs, stiffness,
                                         damping, rest, c, q, vr, w, rmass, inertia_body, half_extents, kinematic,
-                                        impulse_cache, gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                        impulse_cache, gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                         R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
@@ -214,7 +216,8 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
     rec_c, rec_R, rec_links = REC[6], REC[7], REC[8]
     dt = phys[FM.DT]
     n_seg = cseg.shape[0]
-    n_rec = 0
+    # np.int64, not the literals 0 and 1: a Literal[int] argument compiles a second signature of the callee
+    n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         FM.block_poses(x, block_nodes_s, rest_offsets, cseg, A_scr, Rseg)
         recorded = _control(t0 + k * dt, C, cseg, Rseg, REC, n_rec)
@@ -243,7 +246,7 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
         done, status = FM.advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
                                         perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                         block_nodes, node_spine, att_nodes, att_block, att_target, support,
-                                        gravity, terr_kind, terr, fric_model, fric, phys, 1,
+                                        gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, b_work, cent, spine, acc)
         if status != K.OK:
             return k + 1, status, n_rec
@@ -351,18 +354,24 @@ class FusedLeggedWalk:
 
     def _replay(self, n_rec: int) -> None:
         """The chunk's timeline samples into the controller's lists and the monitor (as ``step`` and
-        ``LeggedMonitor.after_control`` append them)."""
+        ``LeggedMonitor.after_control`` append them).  Each buffer's rows are copied once per chunk and
+        the lists get row views of that copy (the Python path appends a copy per row: the same values),
+        and the monitor takes the chunk's samples in one ``sample_many`` call: a chunk's replay no
+        longer costs Python work per sample (a fixed cost per step that made small bodies slow)."""
+        if n_rec == 0:
+            return
         ctrl, mon = self.controller, self.monitor
         n_seg = ctrl.n_seg
-        for r in range(n_rec):
-            ctrl.timeline_t.append(float(self.rec_t[r]))
-            ctrl.timeline_states.append(self.rec_states[r].copy())
-            ctrl.timeline_tips.append(self.rec_tips[r].copy())
-            ctrl.timeline_brain.append(int(self.rec_brain[r]))
-            ctrl.timeline_contact.append(self.rec_contact[r].copy())
-            ctrl.timeline_centers.append(self.rec_centres[r].copy())
-            if mon is not None:
-                centres = np.empty((2 * n_seg - 1, 3))
-                centres[0::2] = self.rec_c[r]
-                centres[1::2] = self.rec_links[r]
-                mon.sample(self.rec_c[r], self.rec_R[r], centres, self.rec_tips[r])
+        tips = self.rec_tips[:n_rec].copy()
+        rec_c = self.rec_c[:n_rec]
+        ctrl.timeline_t.extend(self.rec_t[:n_rec].tolist())
+        ctrl.timeline_states.extend(self.rec_states[:n_rec].copy())
+        ctrl.timeline_tips.extend(tips)
+        ctrl.timeline_brain.extend(self.rec_brain[:n_rec].tolist())
+        ctrl.timeline_contact.extend(self.rec_contact[:n_rec].copy())
+        ctrl.timeline_centers.extend(self.rec_centres[:n_rec].copy())
+        if mon is not None:
+            centres = np.empty((n_rec, 2 * n_seg - 1, 3))
+            centres[:, 0::2] = rec_c
+            centres[:, 1::2] = self.rec_links[:n_rec]
+            mon.sample_many(rec_c, self.rec_R[:n_rec], centres, tips)

@@ -49,6 +49,18 @@ def min_signed_distance(kind, f, points):
     return best
 
 
+@njit(cache=True)
+def rows_min_signed_distance(kind, f, points, out):
+    """out[r] = ``min_signed_distance(kind, f, points[r])`` for points (k, m, 3) [m]; out (k,) [m] overwritten
+    (the same comparisons in the same order, so the same doubles)."""
+    for r in range(points.shape[0]):
+        best = np.inf
+        for i in range(points.shape[1]):
+            d = signed_distance(kind, f, points[r, i, 0], points[r, i, 1], points[r, i, 2])
+            best = min(best, d)
+        out[r] = best
+
+
 def path_length(points: np.ndarray) -> float:
     """Length [m] of the polyline through points (T, 3)."""
     p = np.asarray(points, dtype=float)
@@ -101,6 +113,39 @@ class BehaviourSampler:
         if self._last_head is not None:
             self.path += float(np.linalg.norm(head - self._last_head))
         self._last_head = head
+
+    def sample_many(self, centres: np.ndarray, heads: np.ndarray) -> None:
+        """k ``sample`` calls at once on a terrain without obstacles: centres (k, n, 3), heads (k, 3) [m].
+
+        The fused legged path replays a chunk's samples through this: one compiled call for the
+        clearance and a short loop for the path instead of k calls, with the same doubles as k
+        ``sample`` calls (min is exact; each path increment is ``np.linalg.norm``'s sqrt(d . d) of the
+        same difference, added in the same order; tests/test_fused_walk.py).  Obstacles need the box
+        corners and tips of every sample: ``LeggedMonitor.sample_many`` then calls ``sample`` per row.
+        """
+        if self.has_obstacles:
+            raise ValueError("BehaviourSampler.sample_many: obstacles need sample() per row")
+        k = centres.shape[0]
+        if k == 0:
+            return
+        if not self.terrain_none:
+            mins = np.empty(k)
+            rows_min_signed_distance(self.kind, self.f, np.ascontiguousarray(centres, dtype=np.float64), mins)
+            for m in mins.tolist():
+                self.clearance_min = min(self.clearance_min, m)
+        heads = np.array(heads, dtype=float)
+        if self._last_head is not None:
+            prev = np.concatenate([self._last_head[None], heads[:-1]])
+            first = 0
+        else:
+            prev = np.concatenate([heads[:1], heads[:-1]])
+            first = 1
+        d = heads - prev
+        path = self.path
+        for r in range(first, k):
+            path += float(np.sqrt(d[r].dot(d[r])))
+        self.path = path
+        self._last_head = heads[-1].copy()
 
     def metrics(self) -> dict[str, float]:
         return {"obstacle_penetration_max_m": max(self.pen_body, self.pen_legs),

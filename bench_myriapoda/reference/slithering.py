@@ -31,6 +31,19 @@ Two limits of Hu et al.'s equations (Froude number Fr = L / (T^2 g mu_f), inerti
   quasistatic speed (0.2568 vs 0.2567 BL/cycle at A = 7, lambda = 1, mu_t / mu_f = 3), at
   Fr = 0.1 it is 0.9 % faster.
 
+A body of width w (``width_bl`` > 0, in body lengths) rests on the two edges of its belly, lines at
++-w/2 along the normal, each with half the weight, as a flat-bottomed body on a flat ground does
+(the lattice's and the hybrid's bottom corners sit there).  The cross-sections turn with the
+tangent, so the edge at +h n moves relative to the centre line by h dn/dt = -h (dtheta/dt) a: the
+two edges slide along the body in opposite directions at +-h dtheta/dt.  Coulomb friction depends
+on the direction of slip only, so where a section turns faster than it slides along the body the
+edges' pulls along the body cancel (sliding along the body is nearly free), while a sideways slip
+tilts both edges' slip the same way and is resisted: the turning sections add to the belly's
+anisotropy, which the zero-width line of Hu et al. lacks (the effect is there with mu_b = mu_f too).
+At A = 7, lambda = 1, mu_b = 1.5 mu_f and w = 0.05 BL it adds 0.014 BL/cycle at mu_t = mu_f and
+0.018 (+19 %) at mu_t = 1.5 mu_f, and little at large ratios (+2.7 % at 3, +0.5 % at 10), where the
+sideways grip already dominates (issue 11).
+
 Coulomb friction does not depend on the sliding speed, so the model is rate independent: speeds
 come out in body lengths per cycle and do not depend on T, g or the size of the coefficients,
 only on A, lambda and the ratios mu_b / mu_f and mu_t / mu_f.
@@ -83,7 +96,8 @@ class SlitheringResult:
 
 
 def _dynamic(curvature_amplitude: float, wavelength_bl: float, mus: tuple, froude: float, n_points: int,
-             steps: int, cycles: int, measure: int, delta: float) -> tuple[np.ndarray, float, list]:
+             steps: int, cycles: int, measure: int, delta: float,
+             width_bl: float = 0.0) -> tuple[np.ndarray, float, list]:
     """Integrate the rigid motion with inertia from rest: (displacement over the last ``measure``
     cycles in world axes [BL], rotation over them [rad], [(heading psi, shape X) per step measured])."""
     mu_f = mus[0]
@@ -97,7 +111,7 @@ def _dynamic(curvature_amplitude: float, wavelength_bl: float, mus: tuple, froud
     for k in range(cycles * steps):
         if k == start:
             P0, psi0 = P.copy(), psi
-        X, W, a, w = body_shape(curvature_amplitude, wavelength_bl, ((k + 0.5) * h) % 1.0, n_points)
+        X, W, a, w = body_shape(curvature_amplitude, wavelength_bl, ((k + 0.5) * h) % 1.0, n_points, width_bl)
         inertia = w @ (X * X).sum(axis=1)
         own = w @ (X[:, 0] * W[:, 1] - X[:, 1] * W[:, 0])
         om = (H - own) / inertia
@@ -115,11 +129,14 @@ def _dynamic(curvature_amplitude: float, wavelength_bl: float, mus: tuple, froud
 
 
 def body_shape(curvature_amplitude: float, wavelength_bl: float, phase_cycles: float,
-               n_points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+               n_points: int, width_bl: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Shape and shape velocity in the body frame at phase t/T.
 
-    Returns (X (n, 2) [BL], W (n, 2) [BL per cycle]: velocity of each point relative to the body
-    frame, a (n, 2): unit tangent toward the head, w (n,): quadrature weights summing to 1).
+    Returns (X (m, 2) [BL], W (m, 2) [BL per cycle]: velocity of each point relative to the body
+    frame, a (m, 2): unit tangent toward the head, w (m,): quadrature weights summing to 1), with
+    m = n_points on the centre line (width_bl = 0), else m = 2 n_points: the belly's left edge
+    (X + (w/2) n, head to tail) then its right edge (X - (w/2) n), each with half the weight and
+    the shape velocity of its place on the turning cross-section (module doc).
     The body frame has its origin at the centre of mass and its x axis along the mean tangent
     angle, so W carries no net translation or rotation of the mean axis.
     """
@@ -141,7 +158,20 @@ def body_shape(curvature_amplitude: float, wavelength_bl: float, phase_cycles: f
     W = -_cumtrapz(da, s)
     X -= w @ X
     W -= w @ W
-    return X, W, a, w
+    if width_bl <= 0.0:
+        return X, W, a, w
+    h = 0.5 * width_bl
+    n = np.column_stack([-a[:, 1], a[:, 0]])
+    dW = h * theta_t[:, None] * a  # h dn/dt = -h theta_t a at the left edge, +h theta_t a at the right
+    return (np.vstack([X + h * n, X - h * n]), np.vstack([W - dW, W + dW]), np.vstack([a, a]),
+            np.concatenate([w, w]) * 0.5)
+
+
+def _head_to_tail(X: np.ndarray, n_points: int) -> np.ndarray:
+    """Centre-line vector from the tail to the head of a ``body_shape`` X (either layout)."""
+    if len(X) == n_points:
+        return X[0] - X[-1]
+    return 0.5 * (X[0] + X[n_points]) - 0.5 * (X[n_points - 1] + X[-1])
 
 
 def _cumtrapz(y: np.ndarray, s: np.ndarray) -> np.ndarray:
@@ -189,7 +219,7 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
                       mu_t: float, n_points: int = 200, n_time: int = 96,
                       method: str = "quasistatic", velocity_regularization: float = 1e-6,
                       froude: float = 0.1, dynamic_steps_per_cycle: int = 4000, dynamic_cycles: int = 6,
-                      dynamic_measure_cycles: int = 3) -> SlitheringResult:
+                      dynamic_measure_cycles: int = 3, width_bl: float = 0.0) -> SlitheringResult:
     """Steady slithering of a prescribed curvature wave on anisotropic Coulomb friction.
 
     curvature_amplitude: A = peak curvature x body length (dimensionless).
@@ -202,13 +232,17 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
         (the dynamic method uses at least 1e-4: explicit steps chatter at the stick points).
     froude, dynamic_*: the dynamic method's Froude number, steps per cycle, cycles run from
         rest and cycles measured at the end (per cycle figures are their mean).
-    Raises ValueError on a non-positive coefficient, wavelength or resolution.
+    width_bl: the belly's width in body lengths (0: Hu et al.'s line; > 0: two contact lines at
+        the edges, module doc).
+    Raises ValueError on a non-positive coefficient, wavelength or resolution, or a negative width.
     """
     if min(mu_f, mu_b, mu_t) <= 0.0:
         raise ValueError(f"friction coefficients must be > 0, got mu_f={mu_f}, mu_b={mu_b}, mu_t={mu_t}")
     if wavelength_bl <= 0.0 or curvature_amplitude < 0.0:
         raise ValueError(f"need wavelength_bl > 0 and curvature_amplitude >= 0, got {wavelength_bl}, "
                          f"{curvature_amplitude}")
+    if not 0.0 <= width_bl < 0.5:
+        raise ValueError(f"need 0 <= width_bl < 0.5 (body lengths), got {width_bl}")
     if n_points < 8 or n_time < 4:
         raise ValueError(f"need n_points >= 8 and n_time >= 4, got {n_points}, {n_time}")
     if method not in ("quasistatic", "averaged", "dynamic"):
@@ -222,12 +256,12 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
     delta = velocity_regularization * wavelength_bl
     scale = max(mus)
     phases = (np.arange(n_time) + 0.5) / n_time
-    shapes = [body_shape(curvature_amplitude, wavelength_bl, p, n_points) for p in phases]
+    shapes = [body_shape(curvature_amplitude, wavelength_bl, p, n_points, width_bl) for p in phases]
 
     if method == "dynamic":
         d, turn, frames = _dynamic(curvature_amplitude, wavelength_bl, mus, froude, n_points,
                                    dynamic_steps_per_cycle, dynamic_cycles, dynamic_measure_cycles,
-                                   max(delta, 1e-4 * wavelength_bl))
+                                   max(delta, 1e-4 * wavelength_bl), width_bl)
         disp, turn = d / dynamic_measure_cycles, turn / dynamic_measure_cycles
         psis = np.array([p for p, _ in frames])
         shapes = [(X, None, None, None) for _, X in frames]
@@ -272,7 +306,7 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
     # them: the mean of the unit tail-to-head vectors (the head-tail line swings within a cycle)
     axes = []
     for (X, _, _, _), p in zip(shapes, psis):
-        ht = X[0] - X[-1]
+        ht = _head_to_tail(X, n_points)
         ht = ht / np.linalg.norm(ht)
         c, s_ = math.cos(p), math.sin(p)
         axes.append([c * ht[0] - s_ * ht[1], s_ * ht[0] + c * ht[1]])

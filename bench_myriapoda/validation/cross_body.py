@@ -4,8 +4,8 @@ Where the physics should agree (the worm's speed follows eps * Lambda f on any b
 its compressed points; the centipede's speed and phase lag are set by the leg controller, which
 carries the supported segments kinematically), the bodies must agree within a stated tolerance.
 Where it should not (a hanging centipede: the fem body's blocks are elastic, 20x stiffer than
-the links and twice as long, while the hybrid's boxes are rigid), the expected difference is stated
-and checked.
+the links and twice as long, while the hybrid's boxes are rigid and its links simulate only their
+free nodes' mass), the expected difference is each body's own hanging-bar value, checked.
 """
 from __future__ import annotations
 
@@ -17,9 +17,6 @@ from .paper import WALK_DURATION_S
 WORM_SPEED_REL_SPREAD = 0.15      # (max - min) / max of speed_bl_per_cycle over the bodies
 CENTIPEDE_SPEED_REL_SPREAD = 0.10
 PHASE_LAG_ABS_SPREAD = 0.03       # [cycles]
-# fem / hybrid hanging elongation: the fem blocks add compliance 2 (length) / 20 (stiffness) = 10 %
-# of the links'; the ratio must lie in this range (the extra head-block compliance allows up to 30 %)
-HANG_RATIO_RANGE = (1.0, 1.3)
 
 
 def _bodies(ctx: Context) -> tuple[str, ...]:
@@ -62,6 +59,9 @@ def centipede_phase_lag(ctx: Context, body: str) -> Outcome:
 
 
 HANG_SETTLE_S = 0.5  # the static elongation: the time mean after the first quarter-oscillation
+HANG_RESOLUTION = 5  # nodes per link edge for the hang comparison (hang_elongation_difference says why)
+HANG_DT_S = {"fem": 1.0 / 6000.0}  # the fem chain at 5 nodes per edge blows up at 1/3000 s within 1 s
+HANG_AGREEMENT = 0.10  # |(fem / its bar value) / (hybrid / its bar value) - 1|
 
 
 def static_elongation(r, settle_s: float = HANG_SETTLE_S) -> float:
@@ -83,20 +83,111 @@ def static_elongation(r, settle_s: float = HANG_SETTLE_S) -> float:
     return float(d[keep].mean() - d[0]) if keep.any() else math.nan
 
 
+def bar_elongation(s_mass, mass, bounds, ea, s_top: float, s_bottom: float, g: float) -> float:
+    """Elongation [m] between arc positions s_top < s_bottom of a 1-D bar hanging by its top.
+
+    s_mass, mass: (n,) point masses [m from the head, kg]; bounds: (k + 1,) piece boundaries
+    [m], increasing; ea: (k,) axial stiffness E A of each piece [N] (inf: rigid).  The tension at
+    s is g times the mass below s, so the elongation is the integral of g m(> s) / EA(s) ds from
+    s_top to s_bottom (the hanging bar's rho g L^2 / 2E, piece by piece), summed exactly over the
+    intervals between masses and boundaries, on which both are constant.
+    """
+    import numpy as np
+
+    order = np.argsort(s_mass)
+    sm, cm = np.asarray(s_mass)[order], np.cumsum(np.asarray(mass)[order][::-1])[::-1]  # cm[j]: mass at >= sm[j]
+    cuts = np.unique(np.concatenate([[s_top, s_bottom], sm, bounds]))
+    cuts = cuts[(cuts >= s_top) & (cuts <= s_bottom)]
+    a, b = cuts[:-1], cuts[1:]
+    j = np.searchsorted(sm, b, side="left")  # masses at s >= b hang below the interval
+    below = np.where(j < len(sm), cm[np.minimum(j, len(sm) - 1)], 0.0)
+    piece = np.clip(np.searchsorted(bounds, 0.5 * (a + b), side="right") - 1, 0, len(ea) - 1)
+    return float(np.sum(g * below * (b - a) / np.asarray(ea)[piece]))
+
+
+def hanging_bar_reference(case) -> tuple[float, float]:
+    """(bar value [m], Young's modulus / oedometric modulus) of a hanging chain body (fem or hybrid).
+
+    The bar value is ``bar_elongation`` of the body's own simulated masses (the hybrid: its boxes
+    and its links' free nodes, whose share of a link's mass is (n - 2) / (n - 1) at n nodes per
+    edge, the attached nodes' share belonging to no one; the fem: every node) and its own
+    deformable pieces (the hybrid: the links, E A; the fem: the links, E A, and the blocks,
+    ``rigid_stiffness_factor`` E A), from the head segment's centre to the tail segment's.
+    It takes the links as free to contract sideways.  Glued to rigid faces (hybrid) or to 20x
+    stiffer blocks (fem) they are not, and a displacement FEM mesh is stiffer than the continuum:
+    both only add constraints, so the measured elongation lies at or below the bar value, and at
+    or above it times E / M, with M = E (1 - nu) / ((1 + nu)(1 - 2 nu)) the modulus of a bar whose
+    sideways contraction is suppressed everywhere (0.467 at nu = 0.4).
+    """
+    import numpy as np
+
+    from ..core import registry
+
+    body = registry.BODIES[case.body.name].factory(case)
+    cfg, cre, g = case.body, case.creature, case.scenario.gravity_m_s2
+    E, nu = cfg.youngs_modulus_pa, cfg.poisson_ratio
+    if case.body.name == "hybrid":
+        lay = body.layout
+        n, P, l_head = lay.n_rigid, lay.pitch, lay.rigid_length
+        s_mass = np.concatenate([np.arange(n) * P + 0.5 * lay.rigid_length, -body.mesh.nodes[body.free, 0]])
+        mass = np.concatenate([body.rigid.mass, body.fem.mass[body.free]])
+        piece_ea = (math.inf, E * lay.link_height * lay.link_width)
+    elif case.body.name == "fem":
+        n, P, l_head = body.n_blocks, body.pitch, body.block_length
+        s_mass, mass = -body.rest[:, 0], body.fem.mass
+        a = cre.height_m * cre.width_m
+        piece_ea = (cfg.rigid_stiffness_factor * E * a, E * a)
+    else:
+        raise ValueError(f"no hanging bar reference for body {case.body.name!r} (fem and hybrid only)")
+    bounds = np.sort(np.concatenate([np.arange(n) * P, np.arange(n) * P + l_head, [n * P]]))[:2 * n]
+    ea = np.array([piece_ea[k % 2] for k in range(2 * n - 1)])
+    bar = bar_elongation(s_mass, mass, bounds, ea, 0.5 * l_head, (n - 1) * P + 0.5 * l_head, g)
+    oedometric = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    return bar, E / oedometric
+
+
 def hang_elongation_difference(ctx: Context, body: str) -> Outcome:
-    """Expected difference: hanging by the head, the fem centipede stretches 10-30 % more than the hybrid
-    (static elongations, ``static_elongation``)."""
+    """Expected difference: hanging by the head, each body stretches as the 1-D bar of its own
+    geometry and masses predicts (``hanging_bar_reference``), so the fem and hybrid centipedes
+    differ by the ratio of their bar values, not by a fixed factor.
+
+    Each body's static elongation (``static_elongation``) over its bar value, q, must lie in
+    [E / M, 1] (the bounds ``hanging_bar_reference`` derives), and the two bodies' q must agree
+    within ``HANG_AGREEMENT``: their links are the same blocks of the same material, glued at both
+    ends to (nearly) rigid faces, so they stiffen alike.  The bar values differ for two reasons of
+    geometry: the fem's blocks add compliance (20x stiffer, twice as long: +10 % of the links'),
+    and the hybrid simulates only its links' free-node mass (half a link's at 3 nodes per edge), so
+    its links carry less weight.  The old expectation, fem / hybrid within 1.0-1.3 from the blocks
+    alone, missed the second.
+
+    Compared at ``HANG_RESOLUTION`` = 5 nodes per edge, not the default 3: at 3 a hybrid link has
+    one free node layer between two clamped faces and sits at q = 0.61 against the fem's 0.72
+    (fem 21.8 cm, hybrid 14.1 cm: 1.55x), a mesh artefact; at 5 and 7 nodes the two bodies' q
+    agree within 3 % (issue 11; README, validate).
+    """
     if not {"fem", "hybrid"} <= set(ctx.bodies):
         return not_applicable("compares the fem and hybrid bodies; select both (--body)")
-    rf = ctx.run("centipede", "fem", "hang", duration=3.0)
-    rh = ctx.run("centipede", "hybrid", "hang", duration=3.0)
-    for r in (rf, rh):
+    res = (f"body.resolution={HANG_RESOLUTION}", "body.resolution_unit=nodes")
+    runs = {b: ctx.run("centipede", b, "hang", duration=3.0, overrides=res, dt=HANG_DT_S.get(b)) for b in ("fem", "hybrid")}
+    for r in runs.values():
         if r.status != "ok":
             return failed_run(r)
-    ef, eh = static_elongation(rf), static_elongation(rh)
-    ratio = ef / eh if eh else math.nan
-    lo, hi = HANG_RATIO_RANGE
-    return holds(lo <= ratio <= hi, round(ratio, 3), f"{lo:g} to {hi:g}", "inside the range",
-                 f"static elongation fem {ef * 100:.2f} cm, hybrid {eh * 100:.2f} cm (rigid boxes vs 20x stiffer "
-                 f"blocks)",
-                 fem_m=ef, hybrid_m=eh)
+    e, q, lo = {}, {}, {}
+    for b, r in runs.items():
+        bar, lo[b] = hanging_bar_reference(r.case)
+        e[b] = static_elongation(r)
+        q[b] = e[b] / bar
+    agree = q["fem"] / q["hybrid"] - 1.0
+    bounded = all(lo[b] <= q[b] <= 1.0 for b in q)
+    ok = bounded and abs(agree) <= HANG_AGREEMENT
+    ratio = e["fem"] / e["hybrid"]
+    bar_ratio = (e["fem"] / q["fem"]) / (e["hybrid"] / q["hybrid"])
+    return holds(ok, round(ratio, 3), round(bar_ratio, 3),
+                 f"fem / hybrid within {100 * HANG_AGREEMENT:g} % of the bar values' ratio; each body within "
+                 f"[E/M, 1] of its bar value",
+                 f"{HANG_RESOLUTION} nodes per edge; static elongation fem {e['fem'] * 100:.2f} cm "
+                 f"({q['fem']:.3f} of its bar value {e['fem'] / q['fem'] * 100:.2f} cm), hybrid "
+                 f"{e['hybrid'] * 100:.2f} cm ({q['hybrid']:.3f} of {e['hybrid'] / q['hybrid'] * 100:.2f} cm); "
+                 f"E/M = {lo['fem']:.3f}",
+                 fem_m=e["fem"], hybrid_m=e["hybrid"], fem_of_bar=q["fem"], hybrid_of_bar=q["hybrid"],
+                 agreement=agree)

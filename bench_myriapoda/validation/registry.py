@@ -76,7 +76,7 @@ CHECKS: tuple[Check, ...] = (
     Check("cross_body.centipede-phase-lag", "cross_body", "centipede phase lag spread over bodies [cycles]",
           "the leg controller sets the lag", (CROSS,), X.centipede_phase_lag, ()),
     Check("cross_body.hang-elongation", "cross_body", "hanging elongation fem / hybrid (expected difference)",
-          "rigid boxes vs 20x stiffer blocks: +10 % compliance", (CROSS,), X.hang_elongation_difference, ()),
+          "each body's hanging bar (rho g L^2 / 2E over its own pieces and masses)", (CROSS,), X.hang_elongation_difference, ()),
 )
 
 BY_NAME: dict[str, Check] = {c.name: c for c in CHECKS}

@@ -216,7 +216,7 @@ def numpy_sum(a, n):
     post-order walk: ``lo``/``ln`` hold the pending ranges, ``val`` the finished partial sums.
     """
     if n <= 128:
-        return _block_sum(a, 0, n)
+        return _block_sum(a, np.int64(0), n)  # np.int64: a literal 0 compiles a second signature
     # stack of (start, length, visited) ranges; a visited range pops its two children's sums
     st = np.empty(128, np.int64)
     ln = np.empty(128, np.int64)
@@ -278,7 +278,7 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     n_legs = states.shape[0]
     step = ints[I_STEP]
     if step > 0:  # record_tracking: how well the body followed the last step's targets
-        m = 0
+        m = np.int64(0)  # not the literal 0: it would compile a second signature of numpy_sum
         for i in range(n_seg):
             if supported[i]:
                 dx = c[i, 0] - c_T[i, 0]
