@@ -22,9 +22,10 @@ import math
 
 from numba import njit
 
+from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
-from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
+from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, NONFINITE, OK, RUNAWAY_SPEED
 from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces_gathered, semi_implicit_velocity
 
 # scalar parameter vector layout (``phys``)
@@ -139,6 +140,19 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
+            # a node clear of the terrain at both ends of its step: ``advance_point``'s no-contact case
+            # with its arithmetic, bit for bit (as in ``fem.myriapod.advance_chain``)
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+                    if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                        status = NONFINITE
+                    elif vx * vx + vy * vy + vz * vz > max_speed2:
+                        status = RUNAWAY_SPEED
+                    continue
             sa = node_seg[i]
             sb = node_seg_b[i]
             w = node_w[i]
@@ -148,7 +162,7 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
             nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
             if nrm > 0.0:
                 sx, sy, sz = sx / nrm, sy / nrm, sz / nrm
-            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], sx, sy, sz, dt, terr_kind, terr,
+            touching, st = advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr,
                                          fric_model, fric, r_n, r_t,
                                          contact_dist, phys[MAX_PEN], max_speed2, acc, False, 0.0, 0.0, 0.0)
             n_contact += touching
