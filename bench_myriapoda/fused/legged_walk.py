@@ -205,7 +205,7 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
     penalty pulls it to during its step.  The nodes do not move before the step, so the monitor's poses
     are the sensed ones, and a link's centre is the mean of its two blocks' centroids.
     """
-    (x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
+    (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
      perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
      block_nodes, node_spine, att_nodes, att_block, att_target, support,
      gravity, terr_kind, terr, fric_model, fric, phys,
@@ -243,7 +243,7 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
                 for i in range(3):
                     rec_links[n_rec, li, i] = 0.5 * (cseg[li, i] + cseg[li + 1, i])
             n_rec += 1
-        done, status = FM.advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
+        done, status = FM.advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
                                         perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                         block_nodes, node_spine, att_nodes, att_block, att_target, support,
                                         gravity, terr_kind, terr, fric_model, fric, phys, one_step,
@@ -256,7 +256,7 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
 def _fem_args(b: BodyFEMChain) -> tuple:
     """``fem.myriapod.advance_chain``'s arguments but n_steps, as ``BodyFEMChain.advance`` passes them."""
     f, s = b.fem, b.solver
-    return (b.x, b.v, f.mass, f.tets, f.Dm_inv_eff, f.coef, f._q_ws, f._F_work, f._H_work,
+    return (b.x, b.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work, f._H_work,
             s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
             b.block_nodes, b.node_spine, b.att_nodes, b.att_block, b.att_target, b.support,
             b.gravity, b.terr_kind, b.terr, b.fric_model, b.fric, b.phys,

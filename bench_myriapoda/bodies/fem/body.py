@@ -241,7 +241,8 @@ class BodyFEM(NodeSegments):
                           so.fp_ptr, so.fp_col, so.fp_val, self.node_seg, self.node_seg_b, self.node_w,
                           self.seg_ptr, self.seg_nodes,
                           self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                          s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, self._force, self._b_work,
+                          s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, s._inc_ptr, s._inc_off,
+                          self._force, self._b_work,
                           self._act, self._centers, self._spine, self.acc)
 
     def compile(self) -> None:

@@ -22,10 +22,11 @@ import math
 
 from numba import njit
 
+from ...world.terrain_kernels import signed_distance
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
-from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, OK
-from .kernels import LANES, elastic_forces, semi_implicit_velocity
+from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, NONFINITE, OK, RUNAWAY_SPEED
+from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces_gathered, semi_implicit_velocity
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(9)
@@ -41,7 +42,7 @@ def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, gain, 
     links, a fraction of the body's length, take the strain of the whole pitch).  A tet with
     tet_seg < 0 is passive (rest shape kept).
     F_e = F A^-1 with A diagonal in the rest frame, so Dm_inv_eff = Dm^-1 A^-1
-    scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu and lambda
+    scales the columns of Dm^-1; ``coef`` packs -V Dm_inv_eff, 2 mu, lambda and Dm_inv_eff
     (layout of ``fem.kernels.pack_tet_coefficients``).  tet_y, tet_z: (n_tets,)
     centroid position across the section, scaled to [-1, 1].
     """
@@ -60,8 +61,9 @@ def active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act, gain, 
                 d = Dm_inv[e, r, c] * inv[c]
                 Dm_inv_eff[e, r, c] = d
                 coef[b, (3 * r + c) * LANES + ln] = -vol[e] * d
-        coef[b, 9 * LANES + ln] = 2.0 * mu[e]
-        coef[b, 10 * LANES + ln] = lam[e]
+                coef[b, (COEF_DM_INV + 3 * r + c) * LANES + ln] = d
+        coef[b, COEF_TWO_MU * LANES + ln] = 2.0 * mu[e]
+        coef[b, COEF_LAM * LANES + ln] = lam[e]
 
 
 @njit(cache=True, error_model="numpy")
@@ -95,7 +97,7 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
 def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_buf,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             node_seg, node_seg_b, node_w, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
-            Dm_inv_eff, coef, q_ws, F_work, H_work, force, b_work, act, centers, spine, acc):
+            Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force, b_work, act, centers, spine, acc):
     """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
 
     act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k (rows past the last repeat
@@ -106,7 +108,8 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     (M + dt D)_ff over the free nodes ``perm`` (``FEMSystem.solver``); nodes not
     in ``perm`` are held (v = 0).  node_seg, node_seg_b, node_w (n_nodes,): a node's friction
     frame is the spine (1 - w) spine[a] + w spine[b], normalized (``body.spine_interpolation``:
-    the tangent at the node's own place on the body); seg_ptr/seg_nodes: CSR of each segment's nodes.  Work arrays are
+    the tangent at the node's own place on the body); seg_ptr/seg_nodes: CSR of each segment's nodes.
+    inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets.  Work arrays are
     overwritten; ``acc`` accumulates statistics (``step_status``).
     """
     g = phys[GRAVITY]
@@ -127,7 +130,7 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
                     act[i, j] = row[i, j]
             active_coefficients(Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, row, 1.0, volume, Dm_inv_eff, coef)
         force[:, :] = 0.0
-        elastic_forces(x, tets, Dm_inv_eff, coef, q_ws, F_work, H_work, force)
+        elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force)
         for k in range(n_free):
             i = perm[k]
             force[i, 1] -= mass[i] * g  # eq. 14: the gravity force M g (PAPER-NOTES)
@@ -137,6 +140,19 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
+            # a node clear of the terrain at both ends of its step: ``advance_point``'s no-contact case
+            # with its arithmetic, bit for bit (as in ``fem.myriapod.advance_chain``)
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+                    if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                        status = NONFINITE
+                    elif vx * vx + vy * vy + vz * vz > max_speed2:
+                        status = RUNAWAY_SPEED
+                    continue
             sa = node_seg[i]
             sb = node_seg_b[i]
             w = node_w[i]
@@ -146,7 +162,7 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
             nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
             if nrm > 0.0:
                 sx, sy, sz = sx / nrm, sy / nrm, sz / nrm
-            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], sx, sy, sz, dt, terr_kind, terr,
+            touching, st = advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr,
                                          fric_model, fric, r_n, r_t,
                                          contact_dist, phys[MAX_PEN], max_speed2, acc, False, 0.0, 0.0, 0.0)
             n_contact += touching

@@ -24,12 +24,17 @@ Conventions
   e = b * LANES + l sits at [b, r * LANES + l].  (With one row per entry and
   all tets in a row, the row offsets are run-time values and LLVM gives up:
   "too many memory checks needed"; inside a block they are constants.)  Arrays:
-  ``coef`` (n_blocks, 11 LANES) packs -V Dm^-1 (entry (r, c) in row 3 r + c),
-  2 mu (row 9) and lam (row 10), built by ``pack_tet_coefficients``; ``q_ws``
+  ``coef`` (n_blocks, N_COEF LANES) packs -V Dm^-1 (entry (r, c) in row 3 r + c),
+  2 mu (row 9), lam (row 10) and Dm^-1 itself (entry (r, c) in row 11 + 3 r + c),
+  built by ``pack_tet_coefficients``; ``q_ws``
   (n_blocks, 4 LANES) each tet's rotation as a quaternion (w, x, y, z), kept
   between steps; ``F_work`` (n_blocks, 9 LANES) and ``H_work``
-  (n_blocks, 10 LANES) are scratch.  ``new_tet_workspace`` allocates them, with
-  the padding lanes of the last block set to an inert identity tet.
+  (n_blocks, N_H LANES) are scratch: H rows 3 k + i hold component i of the
+  force on local node k + 1, rows 10 + i that on local node 0 (eq. 10: minus
+  the sum of the other three), row 9 the rotation's convergence measure.
+  ``new_tet_workspace`` allocates them, with the padding lanes of the last
+  block set to an inert identity tet.  ``node_incidence`` lists each node's
+  entries of H, for ``elastic_forces_gathered``.
 
 Active strain (muscles)
 -----------------------
@@ -79,6 +84,15 @@ from bench_myriapoda.world.terrain_kernels import signed_distance, surface_norma
 
 # Tets per block of the structure-of-arrays layout (a multiple of the SIMD width).
 LANES = 16
+# Rows of the blocked per-tet constants ``coef`` (module docstring).
+COEF_TWO_MU = 9
+COEF_LAM = 10
+COEF_DM_INV = 11
+N_COEF = 20
+# Rows of the blocked per-tet scratch ``H_work`` (module docstring).
+H_HH = 9
+H_NODE0 = 10
+N_H = 13
 
 # Status codes returned by ``advance``.
 STATUS_OK = 0
@@ -646,7 +660,7 @@ def new_tet_workspace(n_tets):
     q_ws (n_blocks, 4 LANES) starts at the identity rotation; F_work
     (n_blocks, 9 LANES) at F = I, so that the padding lanes past n_tets stay an
     inert, converged identity tet (their ``coef`` is zero); H_work
-    (n_blocks, 10 LANES) is zero.
+    (n_blocks, N_H LANES) is zero.
     """
     nb = n_tet_blocks(n_tets)
     q_ws = np.zeros((nb, 4 * LANES))
@@ -654,8 +668,34 @@ def new_tet_workspace(n_tets):
     F_work = np.zeros((nb, 9 * LANES))
     for r in (0, 4, 8):
         F_work[:, r * LANES:(r + 1) * LANES] = 1.0
-    H_work = np.zeros((nb, 10 * LANES))
+    H_work = np.zeros((nb, N_H * LANES))
     return q_ws, F_work, H_work
+
+
+def node_incidence(tets, n_nodes):
+    """Each node's force entries in ``H_work``, for ``elastic_forces_gathered``.
+
+    tets: (n_tets, 4); returns (ptr (n_nodes + 1,), off (4 n_tets,)), uint64: node
+    i's entries are off[ptr[i]:ptr[i + 1]], ascending in tet index, each the flat
+    index into H_work of the x component of that tet's force on the node (y and
+    z follow LANES and 2 LANES further on).  The tet order is the order in which
+    ``_scatter_pass`` adds into the node, so the gathered sums are bit for bit
+    the scattered ones.
+    """
+    tets = np.asarray(tets, dtype=np.int64)
+    n_t = len(tets)
+    e = np.repeat(np.arange(n_t, dtype=np.int64), 4)
+    k = np.tile(np.arange(4, dtype=np.int64), n_t)
+    node = tets.ravel()
+    order = np.lexsort((e, node))  # by node, then tet
+    ptr = np.zeros(n_nodes + 1, dtype=np.int64)
+    np.add.at(ptr, node + 1, 1)
+    ptr = np.cumsum(ptr)
+    e, k = e[order], k[order]
+    b = e // LANES
+    row = np.where(k == 0, H_NODE0, 3 * (k - 1))
+    off = b * (N_H * LANES) + row * LANES + (e - b * LANES)
+    return ptr.astype(np.uint64), off.astype(np.uint64)
 
 
 @njit(cache=True, error_model="numpy")
@@ -663,19 +703,25 @@ def pack_tet_coefficients(Dm_inv, vol, mu, lam, coef):
     """Pack the per-tet constants of the force pass into the blocked layout.
 
     Dm_inv: (n_tets, 3, 3) [1/m] (rest or active-effective); vol (n_tets,) [m^3];
-    mu, lam (n_tets,) [Pa].  Overwrites coef: (n_blocks, 11 LANES): row 3 r + c
-    holds -vol Dm_inv[:, r, c] [m^2], row 9 holds 2 mu, row 10 lam [Pa]; padding
-    lanes are zero.
+    mu, lam (n_tets,) [Pa].  Overwrites coef: (n_blocks, N_COEF LANES): row 3 r + c
+    holds -vol Dm_inv[:, r, c] [m^2], row 9 holds 2 mu, row 10 lam [Pa], row
+    11 + 3 r + c Dm_inv[:, r, c] [1/m]; padding lanes are zero but for an identity
+    Dm_inv (their F stays the identity of ``new_tet_workspace``).
     """
     coef[:, :] = 0.0
+    nb = coef.shape[0]
+    for l in range(LANES):
+        for r in range(3):
+            coef[nb - 1, (COEF_DM_INV + 4 * r) * LANES + l] = 1.0
     for e in range(Dm_inv.shape[0]):
         b = e // LANES
         l = e - b * LANES
         for r in range(3):
             for c in range(3):
                 coef[b, (3 * r + c) * LANES + l] = -vol[e] * Dm_inv[e, r, c]
-        coef[b, 9 * LANES + l] = 2.0 * mu[e]
-        coef[b, 10 * LANES + l] = lam[e]
+                coef[b, (COEF_DM_INV + 3 * r + c) * LANES + l] = Dm_inv[e, r, c]
+        coef[b, COEF_TWO_MU * LANES + l] = 2.0 * mu[e]
+        coef[b, COEF_LAM * LANES + l] = lam[e]
 
 
 # --------------------------------------------------------------------------------------
@@ -734,11 +780,12 @@ def _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
                         r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l):
     """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign).
 
-    Row 3 k + i of H holds component i of the force on local node k + 1.
+    Row 3 k + i of H holds component i of the force on local node k + 1, row
+    H_NODE0 + i that on local node 0, minus the sum of the three (eq. 10).
     """
     L = LANES
     (p00, p01, p02, p10, p11, p12, p20, p21, p22, _J) = _fcr_stress(
-        f00, f01, f02, f10, f11, f12, f20, f21, f22, coef[b, 9 * L + l], coef[b, 10 * L + l],
+        f00, f01, f02, f10, f11, f12, f20, f21, f22, coef[b, COEF_TWO_MU * L + l], coef[b, COEF_LAM * L + l],
         r00, r01, r02, r10, r11, r12, r20, r21, r22)
     a00, a01, a02 = coef[b, l], coef[b, L + l], coef[b, 2 * L + l]
     a10, a11, a12 = coef[b, 3 * L + l], coef[b, 4 * L + l], coef[b, 5 * L + l]
@@ -752,61 +799,114 @@ def _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
     H[b, 6 * L + l] = p00 * a20 + p01 * a21 + p02 * a22
     H[b, 7 * L + l] = p10 * a20 + p11 * a21 + p12 * a22
     H[b, 8 * L + l] = p20 * a20 + p21 * a21 + p22 * a22
+    # eq. 10: the four forces of a tet sum to zero.  Stored negated, so that adding it is
+    # subtracting the sum (x - y is x + (-y) in IEEE arithmetic): as ``_scatter_pass``
+    H[b, H_NODE0 * L + l] = -(H[b, l] + H[b, 3 * L + l] + H[b, 6 * L + l])
+    H[b, (H_NODE0 + 1) * L + l] = -(H[b, L + l] + H[b, 4 * L + l] + H[b, 7 * L + l])
+    H[b, (H_NODE0 + 2) * L + l] = -(H[b, 2 * L + l] + H[b, 5 * L + l] + H[b, 8 * L + l])
 
 
 @njit(cache=True, error_model="numpy")
-def _deformation_pass(x, tets, Dm_inv, F):
-    """F of every tet into the blocked scratch F (n_blocks, 9 LANES) (overwritten)."""
+def _edge_pass(x, tets, F):
+    """Edge matrix Ds = [x1 - x0, x2 - x0, x3 - x0] of every tet (eq. 2) into the blocked
+    scratch F (n_blocks, 9 LANES) (overwritten for tets < n_tets; ``_rotation_stress_pass``
+    turns it into F = Ds Dm^-1 in place)."""
     L = LANES
     for e in range(tets.shape[0]):
         b = e // L
         l = e - b * L
-        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
-        F[b, l] = f00
-        F[b, L + l] = f01
-        F[b, 2 * L + l] = f02
-        F[b, 3 * L + l] = f10
-        F[b, 4 * L + l] = f11
-        F[b, 5 * L + l] = f12
-        F[b, 6 * L + l] = f20
-        F[b, 7 * L + l] = f21
-        F[b, 8 * L + l] = f22
+        # unsigned node ids: numba tests every signed index for wrap-around (ids are >= 0)
+        i0, i1, i2, i3 = np.uint64(tets[e, 0]), np.uint64(tets[e, 1]), np.uint64(tets[e, 2]), np.uint64(tets[e, 3])
+        x0 = x[i0, 0]
+        y0 = x[i0, 1]
+        z0 = x[i0, 2]
+        F[b, l] = x[i1, 0] - x0
+        F[b, L + l] = x[i2, 0] - x0
+        F[b, 2 * L + l] = x[i3, 0] - x0
+        F[b, 3 * L + l] = x[i1, 1] - y0
+        F[b, 4 * L + l] = x[i2, 1] - y0
+        F[b, 5 * L + l] = x[i3, 1] - y0
+        F[b, 6 * L + l] = x[i1, 2] - z0
+        F[b, 7 * L + l] = x[i2, 2] - z0
+        F[b, 8 * L + l] = x[i3, 2] - z0
 
 
 @njit(cache=True, error_model="numpy")
 def _rotation_stress_pass(F, coef, q, H):
-    """Two Newton rotation steps and the nodal forces of every tet, branch-free (vectorised).
+    """F = Ds Dm^-1, two Newton rotation steps and the nodal forces of every tet, branch-free (vectorised).
 
-    Overwrites q (n_blocks, 4 LANES) where both steps were valid, H rows 0-8 with
-    the nodal forces and H row 9 with the squared half-angle of the second step
-    (inf if a step was invalid); tets with H row 9 >= _NEWTON_TOL_HH need
-    ``_rotation_fixup``.
+    F holds the edge matrices Ds (``_edge_pass``) and is OVERWRITTEN with F, Dm^-1
+    read from ``coef``.  Overwrites q (n_blocks, 4 LANES) where both steps were
+    valid, H rows 0-8 and 10-12 with the nodal forces and H row 9 with the squared
+    half-angle of the second step (inf if a step was invalid); tets with H row 9
+    >= _NEWTON_TOL_HH need ``_rotation_fixup``.
+
+    Each block goes through three short loops over its lanes (first step; second
+    step and acceptance; stress and forces) rather than one long one.  One tet's
+    whole chain is some 500 dependent vector instructions, more than the
+    processor's reorder window, so in a single loop the next lanes could not start
+    until the last ones were nearly done; each short loop's lanes overlap.  The
+    first step's quaternion and its ok flag wait in H rows 0-4, which the third
+    loop overwrites.  The arithmetic, and so every bit of the result, is that of
+    the single loop.
     """
     L = LANES
+    M = COEF_DM_INV * L
     for b in range(F.shape[0]):
+        for l in range(L):
+            # F = Ds Dm^-1 (eqs. 2-4), in place of Ds (``_edge_pass``)
+            d00, d01, d02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+            d10, d11, d12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+            d20, d21, d22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+            m00, m01, m02 = coef[b, M + l], coef[b, M + L + l], coef[b, M + 2 * L + l]
+            m10, m11, m12 = coef[b, M + 3 * L + l], coef[b, M + 4 * L + l], coef[b, M + 5 * L + l]
+            m20, m21, m22 = coef[b, M + 6 * L + l], coef[b, M + 7 * L + l], coef[b, M + 8 * L + l]
+            f00 = d00 * m00 + d01 * m10 + d02 * m20
+            f01 = d00 * m01 + d01 * m11 + d02 * m21
+            f02 = d00 * m02 + d01 * m12 + d02 * m22
+            f10 = d10 * m00 + d11 * m10 + d12 * m20
+            f11 = d10 * m01 + d11 * m11 + d12 * m21
+            f12 = d10 * m02 + d11 * m12 + d12 * m22
+            f20 = d20 * m00 + d21 * m10 + d22 * m20
+            f21 = d20 * m01 + d21 * m11 + d22 * m21
+            f22 = d20 * m02 + d21 * m12 + d22 * m22
+            F[b, l] = f00
+            F[b, L + l] = f01
+            F[b, 2 * L + l] = f02
+            F[b, 3 * L + l] = f10
+            F[b, 4 * L + l] = f11
+            F[b, 5 * L + l] = f12
+            F[b, 6 * L + l] = f20
+            F[b, 7 * L + l] = f21
+            F[b, 8 * L + l] = f22
+            aw, ax, ay, az, _hh1, ok1 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                                     q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+            H[b, l] = aw
+            H[b, L + l] = ax
+            H[b, 2 * L + l] = ay
+            H[b, 3 * L + l] = az
+            H[b, 4 * L + l] = 1.0 if ok1 else 0.0
         for l in range(L):
             f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
             f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
             f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-            qw, qx, qy, qz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
-            aw, ax, ay, az, _hh1, ok1 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                     qw, qx, qy, qz)
             bw, bx, by, bz, hh2, ok2 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                    aw, ax, ay, az)
+                                                    H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
             bw, bx, by, bz = _renormalize(bw, bx, by, bz)
-            ok = ok1 & ok2
-            qw = bw if ok else qw
-            qx = bx if ok else qx
-            qy = by if ok else qy
-            qz = bz if ok else qz
-            q[b, l] = qw
-            q[b, L + l] = qx
-            q[b, 2 * L + l] = qy
-            q[b, 3 * L + l] = qz
-            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
+            ok = (H[b, 4 * L + l] != 0.0) & ok2
+            q[b, l] = bw if ok else q[b, l]
+            q[b, L + l] = bx if ok else q[b, L + l]
+            q[b, 2 * L + l] = by if ok else q[b, 2 * L + l]
+            q[b, 3 * L + l] = bz if ok else q[b, 3 * L + l]
+            H[b, H_HH * L + l] = hh2 if ok else np.inf
+        for l in range(L):
+            f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+            f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+            f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(q[b, l], q[b, L + l], q[b, 2 * L + l],
+                                                                       q[b, 3 * L + l])
             _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
                                 r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
-            H[b, 9 * L + l] = hh2 if ok else np.inf
 
 
 @njit(cache=True, error_model="numpy")
@@ -815,14 +915,14 @@ def _rotation_fixup(n_tets, F, coef, q, H):
 
     For each tet e < n_tets with not (H row 9 < _NEWTON_TOL_HH) (also NaN):
     ``_fcr_rotation`` from its current q (more Newton steps, then the SVD), and its
-    forces recomputed.  Overwrites q and H rows 0-8 of those tets.
+    forces recomputed.  Overwrites q and H rows 0-8, 10-12 of those tets.
     """
     L = LANES
     count = 0
     for e in range(n_tets):
         b = e // L
         l = e - b * L
-        if H[b, 9 * L + l] < _NEWTON_TOL_HH:
+        if H[b, H_HH * L + l] < _NEWTON_TOL_HH:
             continue
         count += 1
         f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
@@ -847,7 +947,8 @@ def _scatter_pass(tets, H, f):
     for e in range(tets.shape[0]):
         b = e // L
         l = e - b * L
-        i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
+        # unsigned node ids: no wrap-around test per index (as in ``_edge_pass``)
+        i0, i1, i2, i3 = np.uint64(tets[e, 0]), np.uint64(tets[e, 1]), np.uint64(tets[e, 2]), np.uint64(tets[e, 3])
         h00, h10, h20 = H[b, l], H[b, L + l], H[b, 2 * L + l]
         h01, h11, h21 = H[b, 3 * L + l], H[b, 4 * L + l], H[b, 5 * L + l]
         h02, h12, h22 = H[b, 6 * L + l], H[b, 7 * L + l], H[b, 8 * L + l]
@@ -872,16 +973,57 @@ def elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f):
 
     x: (n_nodes, 3) [m]; tets: (n_tets, 4); Dm_inv: (n_tets, 3, 3) [1/m] (rest, or
     active-effective ``Dm^-1 A^-1``); coef: from ``pack_tet_coefficients`` with the
-    same Dm_inv; q_ws: per-tet rotation warm start (any non-zero quaternions),
+    same Dm_inv (the pass reads Dm^-1 from its blocked copy in ``coef``, rows
+    COEF_DM_INV..; the argument stays so that the callers' signature does); q_ws: per-tet rotation warm start (any non-zero quaternions),
     OVERWRITTEN with the current rotations; F_work, H_work: scratch.  The three
     come from ``new_tet_workspace`` (blocked layout, module docstring).
     ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of tets that needed
     the slow path (``_rotation_fixup``).
     """
-    _deformation_pass(x, tets, Dm_inv, F_work)
+    _edge_pass(x, tets, F_work)
     _rotation_stress_pass(F_work, coef, q_ws, H_work)
     n_slow = _rotation_fixup(tets.shape[0], F_work, coef, q_ws, H_work)
     _scatter_pass(tets, H_work, f)
+    return n_slow
+
+
+@njit(cache=True, error_model="numpy")
+def _gather_pass(inc_ptr, inc_off, H, f):
+    """Accumulate the per-tet nodal forces H into f (n_nodes, 3) node by node (eqs. 10-11).
+
+    inc_ptr, inc_off: ``node_incidence``.  Each node's sum runs in registers
+    over its tets in ascending order, the order ``_scatter_pass`` adds them in
+    memory: the same result, bit for bit, without the scatter's chain of
+    dependent loads and stores through memory where consecutive tets share a node.
+    """
+    Hf = H.reshape(H.size)
+    L1 = np.uint64(LANES)
+    L2 = np.uint64(2 * LANES)
+    for i in range(f.shape[0]):
+        s0 = f[i, 0]
+        s1 = f[i, 1]
+        s2 = f[i, 2]
+        for a in range(inc_ptr[i], inc_ptr[i + 1]):
+            o = inc_off[a]
+            s0 += Hf[o]
+            s1 += Hf[o + L1]
+            s2 += Hf[o + L2]
+        f[i, 0] = s0
+        f[i, 1] = s1
+        f[i, 2] = s2
+
+
+@njit(cache=True, error_model="numpy")
+def elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, f):
+    """``elastic_forces`` with the nodal sums gathered node by node (``node_incidence``
+    of ``tets``: inc_ptr, inc_off); the same result bit for bit, faster.
+
+    ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of slow-path tets.
+    """
+    _edge_pass(x, tets, F_work)
+    _rotation_stress_pass(F_work, coef, q_ws, H_work)
+    n_slow = _rotation_fixup(tets.shape[0], F_work, coef, q_ws, H_work)
+    _gather_pass(inc_ptr, inc_off, H_work, f)
     return n_slow
 
 
@@ -985,45 +1127,165 @@ def skyline_cholesky(first, ptr, val):
     return 0
 
 
+# Unsigned index constants for ``skyline_solve`` (numba gives unsigned indices no
+# wrap-around test; mixing a signed literal in would promote the index to float).
+_U1 = np.uint64(1)
+_U2 = np.uint64(2)
+_U3 = np.uint64(3)
+_U4 = np.uint64(4)
+_U5 = np.uint64(5)
+
+
 @njit(cache=True, error_model="numpy")
 def skyline_solve(first, ptr, L, b):
     """Solve L L^T y = b for three right-hand sides at once (x, y, z share the matrix).
 
-    L: Cholesky factor from ``skyline_cholesky``; b: (n, 3), overwritten with y.
+    L: Cholesky factor from ``skyline_cholesky``; b: (n, 3) C-contiguous,
+    overwritten with y.
+
+    Both sweeps take two rows per pass, and every entry of b sees exactly the
+    operations, in the order, of the one-row loops (forward: row i's sum over its
+    columns k ascending; backward, a column sweep: b[k] takes row i's update and
+    then row i - 1's), so the result is bit for bit theirs.  Two rows per pass
+    give two independent chains of dependent subtractions to overlap, and the
+    backward sweep reads and writes each b[k] once for both rows.  The inner
+    loops index a flat view of b with unsigned integers: numba adds a
+    negative-index wrap-around test to every signed index, which here cost as
+    much as the arithmetic.  (All indices are >= 0: ptr[i] - first[i] >= 0.)
     """
     n = first.shape[0]
-    # forward: L z = b (row-oriented)
-    for i in range(n):
-        fi = first[i]
-        pi = ptr[i]
-        s0 = b[i, 0]
-        s1 = b[i, 1]
-        s2 = b[i, 2]
-        for k in range(fi, i):
-            l = L[pi + k - fi]
-            s0 -= l * b[k, 0]
-            s1 -= l * b[k, 1]
-            s2 -= l * b[k, 2]
-        d = L[pi + i - fi]
-        b[i, 0] = s0 / d
-        b[i, 1] = s1 / d
-        b[i, 2] = s2 / d
-    # backward: L^T y = z (column sweep over the rows of L)
-    for i in range(n - 1, -1, -1):
-        fi = first[i]
-        pi = ptr[i]
-        d = L[pi + i - fi]
-        y0 = b[i, 0] / d
-        y1 = b[i, 1] / d
-        y2 = b[i, 2] / d
-        b[i, 0] = y0
-        b[i, 1] = y1
-        b[i, 2] = y2
-        for k in range(fi, i):
-            l = L[pi + k - fi]
-            b[k, 0] -= l * y0
-            b[k, 1] -= l * y1
-            b[k, 2] -= l * y2
+    bf = b.reshape(b.size)
+    # forward: L z = b (row-oriented), rows i and i + 1
+    i = 0
+    while i + 1 < n:
+        fa = first[i]
+        fb = first[i + 1]
+        oa = np.uint64(ptr[i] - fa)
+        ob = np.uint64(ptr[i + 1] - fb)
+        ri = np.uint64(3 * i)
+        a0 = bf[ri]
+        a1 = bf[ri + _U1]
+        a2 = bf[ri + _U2]
+        c0 = bf[ri + _U3]
+        c1 = bf[ri + _U4]
+        c2 = bf[ri + _U5]
+        # the columns only one of the two rows has (at most one of these loops runs), then the shared ones
+        for k in range(np.uint64(fa), np.uint64(min(fb, i))):
+            l = L[oa + k]
+            r = _U3 * k
+            a0 -= l * bf[r]
+            a1 -= l * bf[r + _U1]
+            a2 -= l * bf[r + _U2]
+        for k in range(np.uint64(fb), np.uint64(min(fa, i))):
+            l = L[ob + k]
+            r = _U3 * k
+            c0 -= l * bf[r]
+            c1 -= l * bf[r + _U1]
+            c2 -= l * bf[r + _U2]
+        for k in range(np.uint64(max(fa, fb)), np.uint64(i)):
+            la = L[oa + k]
+            lb = L[ob + k]
+            r = _U3 * k
+            z0 = bf[r]
+            z1 = bf[r + _U1]
+            z2 = bf[r + _U2]
+            a0 -= la * z0
+            a1 -= la * z1
+            a2 -= la * z2
+            c0 -= lb * z0
+            c1 -= lb * z1
+            c2 -= lb * z2
+        ui = np.uint64(i)
+        d = L[oa + ui]
+        a0 = a0 / d
+        a1 = a1 / d
+        a2 = a2 / d
+        bf[ri] = a0
+        bf[ri + _U1] = a1
+        bf[ri + _U2] = a2
+        if fb <= i:
+            l = L[ob + ui]
+            c0 -= l * a0
+            c1 -= l * a1
+            c2 -= l * a2
+        d = L[ob + ui + _U1]
+        bf[ri + _U3] = c0 / d
+        bf[ri + _U4] = c1 / d
+        bf[ri + _U5] = c2 / d
+        i += 2
+    if i < n:  # odd n: the last row alone
+        fa = first[i]
+        oa = np.uint64(ptr[i] - fa)
+        ri = np.uint64(3 * i)
+        a0 = bf[ri]
+        a1 = bf[ri + _U1]
+        a2 = bf[ri + _U2]
+        for k in range(np.uint64(fa), np.uint64(i)):
+            l = L[oa + k]
+            r = _U3 * k
+            a0 -= l * bf[r]
+            a1 -= l * bf[r + _U1]
+            a2 -= l * bf[r + _U2]
+        d = L[oa + np.uint64(i)]
+        bf[ri] = a0 / d
+        bf[ri + _U1] = a1 / d
+        bf[ri + _U2] = a2 / d
+    # backward: L^T y = z (column sweep over the rows of L), rows i and j = i - 1
+    i = n - 1
+    while i >= 1:
+        j = i - 1
+        fa = first[i]
+        fb = first[j]
+        oa = np.uint64(ptr[i] - fa)
+        ob = np.uint64(ptr[j] - fb)
+        ui = np.uint64(i)
+        uj = np.uint64(j)
+        ri = _U3 * ui
+        rj = _U3 * uj
+        d = L[oa + ui]
+        ya0 = bf[ri] / d
+        ya1 = bf[ri + _U1] / d
+        ya2 = bf[ri + _U2] / d
+        bf[ri] = ya0
+        bf[ri + _U1] = ya1
+        bf[ri + _U2] = ya2
+        if fa <= j:
+            l = L[oa + uj]
+            bf[rj] -= l * ya0
+            bf[rj + _U1] -= l * ya1
+            bf[rj + _U2] -= l * ya2
+        d = L[ob + uj]
+        yb0 = bf[rj] / d
+        yb1 = bf[rj + _U1] / d
+        yb2 = bf[rj + _U2] / d
+        bf[rj] = yb0
+        bf[rj + _U1] = yb1
+        bf[rj + _U2] = yb2
+        for k in range(np.uint64(fa), np.uint64(min(fb, j))):
+            l = L[oa + k]
+            r = _U3 * k
+            bf[r] -= l * ya0
+            bf[r + _U1] -= l * ya1
+            bf[r + _U2] -= l * ya2
+        for k in range(np.uint64(fb), np.uint64(min(fa, j))):
+            l = L[ob + k]
+            r = _U3 * k
+            bf[r] -= l * yb0
+            bf[r + _U1] -= l * yb1
+            bf[r + _U2] -= l * yb2
+        for k in range(np.uint64(max(fa, fb)), uj):
+            la = L[oa + k]
+            lb = L[ob + k]
+            r = _U3 * k
+            bf[r] = (bf[r] - la * ya0) - lb * yb0
+            bf[r + _U1] = (bf[r + _U1] - la * ya1) - lb * yb1
+            bf[r + _U2] = (bf[r + _U2] - la * ya2) - lb * yb2
+        i -= 2
+    if i == 0:  # odd n: row 0 alone (it has no column left of the diagonal)
+        d = L[ptr[0]]
+        b[0, 0] = b[0, 0] / d
+        b[0, 1] = b[0, 1] / d
+        b[0, 2] = b[0, 2] / d
 
 
 # --------------------------------------------------------------------------------------
@@ -1081,7 +1343,7 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
     fixed node ids) of D_fp [N s/m]; b: (n_free, 3) scratch.
     """
     for k in range(perm.shape[0]):
-        i = perm[k]
+        i = np.uint64(perm[k])  # node ids are >= 0: no wrap-around tests (``skyline_solve``)
         m = mass[i]
         b0 = m * v[i, 0] + dt * f[i, 0]
         b1 = m * v[i, 1] + dt * f[i, 1]
@@ -1097,14 +1359,14 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
         b[k, 2] = b2
     skyline_solve(sky_first, sky_ptr, sky_L, b)
     for k in range(perm.shape[0]):
-        i = perm[k]
+        i = np.uint64(perm[k])
         v[i, 0] = b[k, 0]
         v[i, 1] = b[k, 1]
         v[i, 2] = b[k, 2]
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, tets, Dm_inv, coef, mass, gravity, f_ext, dt, n_steps,
+def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_steps,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             fixed, pf_ptr, pf_col, pf_val,
             contact, terrain_kind, terrain_params, mu_friction, v_limit,
@@ -1119,7 +1381,8 @@ def advance(x, v, tets, Dm_inv, coef, mass, gravity, f_ext, dt, n_steps,
     speed above v_limit).
 
     Inputs: x, v (n_nodes, 3) [m], [m/s], OVERWRITTEN with the new state; tets,
-    Dm_inv (rest or active-effective), coef, q_ws as in ``elastic_forces``;
+    inc_ptr, inc_off (``node_incidence``), coef, q_ws as in
+    ``elastic_forces_gathered``;
     mass (n_nodes,) [kg]; gravity (3,) [m/s^2] (the force is M g, PAPER-NOTES);
     f_ext (n_nodes, 3) [N], constant over the call; dt [s];
     perm/sky_*/fp_*: see ``semi_implicit_velocity`` (built for this dt);
@@ -1142,7 +1405,7 @@ def advance(x, v, tets, Dm_inv, coef, mass, gravity, f_ext, dt, n_steps,
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     for step in range(n_steps):
         f_work[:, :] = 0.0
-        elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, f_work)
         for a in range(n_fixed):
             p = fixed[a]
             f_fixed[a, 0] += f_work[p, 0]

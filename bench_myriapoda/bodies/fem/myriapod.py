@@ -50,6 +50,7 @@ import numpy as np
 from numba import njit
 
 from ...world.terrain import terrain_from_scenario
+from ...world.terrain_kernels import signed_distance
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
@@ -58,7 +59,7 @@ from ..placement import place_points
 from ..segment_chain import SupportedSegments
 from ..scene import FEM_BLOCK_SURFACE, FEM_SURFACE, Scene, compact, tet_boundary_faces
 from . import kernels as FK
-from .kernels import elastic_forces, semi_implicit_velocity
+from .kernels import elastic_forces_gathered, semi_implicit_velocity
 from .mesh import box_grid, segment_cells, signed_volumes
 from .system import FEMSystem
 
@@ -134,15 +135,16 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
 
 
 @njit(cache=True, error_model="numpy")
-def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
+def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
                   perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                   block_nodes, node_spine, att_nodes, att_block, att_target, support,
                   gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
                   f_work, b_work, cent, spine, acc):
     """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
 
-    x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, Dm_inv,
-    coef, q_ws (UPDATED), F_work, H_work as ``fem.kernels.elastic_forces``;
+    x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
+    inc_off, coef, q_ws (UPDATED), F_work, H_work as
+    ``fem.kernels.elastic_forces_gathered``;
     perm, sky_*, fp_* the factor of (M + dt D) with no fixed node
     (``FEMSystem.solver``).  block_nodes (n_blocks, k) node ids of each block;
     node_spine (n_nodes,) the block whose spine a node's friction uses;
@@ -167,7 +169,7 @@ def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
     for step in range(n_steps):
         status = S.OK
         f_work[:, :] = 0.0
-        elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, f_work)
         for i in range(n_nodes):
             m = mass[i]
             f_work[i, 0] += m * gx
@@ -196,8 +198,24 @@ def advance_chain(x, v, mass, tets, Dm_inv, coef, q_ws, F_work, H_work,
                 spine[s, 0], spine[s, 1], spine[s, 2] = 1.0, 0.0, 0.0
         n_contact = 0
         for i in range(n_nodes):
+            # A node clear of the terrain at both ends of its step (phi >= the contact distance now,
+            # phi >= 0 after x += dt v) is what ``advance_point`` reduces to for it: no friction, no
+            # collision, x += dt v and the blow-up checks.  Done here with the same arithmetic (so
+            # bit for bit the same), it skips the call's cost for the walking body's many nodes in the
+            # air; any other node (also a NaN distance) goes through ``advance_point``.
+            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
+            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+                    if not math.isfinite(qx + qy + qz + vx + vy + vz):
+                        status = S.NONFINITE
+                    elif vx * vx + vy * vy + vz * vz > vmax2:
+                        status = S.RUNAWAY_SPEED
+                    continue
             s = node_spine[i]
-            touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1], spine[s, 2],
+            touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2],
                                          dt, terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
                                          vmax2, acc, False, 0.0, 0.0, 0.0)
             n_contact += touching
@@ -300,7 +318,8 @@ class BodyFEMChain(SupportedSegments):
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
         f, s = self.fem, self.solver
-        return advance_chain(self.x, self.v, f.mass, f.tets, f.Dm_inv_eff, f.coef, f._q_ws, f._F_work, f._H_work,
+        return advance_chain(self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
+                             f._H_work,
                              s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                              self.block_nodes, self.node_spine, self.att_nodes, self.att_block,
                              self.att_target, self.support, self.gravity, self.terr_kind, self.terr,

@@ -148,7 +148,7 @@ class FEMSystem:
             raise ValueError("every node must belong to a tet with positive mass")
         self.D = damping_matrix(self.tets, self.vol, self.gamma, n)
 
-        self.coef = np.zeros((K.n_tet_blocks(m), 11 * K.LANES))
+        self.coef = np.zeros((K.n_tet_blocks(m), K.N_COEF * K.LANES))
         K.pack_tet_coefficients(self.Dm_inv_eff, self.vol, self.mu, self.lam, self.coef)
 
         self.x = self.X.copy()
@@ -156,6 +156,8 @@ class FEMSystem:
         # Per-tet rotations (quaternions) that warm-start the corotational Newton
         # solve, and the blocked scratch of the element pass.
         self._q_ws, self._F_work, self._H_work = K.new_tet_workspace(m)
+        # each node's entries of H_work, for the node-by-node force sums of the step
+        self._inc_ptr, self._inc_off = K.node_incidence(self.tets, n)
         self._f_work = np.zeros((n, 3))
         self._f_ext_zero = np.zeros((n, 3))
         self._solvers: dict[tuple[bytes, float], _Solver] = {}
@@ -228,7 +230,7 @@ class FEMSystem:
         else:
             contact, kind, params = True, int(terrain[0]), np.ascontiguousarray(terrain[1], dtype=np.float64)
         steps, status = K.advance(
-            self.x, self.v, self.tets, self.Dm_inv_eff, self.coef, self.mass,
+            self.x, self.v, self.tets, self._inc_ptr, self._inc_off, self.coef, self.mass,
             g, fe, float(dt), int(n_steps),
             s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
             s.fixed, s.pf_ptr, s.pf_col, s.pf_val,
