@@ -54,11 +54,11 @@ mu_f = 0.64) and the runs stay short: half a period of ramp, one period of warm-
     0.001), 9-14 % above the reference of the body's width and 10.6 % apart from the lattice at
     ratio 10.  The snake's fem body now lumps an eighth of every grid cell's mass on each corner
     (``body.mass_lumping = "cells"``).  Ratio 5 at dt 1/3000, 1/6000, 1/12000 s: per-tet masses
-    0.432, 0.418, 0.412, per-cell 0.419, 0.412, 0.409 (both first order in dt, limit 0.405; the
+    0.432, 0.418, 0.412, per-cell 0.419, 0.412, 0.409 (both first order in dt, extrapolated limit 0.405; the
     lattice 0.397 and 0.396 at its default 1/7500 s and half of it).  What remains at 1/3000 s is
     that dt error (+3.5 %) and the coarse section (2 x 2 cells, +2.3 %): with 4 x 4 x 4 cells per
     segment ratio 5 gives 0.407 and 0.402 at 1/6000 and 1/12000 s with per-tet masses, 0.410 and
-    0.403 per cell, both toward 0.396, the lattice's speed (a finer mesh costs 8 x the tets and a
+    0.403 per cell, both extrapolated to 0.396, the lattice's speed (a finer mesh costs 8 x the tets and a
     smaller step: not the default).
     Not the section's roll: the fem's sections roll less than the lattice's (roll_max_deg at ratio
     5: 0.49 against 1.24, at ratio 10: 0.72 against 1.66): computed from the parameters, the fem
