@@ -189,3 +189,52 @@ def test_unloadable_surface_is_bad_input(capsys, tmp_path, monkeypatch):
                  f"body.mesh={tmp_path / 'missing.stl'}"])
     err = capsys.readouterr().err
     assert code == 2 and "body.mesh" in err and "missing.stl" in err
+
+
+@pytest.mark.parametrize("tets_per_cell", [5, 6])
+@pytest.mark.parametrize("shared_faces", [True, False])
+def test_cell_lumped_mass_is_the_dual_cell_mass_whatever_the_split(tets_per_cell, shared_faces):
+    from bench_myriapoda.bodies.fem import mesh as M
+    h = 0.01  # 2 x 2 x 2 cells of 0.01 m per 0.02 m segment
+    nodes, tets, _ = M.chain_grid(3, 2 * h, (2 * h, 2 * h), 3, "nodes", tets_per_cell, shared_faces=shared_faces)
+    vol = M.signed_volumes(nodes, tets)
+    rho = np.full(len(tets), 160.0)
+    m = M.cell_lumped_mass(tets, vol, rho, tets_per_cell, len(nodes))
+    assert m.sum() == pytest.approx(float(rho @ vol), rel=1e-12)
+    np.testing.assert_allclose(m @ nodes / m.sum(), (rho * vol) @ nodes[tets].mean(axis=1) / (rho @ vol), atol=1e-15)
+    # each node carries the mass of its dual cell: 160 h^3 times 1/2 per grid boundary the node lies on
+    # (the two end faces of a segment are boundaries too when the segments do not share them)
+    lo, hi = nodes.min(axis=0), nodes.max(axis=0)
+    x_bound = np.isclose(nodes[:, 0] % (2 * h), 0.0, atol=1e-12) | np.isclose(nodes[:, 0] % (2 * h), 2 * h)
+    on = [np.isclose(nodes[:, a], lo[a]) | np.isclose(nodes[:, a], hi[a]) for a in range(3)]
+    if not shared_faces:
+        on[0] = x_bound
+    want = 160.0 * h ** 3 * 0.5 ** np.sum(on, axis=0)
+    np.testing.assert_allclose(m, want, rtol=1e-12)
+    # eq. 12's per-tet lumping of the same mesh is not uniform (the five-tet split 5:1 within a cell)
+    per_tet = np.zeros(len(nodes))
+    FK.lumped_mass(tets, vol, rho, per_tet)
+    assert per_tet.sum() == pytest.approx(m.sum(), rel=1e-12)
+    assert np.ptp(per_tet / want) > 1.0
+    with pytest.raises(ValueError, match="cell by cell"):
+        M.cell_lumped_mass(np.roll(tets, 1, axis=0), np.roll(vol, 1), rho, tets_per_cell, len(nodes))
+
+
+def test_snake_fem_body_takes_the_cell_lumped_masses():
+    case = resolve_case("snake", "fem", "flat", overrides=["creature.segments=4"])
+    assert case.body.mass_lumping == "cells"
+    body = BodyFEM(case)
+    m = body.system.mass
+    assert m.sum() == pytest.approx(case.creature.mass_kg, rel=1e-12)
+    interior = np.all((body.rest > body.rest.min(axis=0) + 1e-9) & (body.rest < body.rest.max(axis=0) - 1e-9), axis=1)
+    assert np.ptp(m[interior]) <= 1e-12 * m.max()  # every interior node carries one cell's mass
+
+
+def test_cell_lumping_of_a_surface_mesh_is_bad_input(capsys, tmp_path, monkeypatch):
+    from bench_myriapoda.cli import main
+    monkeypatch.chdir(tmp_path)
+    code = main(["run", "--creature", "worm", "--body", "fem", "--scenario", "flat", "--set", "body.mesh=capsule",
+                 "--set", "body.mass_lumping=cells"])
+    err = capsys.readouterr().err
+    assert code == 2 and "body.mass_lumping" in err and "grid" in err
+    assert not any(tmp_path.iterdir())  # nothing written

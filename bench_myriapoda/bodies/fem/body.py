@@ -36,7 +36,7 @@ from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
-from .mesh import chain_grid, signed_volumes, tetrahedralize_surface
+from .mesh import cell_lumped_mass, chain_grid, signed_volumes, tetrahedralize_surface
 from .system import DT_PAPER, FEMSystem
 
 FROM_CREATURE = -1.0
@@ -55,6 +55,10 @@ class FEMConfig:
     resolution_unit: str = rng("nodes", choices=("nodes", "cells"),
                                doc="the paper's '3 x 3 x 3 resolution' read as nodes (default) or cells")
     tets_per_cell: int = rng(6, choices=(5, 6), doc="tetrahedra per hexahedral cell")
+    mass_lumping: str = rng("tets", choices=("tets", "cells"),
+                            doc="nodal masses: 'tets' (a quarter of every tet's mass to each of its nodes, eq. 12) "
+                                "or 'cells' (an eighth of every hexahedral cell's mass to each corner: the "
+                                "dual-cell mass, independent of the tet split; mesh = 'grid' only)")
     mirror_split: bool = rng(True, doc="6 tets per cell: mirror the Kuhn split across the sagittal plane z = 0 so "
                                        "the body bends alike to the left and right (false: the plain Kuhn split, "
                                        "whose straight gait circles by about 6 degrees per cycle)")
@@ -78,6 +82,9 @@ class FEMConfig:
         if self.mesh not in ("grid", "capsule") and not os.path.isfile(self.mesh):
             raise InputError(self.mesh, "body.mesh", "no such file; use 'grid', 'capsule' or the path of a closed "
                                                      "surface mesh trimesh can load")
+        if self.mass_lumping == "cells" and self.mesh != "grid":
+            raise InputError("body", "body.mass_lumping", "'cells' needs body.mesh = 'grid' (a surface mesh has "
+                                                          "no hexahedral cells); use 'tets'")
         if self.mesh != "grid":
             missing = missing_mesh_packages()
             if missing:
@@ -167,8 +174,12 @@ class BodyFEM(NodeSegments):
         volume = float(np.sum(signed_volumes(nodes, tets)))
         rho = cfg.density_kg_m3 if cfg.density_kg_m3 > 0 else cre.mass_kg / volume
         self.density = rho
+        lumped = None
+        if cfg.mass_lumping == "cells":
+            lumped = cell_lumped_mass(tets, signed_volumes(nodes, tets), np.full(len(tets), rho),
+                                      cfg.tets_per_cell, len(nodes))
         self.system = sysm = FEMSystem(nodes, tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio, rho=rho,
-                                       gamma=cfg.damping_gamma)
+                                       gamma=cfg.damping_gamma, mass=lumped)
         self.rest = nodes
         self.tet_seg = np.ascontiguousarray(tet_seg)
         cen = nodes[tets].mean(axis=1)

@@ -106,6 +106,39 @@ def box_grid(size, cells, origin=(0.0, 0.0, 0.0), tets_per_cell=6, mirror_z=None
     return nodes, orient_tets(nodes, tets)
 
 
+def cell_lumped_mass(tets, vol, rho, tets_per_cell, n_nodes):
+    """Nodal masses of a structured grid lumped per hexahedral cell: (n_nodes,) [kg].
+
+    tets: (n_tets, 4) as ``box_grid`` / ``chain_grid`` return them, cell by cell (``tets_per_cell``
+    consecutive rows per cell); vol: (n_tets,) [m^3]; rho: (n_tets,) [kg/m^3].  Each cell's mass
+    (the sum of rho V over its tets) goes to its eight corners in equal shares, the lumped mass of a
+    trilinear hexahedron: every node carries the mass of its dual cell (interior nodes one cell's
+    worth, face nodes a half, edge nodes a quarter), whichever way the cell is split into tets.
+
+    Why (issue 11): the per-tet lumping (``kernels.lumped_mass``, eq. 12) inherits the split's
+    asymmetry.  The five-tet split gives the central tet (a third of the cell) to four alternate
+    corners, so a cell's corners get 5/24 or 1/24 of its mass; on the 2 x 2 section of the snake the
+    bottom nodes' masses then vary 10-fold along the belly.  A light belly node carries the same
+    share of the body's weight, and the per-node contact (``contact_kernels``) stops its sliding
+    whenever its speed is below mu times its normal impulse per unit mass, ~ mu g dt x (load / its
+    mass): the light nodes stick at slip speeds that a dual-cell mass would let slide.
+    Raises ValueError when a group of ``tets_per_cell`` rows does not span exactly 8 nodes.
+    """
+    tets = np.asarray(tets, dtype=np.int64)
+    n_cells, rest = divmod(len(tets), int(tets_per_cell))
+    if rest:
+        raise ValueError(f"{len(tets)} tets are not whole cells of {tets_per_cell}")
+    cell_mass = (np.asarray(rho, dtype=float) * np.asarray(vol, dtype=float)).reshape(n_cells, tets_per_cell).sum(1)
+    corners = np.sort(tets.reshape(n_cells, 4 * tets_per_cell), axis=1)
+    distinct = 1 + (np.diff(corners, axis=1) != 0).sum(axis=1)
+    if np.any(distinct != 8):
+        raise ValueError("tets are not grouped cell by cell (a group spans other than 8 nodes)")
+    m = np.zeros(int(n_nodes))
+    for c in range(n_cells):  # mesh construction only
+        m[np.unique(corners[c])] += cell_mass[c] / 8.0
+    return m
+
+
 def segment_cells(resolution, resolution_unit="nodes"):
     """Cells per segment (nx, ny, nz) from a resolution given in cells or in nodes per edge.
 

@@ -120,12 +120,13 @@ class FEMSystem:
     E [Pa], nu [-], rho [kg/m^3]: scalars or per-tet arrays; gamma: damping
     coefficient of eq. 13 [N s/m^4].  Defaults are the paper's presets.
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s], modified in place by ``advance``.
+    mass: (n_nodes,) lumped nodal masses [kg] in place of eq. 12's per-tet lumping (None: eq. 12).
     Fixed (Dirichlet) nodes: ``set_fixed(mask)``; their x and v are prescribed by
     the caller (write ``x[fixed_nodes]``, ``v[fixed_nodes]``) and during a call to
     ``advance`` they move with their velocity.
     """
 
-    def __init__(self, nodes, tets, *, E=E_PAPER, nu=NU_PAPER, rho=RHO_PAPER, gamma=GAMMA_PAPER):
+    def __init__(self, nodes, tets, *, E=E_PAPER, nu=NU_PAPER, rho=RHO_PAPER, gamma=GAMMA_PAPER, mass=None):
         self.X = np.array(nodes, dtype=np.float64, order="C")  # copies: the rest shape is owned
         self.tets = np.array(tets, dtype=np.int64, order="C")
         n, m = len(self.X), len(self.tets)
@@ -145,7 +146,10 @@ class FEMSystem:
         self.rho = np.array(np.broadcast_to(np.asarray(rho, dtype=float), (m,)))
         self.gamma = float(gamma)
         self.mass = np.empty(n)
-        K.lumped_mass(self.tets, self.vol, self.rho, self.mass)
+        if mass is None:
+            K.lumped_mass(self.tets, self.vol, self.rho, self.mass)
+        else:  # a caller's own lumping (``mesh.cell_lumped_mass``)
+            self.mass[:] = np.broadcast_to(np.asarray(mass, dtype=float), (n,))
         if np.any(self.mass <= 0.0):
             raise ValueError("every node must belong to a tet with positive mass")
         self.D = damping_matrix(self.tets, self.vol, self.gamma, n)
