@@ -28,10 +28,11 @@ Conventions
   2 mu (row 9), lam (row 10) and Dm^-1 itself (entry (r, c) in row 11 + 3 r + c),
   built by ``pack_tet_coefficients``; ``q_ws``
   (n_blocks, N_Q LANES) each tet's rotation as a quaternion (w, x, y, z) in rows
-  0-3 and its last increment (rows 4-6, below), kept between steps; ``F_work`` (n_blocks, 9 LANES) and ``H_work``
-  (n_blocks, N_H LANES) are scratch: H rows 3 k + i hold component i of the
-  force on local node k + 1, rows 10 + i that on local node 0 (eq. 10: minus
-  the sum of the other three), row 9 the rotation's convergence measure.
+  0-3 and its last increment (rows 4-6, below), kept between steps; ``F_work``
+  (n_blocks, 9 LANES) and ``H_work`` (n_blocks, N_H LANES) are scratch: H rows
+  3 k + i hold component i of the force on local node k + 1, rows 10 + i that on
+  local node 0 (eq. 10: minus the sum of the other three), row 9 whether the
+  rotation was accepted (0) or needs the fallback (inf).
   ``new_tet_workspace`` allocates them, with the padding lanes of the last
   block set to an inert identity tet.  ``node_incidence`` lists each node's
   entries of H, for ``elastic_forces_gathered``.
@@ -1076,9 +1077,9 @@ def elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f):
     x: (n_nodes, 3) [m]; tets: (n_tets, 4); Dm_inv: (n_tets, 3, 3) [1/m] (rest, or
     active-effective ``Dm^-1 A^-1``); coef: from ``pack_tet_coefficients`` with the
     same Dm_inv (the pass reads Dm^-1 from its blocked copy in ``coef``, rows
-    COEF_DM_INV..; the argument stays so that the callers' signature does); q_ws: per-tet rotation warm start
-    (any non-zero quaternions) and last increments, OVERWRITTEN with the current ones; F_work, H_work: scratch.  The three
-    come from ``new_tet_workspace`` (blocked layout, module docstring).
+    COEF_DM_INV..; the argument stays so that the callers' signature does); q_ws:
+    per-tet rotation warm start (any non-zero quaternions) and last increments,
+    OVERWRITTEN with the current ones; F_work, H_work: scratch.  The three come from ``new_tet_workspace`` (blocked layout, module docstring).
     ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of tets that needed
     the slow path (``_rotation_fixup``).
     """
