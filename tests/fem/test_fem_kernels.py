@@ -205,6 +205,63 @@ def test_elastic_forces_match_numpy_reference_with_inverted_tets():
     assert np.abs(s.elastic_forces() - ref).max() < FORCE_REF_TOL * np.abs(ref).max()
 
 
+def _rodrigues(axis, angle):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
+    return np.eye(3) + np.sin(angle) * k + (1.0 - np.cos(angle)) * (k @ k)
+
+
+def _tet_rows(ws, row, n, nt):
+    """Rows row..row+n-1 of a blocked per-tet array (n_blocks, k LANES) as (n_tets, n)."""
+    L = K.LANES
+    return ws[:, row * L:(row + n) * L].reshape(-1, n, L).transpose(0, 2, 1).reshape(-1, n)[:nt]
+
+
+def _quat_mul(a, b):
+    """Row-wise quaternion products a b of (n, 4) arrays (w, x, y, z)."""
+    w = a[:, 0] * b[:, 0] - np.sum(a[:, 1:] * b[:, 1:], axis=1)
+    v = a[:, :1] * b[:, 1:] + b[:, :1] * a[:, 1:] + np.cross(a[:, 1:], b[:, 1:])
+    return np.column_stack([w, v])
+
+
+@pytest.mark.parametrize("spin", [2e-3, 0.05])  # [rad] per call: a fast tet's turn per step, and 25 times that
+def test_predicted_rotation_follows_a_steady_spin(spin):
+    # A deformed mesh turned by the same angle at every call, as a spinning body between steps: from the
+    # third call on, the predicted rotation (last rotation times last increment) is within NEWTON_TOL of
+    # the answer, so one Newton step is accepted for every tet and nothing takes the slow path; the kept
+    # increment is the half-angle of the turn.  Then the turn speeds up by 2 % (the prediction is off by
+    # 1 % of the turn).  At every call the forces match the SVD reference and every tet's rotation the
+    # SVD's to NEWTON_ROT_TOL, whichever path it took.
+    nodes, tets = box_grid((1.0, 0.8, 0.6), (2, 2, 2))
+    s = FEMSystem(nodes, tets, E=1000.0, nu=0.3)
+    base = s.X + 0.02 * np.random.default_rng(8).normal(size=s.X.shape)  # strains of a few per cent
+    axis = np.array([0.3, 1.0, -0.4])
+    nt = s.n_tets
+    angle_k = 0.0
+    for k in range(8):
+        q0 = _tet_rows(s._q_ws, 0, 4, nt)
+        pred = _quat_mul(q0, np.column_stack([np.ones(nt), _tet_rows(s._q_ws, K.Q_D, 3, nt)]))
+        angle_k += 0.0 if k == 0 else (spin if k < 6 else 1.02 * spin)
+        s.x[:] = base @ _rodrigues(axis, angle_k).T
+        f = np.zeros_like(s.x)
+        n_slow = K.elastic_forces(s.x, s.tets, s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, f)
+        ref = forces_np(s.x, s.tets, s.Dm_inv, s.vol, s.mu, s.lam)
+        assert np.abs(f - ref).max() < FORCE_REF_TOL * np.abs(ref).max()
+        q = _tet_rows(s._q_ws, 0, 4, nt)
+        for e, t in enumerate(s.tets):
+            Ds = np.stack([s.x[t[1]] - s.x[t[0]], s.x[t[2]] - s.x[t[0]], s.x[t[3]] - s.x[t[0]]], axis=1)
+            U, _s, V = signed_svd_np(Ds @ s.Dm_inv[e])
+            R = np.array(K._quat_to_rot(*q[e])).reshape(3, 3)
+            assert np.abs(R - U @ V.T).max() < NEWTON_ROT_TOL
+        if 2 <= k < 6:
+            assert n_slow == 0
+            rel = _quat_mul(pred * np.array([1.0, -1.0, -1.0, -1.0]), _tet_rows(s._q_ws, 0, 4, nt))
+            angle = 2.0 * np.arctan2(np.linalg.norm(rel[:, 1:], axis=1), np.abs(rel[:, 0]))
+            assert angle.max() < K.NEWTON_TOL
+            d = _tet_rows(s._q_ws, K.Q_D, 3, nt)
+            np.testing.assert_allclose(np.linalg.norm(d, axis=1), np.tan(spin / 2), rtol=1e-6)
+
+
 def test_deformation_gradient_and_metric_kernels_match_numpy():
     s = _perturbed_system(seed=5)
     F = np.empty((s.n_tets, 3, 3))

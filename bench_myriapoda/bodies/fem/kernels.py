@@ -27,11 +27,12 @@ Conventions
   ``coef`` (n_blocks, N_COEF LANES) packs -V Dm^-1 (entry (r, c) in row 3 r + c),
   2 mu (row 9), lam (row 10) and Dm^-1 itself (entry (r, c) in row 11 + 3 r + c),
   built by ``pack_tet_coefficients``; ``q_ws``
-  (n_blocks, 4 LANES) each tet's rotation as a quaternion (w, x, y, z), kept
-  between steps; ``F_work`` (n_blocks, 9 LANES) and ``H_work``
-  (n_blocks, N_H LANES) are scratch: H rows 3 k + i hold component i of the
-  force on local node k + 1, rows 10 + i that on local node 0 (eq. 10: minus
-  the sum of the other three), row 9 the rotation's convergence measure.
+  (n_blocks, N_Q LANES) each tet's rotation as a quaternion (w, x, y, z) in rows
+  0-3 and its last increment (rows 4-6, below), kept between steps; ``F_work``
+  (n_blocks, 9 LANES) and ``H_work`` (n_blocks, N_H LANES) are scratch: H rows
+  3 k + i hold component i of the force on local node k + 1, rows 10 + i that on
+  local node 0 (eq. 10: minus the sum of the other three), row 9 whether the
+  rotation was accepted (0) or needs the fallback (inf).
   ``new_tet_workspace`` allocates them, with the padding lanes of the last
   block set to an inert identity tet.  ``node_incidence`` lists each node's
   entries of H, for ``elastic_forces_gathered``.
@@ -64,14 +65,25 @@ tr(R^T F) over SO(3) (Procrustes with the det constraint); it is unique whenever
 sigma_2 + sigma_3 > 0, even where the singular vectors are not.  ``_newton_step``
 is one Newton step of that maximisation in exponential coordinates,
 R <- R exp([w]), w = -(tr(M) I - sym(M))^-1 axial(M - M^T), M = R^T F, applied to
-a quaternion (q <- q (1, w/2)).  Warm-started from each tet's rotation of the
-previous step it converges quadratically; the element pass runs two steps for
-every tet, branch-free and vectorised, and accepts when the second step was
-smaller than ``NEWTON_TOL`` (the rotation error left is then of order its
-square, ~1e-12).  The few tets that fail (Hessian not positive definite, i.e. far
-from the maximum or sigma_2 + sigma_3 <= 0; a step above ``_NEWTON_MAX_STEP``;
-not yet converged) go through ``_fcr_rotation``: more Newton steps, then the SVD.
-The tests compare both paths with numpy's SVD, including inverted F.
+a quaternion (q <- q (1, w/2)).  Started near the maximum it converges
+quadratically.  The element pass starts each tet from a predicted rotation: its
+rotation of the previous step times that step's increment (q (1, d), d the
+half-angle vector of the increment, kept in ``q_ws`` rows 4-6), i.e. constant
+angular velocity, so the start is off by the change of the tet's angular
+velocity over one step.  It runs one Newton step for every tet, branch-free and
+vectorised, and accepts it when the rotation error it leaves, estimated from the
+step and the anisotropy of the stretch (``_newton_step_h``), is below
+``NEWTON_ERR`` (1e-12 rad; a resting or steadily turning tet's is far smaller).
+A block of LANES tets with one not accepted takes a second step for all its
+lanes, accepted by the same test.  (Until issue 13 the pass ran two steps from
+the unpredicted previous rotation and accepted when the second was below
+``NEWTON_TOL``, an error of order its square; this does about 80 fewer
+multiplications per tet where one step is enough, and the results differ at
+round-off level.)  The few tets that fail (Hessian not positive definite, i.e.
+far from the maximum or sigma_2 + sigma_3 <= 0; a step above
+``_NEWTON_MAX_STEP``; not yet converged) go through ``_fcr_rotation`` from the
+previous rotation: more Newton steps, then the SVD.  The tests compare both
+paths with numpy's SVD, including inverted F.
 """
 from __future__ import annotations
 
@@ -89,6 +101,10 @@ COEF_TWO_MU = 9
 COEF_LAM = 10
 COEF_DM_INV = 11
 N_COEF = 20
+# Rows of the per-tet rotation state ``q_ws``: the quaternion (w, x, y, z) and the half-angle
+# vector d of the last step's increment, q_new ~ q_old (1, d) (module docstring).
+Q_D = 4
+N_Q = 7
 # Rows of the blocked per-tet scratch ``H_work`` (module docstring).
 H_HH = 9
 H_NODE0 = 10
@@ -117,6 +133,11 @@ _NEWTON_MAX_ITER = 6
 _NEWTON_MAX_STEP = 0.5
 # Squared half-angle bounds used on the quaternion increment h = w / 2.
 _NEWTON_TOL_HH = 0.25 * NEWTON_TOL * NEWTON_TOL
+# The element pass accepts a Newton step when the rotation error it leaves, estimated from the
+# step h and the anisotropy of the stretch (``_newton_step_h``), is below NEWTON_ERR [rad] (the
+# error the NEWTON_TOL rule bounds, of order its square); as squared bound times 2 (no sqrt).
+NEWTON_ERR = 1e-12
+_NEWTON_ERR2 = NEWTON_ERR * NEWTON_ERR
 _NEWTON_MAX_HH = 0.25 * _NEWTON_MAX_STEP * _NEWTON_MAX_STEP
 
 
@@ -393,13 +414,22 @@ def _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
+def _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     """One Newton step towards argmax_R tr(R^T F) from the rotation of q (module docstring).
 
-    Branch-free so that loops over tets vectorise.  Returns (q', hh, ok): the
-    updated (unnormalised) quaternion q (1, w/2), hh = |w/2|^2, and ok = the Newton
-    Hessian is positive definite and the step is below _NEWTON_MAX_STEP.  When not
-    ok, q' is meaningless.
+    Branch-free so that loops over tets vectorise.  Returns (q', hh, ok, h, small):
+    the updated (unnormalised) quaternion q (1, h), h = w/2 the half step (3
+    scalars), hh = |h|^2, ok = the Newton Hessian is positive definite and the step
+    is below _NEWTON_MAX_STEP, and small = ok and the rotation error left after the
+    step is estimated below NEWTON_ERR.  When not ok, q' and h are meaningless.
+
+    The estimate: the step's error e0 ~ |h| shrinks to about a e0^2 + e0^3 / 3,
+    a = |dev sym M| / (tr M / 3) the anisotropy of the stretch (for an isotropic
+    stretch Newton's step on a rotation is tan for the angle, off in the third
+    order; the quadratic term grows with the anisotropy).  ``small`` tests
+    a hh + hh^(3/2) < NEWTON_ERR through 2 (a^2 hh^2 + hh^3) < NEWTON_ERR^2, times
+    (tr M)^2 (no sqrt, no division).  Measured on the fem worm and centipede, the
+    next step was at most 1 % of a hh + hh^(3/2) where that exceeds 1e-15.
     """
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
     m00 = r00 * f00 + r10 * f10 + r20 * f20
@@ -436,10 +466,24 @@ def _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     hz = k * (c02 * g0 + c12 * g1 + c22 * g2)
     hh = hx * hx + hy * hy + hz * hz
     ok = (h00 > 0.0) & (c22 > 0.0) & (det > 0.0) & (hh < _NEWTON_MAX_HH)
+    # 9 |dev sym M|^2 (tr M ~ the sum of the singular values > 0 where ok)
+    t3 = 3.0 * m00 - tr
+    t4 = 3.0 * m11 - tr
+    t5 = 3.0 * m22 - tr
+    dev9 = t3 * t3 + t4 * t4 + t5 * t5 + 18.0 * (h01 * h01 + h02 * h02 + h12 * h12)
+    small = ok & (2.0 * hh * hh * (dev9 + tr * tr * hh) < _NEWTON_ERR2 * tr * tr)
     nw = qw - (qx * hx + qy * hy + qz * hz)
     nx = qx + qw * hx + (qy * hz - qz * hy)
     ny = qy + qw * hy + (qz * hx - qx * hz)
     nz = qz + qw * hz + (qx * hy - qy * hx)
+    return nw, nx, ny, nz, hh, ok, hx, hy, hz, small
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
+    """``_newton_step_h`` without the half step h: (q', hh, ok)."""
+    nw, nx, ny, nz, hh, ok, _hx, _hy, _hz, _small = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                                                  qw, qx, qy, qz)
     return nw, nx, ny, nz, hh, ok
 
 
@@ -657,13 +701,13 @@ def n_tet_blocks(n_tets):
 def new_tet_workspace(n_tets):
     """Allocate (q_ws, F_work, H_work) for ``elastic_forces`` (blocked layout, module docstring).
 
-    q_ws (n_blocks, 4 LANES) starts at the identity rotation; F_work
+    q_ws (n_blocks, N_Q LANES) starts at the identity rotation, at rest (increment 0); F_work
     (n_blocks, 9 LANES) at F = I, so that the padding lanes past n_tets stay an
     inert, converged identity tet (their ``coef`` is zero); H_work
     (n_blocks, N_H LANES) is zero.
     """
     nb = n_tet_blocks(n_tets)
-    q_ws = np.zeros((nb, 4 * LANES))
+    q_ws = np.zeros((nb, N_Q * LANES))
     q_ws[:, :LANES] = 1.0
     F_work = np.zeros((nb, 9 * LANES))
     for r in (0, 4, 8):
@@ -831,28 +875,38 @@ def _edge_pass(x, tets, F):
         F[b, 8 * L + l] = x[i3, 2] - z0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _rotation_stress_pass(F, coef, q, H):
-    """F = Ds Dm^-1, two Newton rotation steps and the nodal forces of every tet, branch-free (vectorised).
+    """F = Ds Dm^-1, Newton rotation steps from the predicted rotation and the nodal forces of
+    every tet, branch-free within a block (vectorised).
 
     F holds the edge matrices Ds (``_edge_pass``) and is OVERWRITTEN with F, Dm^-1
-    read from ``coef``.  Overwrites q (n_blocks, 4 LANES) where both steps were
-    valid, H rows 0-8 and 10-12 with the nodal forces and H row 9 with the squared
-    half-angle of the second step (inf if a step was invalid); tets with H row 9
-    >= _NEWTON_TOL_HH need ``_rotation_fixup``.
+    read from ``coef``.  q (n_blocks, N_Q LANES): each tet's rotation and last
+    increment d; the first step starts from q (1, d) (module docstring).  A tet is
+    accepted after the first step if it was valid and the error it leaves is
+    estimated below NEWTON_ERR (``_newton_step_h``); a block with a tet that was
+    not runs a second step for all its lanes, and accepts the others whose two
+    steps were valid and whose second leaves an error estimated below NEWTON_ERR.
+    An accepted tet's q is OVERWRITTEN with the new rotation (renormalised) and d
+    with the increment q_old -> q_new: d + h1 after one step (h1 the Newton half
+    step: the term of second order, |d| |h1|, is well below the prediction's own error),
+    the exact product (1, d) (1, h1) (1, h2) scaled to w = 1 after two.  Overwrites H rows 0-8
+    and 10-12 with the nodal forces and H row 9 with 0 where accepted, inf where
+    not; those (H row 9 >= _NEWTON_TOL_HH) need ``_rotation_fixup``.
 
-    Each block goes through three short loops over its lanes (first step; second
-    step and acceptance; stress and forces) rather than one long one.  One tet's
-    whole chain is some 500 dependent vector instructions, more than the
+    Each block goes through short loops over its lanes (first step; the second
+    step if needed; stress and forces) rather than one long one: one tet's whole
+    chain is several hundred dependent vector instructions, more than the
     processor's reorder window, so in a single loop the next lanes could not start
     until the last ones were nearly done; each short loop's lanes overlap.  The
-    first step's quaternion and its ok flag wait in H rows 0-4, which the third
-    loop overwrites.  The arithmetic, and so every bit of the result, is that of
-    the single loop.
+    first step's quaternion, half step and flag wait in H rows 0-7, which the last
+    loop overwrites.
     """
     L = LANES
     M = COEF_DM_INV * L
+    D = Q_D * L
     for b in range(F.shape[0]):
+        n_retry = 0
         for l in range(L):
             # F = Ds Dm^-1 (eqs. 2-4), in place of Ds (``_edge_pass``)
             d00, d01, d02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
@@ -879,26 +933,63 @@ def _rotation_stress_pass(F, coef, q, H):
             F[b, 6 * L + l] = f20
             F[b, 7 * L + l] = f21
             F[b, 8 * L + l] = f22
-            aw, ax, ay, az, _hh1, ok1 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                     q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+            qw, qx, qy, qz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
+            dx, dy, dz = q[b, D + l], q[b, D + L + l], q[b, D + 2 * L + l]
+            # predicted rotation q (1, d): the last step's increment once more
+            pw = qw - (qx * dx + qy * dy + qz * dz)
+            px = qx + qw * dx + (qy * dz - qz * dy)
+            py = qy + qw * dy + (qz * dx - qx * dz)
+            pz = qz + qw * dz + (qx * dy - qy * dx)
+            aw, ax, ay, az, hh, ok, hx, hy, hz, acc = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                                                    pw, px, py, pz)
+            nw, nx, ny, nz = _renormalize(aw, ax, ay, az)
+            q[b, l] = nw if acc else qw
+            q[b, L + l] = nx if acc else qx
+            q[b, 2 * L + l] = ny if acc else qy
+            q[b, 3 * L + l] = nz if acc else qz
+            q[b, D + l] = dx + hx if acc else dx
+            q[b, D + L + l] = dy + hy if acc else dy
+            q[b, D + 2 * L + l] = dz + hz if acc else dz
+            H[b, H_HH * L + l] = 0.0 if acc else np.inf
+            # for the second step: the first one's quaternion and half step, and whether to take it
             H[b, l] = aw
             H[b, L + l] = ax
             H[b, 2 * L + l] = ay
             H[b, 3 * L + l] = az
-            H[b, 4 * L + l] = 1.0 if ok1 else 0.0
-        for l in range(L):
-            f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
-            f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
-            f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-            bw, bx, by, bz, hh2, ok2 = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                    H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
-            bw, bx, by, bz = _renormalize(bw, bx, by, bz)
-            ok = (H[b, 4 * L + l] != 0.0) & ok2
-            q[b, l] = bw if ok else q[b, l]
-            q[b, L + l] = bx if ok else q[b, L + l]
-            q[b, 2 * L + l] = by if ok else q[b, 2 * L + l]
-            q[b, 3 * L + l] = bz if ok else q[b, 3 * L + l]
-            H[b, H_HH * L + l] = hh2 if ok else np.inf
+            H[b, 4 * L + l] = hx
+            H[b, 5 * L + l] = hy
+            H[b, 6 * L + l] = hz
+            retry = ok & (acc == False)  # noqa: E712 (valid, not yet accepted; no branch)
+            H[b, 7 * L + l] = 1.0 if retry else 0.0
+            n_retry += 1 if retry else 0
+        if n_retry > 0:
+            for l in range(L):
+                f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+                f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+                f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+                bw, bx, by, bz, _hh2, _ok2, kx, ky, kz, small2 = _newton_step_h(
+                    f00, f01, f02, f10, f11, f12, f20, f21, f22, H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
+                bw, bx, by, bz = _renormalize(bw, bx, by, bz)
+                acc = (H[b, 7 * L + l] != 0.0) & small2
+                q[b, l] = bw if acc else q[b, l]
+                q[b, L + l] = bx if acc else q[b, L + l]
+                q[b, 2 * L + l] = by if acc else q[b, 2 * L + l]
+                q[b, 3 * L + l] = bz if acc else q[b, 3 * L + l]
+                # the increment (1, d) (1, h1) (1, h2), scaled to w = 1: exact, as the steps may be large here
+                dx, dy, dz = q[b, D + l], q[b, D + L + l], q[b, D + 2 * L + l]
+                hx, hy, hz = H[b, 4 * L + l], H[b, 5 * L + l], H[b, 6 * L + l]
+                cw = 1.0 - (dx * hx + dy * hy + dz * hz)
+                cx = dx + hx + (dy * hz - dz * hy)
+                cy = dy + hy + (dz * hx - dx * hz)
+                cz = dz + hz + (dx * hy - dy * hx)
+                ew = cw - (cx * kx + cy * ky + cz * kz)
+                ex = cx + cw * kx + (cy * kz - cz * ky)
+                ey = cy + cw * ky + (cz * kx - cx * kz)
+                ez = cz + cw * kz + (cx * ky - cy * kx)
+                q[b, D + l] = ex / ew if acc else dx
+                q[b, D + L + l] = ey / ew if acc else dy
+                q[b, D + 2 * L + l] = ez / ew if acc else dz
+                H[b, H_HH * L + l] = 0.0 if acc else H[b, H_HH * L + l]
         for l in range(L):
             f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
             f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
@@ -914,8 +1005,9 @@ def _rotation_fixup(n_tets, F, coef, q, H):
     """Finish the tets the branch-free pass left unconverged; returns how many.
 
     For each tet e < n_tets with not (H row 9 < _NEWTON_TOL_HH) (also NaN):
-    ``_fcr_rotation`` from its current q (more Newton steps, then the SVD), and its
-    forces recomputed.  Overwrites q and H rows 0-8, 10-12 of those tets.
+    ``_fcr_rotation`` from its current q, the previous step's rotation (more Newton
+    steps, then the SVD), and its forces recomputed.  Overwrites q (rotation and
+    increment) and H rows 0-8, 10-12 of those tets.
     """
     L = LANES
     count = 0
@@ -928,13 +1020,24 @@ def _rotation_fixup(n_tets, F, coef, q, H):
         f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
         f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
         f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+        ow, ox, oy, oz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
         (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, _it) = _fcr_rotation(
-            f00, f01, f02, f10, f11, f12, f20, f21, f22,
-            q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+            f00, f01, f02, f10, f11, f12, f20, f21, f22, ow, ox, oy, oz)
         q[b, l] = qw
         q[b, L + l] = qx
         q[b, 2 * L + l] = qy
         q[b, 3 * L + l] = qz
+        # the increment for the next step's prediction: conj(q_old) q_new = (cw, c), d = c / cw (the same
+        # for q_new and -q_new); none if it is not a small turn (the SVD's answer, or a flip)
+        cw = ow * qw + ox * qx + oy * qy + oz * qz
+        cx = ow * qx - qw * ox - (oy * qz - oz * qy)
+        cy = ow * qy - qw * oy - (oz * qx - ox * qz)
+        cz = ow * qz - qw * oz - (ox * qy - oy * qx)
+        dx, dy, dz = cx / cw, cy / cw, cz / cw
+        small = dx * dx + dy * dy + dz * dz < _NEWTON_MAX_HH
+        q[b, Q_D * L + l] = dx if small else 0.0
+        q[b, (Q_D + 1) * L + l] = dy if small else 0.0
+        q[b, (Q_D + 2) * L + l] = dz if small else 0.0
         _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
                             r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
     return count
@@ -974,9 +1077,9 @@ def elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f):
     x: (n_nodes, 3) [m]; tets: (n_tets, 4); Dm_inv: (n_tets, 3, 3) [1/m] (rest, or
     active-effective ``Dm^-1 A^-1``); coef: from ``pack_tet_coefficients`` with the
     same Dm_inv (the pass reads Dm^-1 from its blocked copy in ``coef``, rows
-    COEF_DM_INV..; the argument stays so that the callers' signature does); q_ws: per-tet rotation warm start (any non-zero quaternions),
-    OVERWRITTEN with the current rotations; F_work, H_work: scratch.  The three
-    come from ``new_tet_workspace`` (blocked layout, module docstring).
+    COEF_DM_INV..; the argument stays so that the callers' signature does); q_ws:
+    per-tet rotation warm start (any non-zero quaternions) and last increments,
+    OVERWRITTEN with the current ones; F_work, H_work: scratch.  The three come from ``new_tet_workspace`` (blocked layout, module docstring).
     ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of tets that needed
     the slow path (``_rotation_fixup``).
     """
@@ -1136,7 +1239,7 @@ _U4 = np.uint64(4)
 _U5 = np.uint64(5)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def skyline_solve(first, ptr, L, b):
     """Solve L L^T y = b for three right-hand sides at once (x, y, z share the matrix).
 
@@ -1197,9 +1300,9 @@ def skyline_solve(first, ptr, L, b):
             c2 -= lb * z2
         ui = np.uint64(i)
         d = L[oa + ui]
-        a0 = a0 / d
-        a1 = a1 / d
-        a2 = a2 / d
+        a0 = a0 * d
+        a1 = a1 * d
+        a2 = a2 * d
         bf[ri] = a0
         bf[ri + _U1] = a1
         bf[ri + _U2] = a2
@@ -1209,9 +1312,9 @@ def skyline_solve(first, ptr, L, b):
             c1 -= l * a1
             c2 -= l * a2
         d = L[ob + ui + _U1]
-        bf[ri + _U3] = c0 / d
-        bf[ri + _U4] = c1 / d
-        bf[ri + _U5] = c2 / d
+        bf[ri + _U3] = c0 * d
+        bf[ri + _U4] = c1 * d
+        bf[ri + _U5] = c2 * d
         i += 2
     if i < n:  # odd n: the last row alone
         fa = first[i]
@@ -1227,9 +1330,9 @@ def skyline_solve(first, ptr, L, b):
             a1 -= l * bf[r + _U1]
             a2 -= l * bf[r + _U2]
         d = L[oa + np.uint64(i)]
-        bf[ri] = a0 / d
-        bf[ri + _U1] = a1 / d
-        bf[ri + _U2] = a2 / d
+        bf[ri] = a0 * d
+        bf[ri + _U1] = a1 * d
+        bf[ri + _U2] = a2 * d
     # backward: L^T y = z (column sweep over the rows of L), rows i and j = i - 1
     i = n - 1
     while i >= 1:
@@ -1243,9 +1346,9 @@ def skyline_solve(first, ptr, L, b):
         ri = _U3 * ui
         rj = _U3 * uj
         d = L[oa + ui]
-        ya0 = bf[ri] / d
-        ya1 = bf[ri + _U1] / d
-        ya2 = bf[ri + _U2] / d
+        ya0 = bf[ri] * d
+        ya1 = bf[ri + _U1] * d
+        ya2 = bf[ri + _U2] * d
         bf[ri] = ya0
         bf[ri + _U1] = ya1
         bf[ri + _U2] = ya2
@@ -1255,9 +1358,9 @@ def skyline_solve(first, ptr, L, b):
             bf[rj + _U1] -= l * ya1
             bf[rj + _U2] -= l * ya2
         d = L[ob + uj]
-        yb0 = bf[rj] / d
-        yb1 = bf[rj + _U1] / d
-        yb2 = bf[rj + _U2] / d
+        yb0 = bf[rj] * d
+        yb1 = bf[rj + _U1] * d
+        yb2 = bf[rj + _U2] * d
         bf[rj] = yb0
         bf[rj + _U1] = yb1
         bf[rj + _U2] = yb2
@@ -1283,9 +1386,9 @@ def skyline_solve(first, ptr, L, b):
         i -= 2
     if i == 0:  # odd n: row 0 alone (it has no column left of the diagonal)
         d = L[ptr[0]]
-        b[0, 0] = b[0, 0] / d
-        b[0, 1] = b[0, 1] / d
-        b[0, 2] = b[0, 2] / d
+        b[0, 0] = b[0, 0] * d
+        b[0, 1] = b[0, 1] * d
+        b[0, 2] = b[0, 2] * d
 
 
 # --------------------------------------------------------------------------------------
@@ -1365,6 +1468,24 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
         v[i, 2] = b[k, 2]
 
 
+@njit(cache=True, error_model="numpy", fastmath={"reassoc"})
+def _maybe_unstable(x, v, vmax2):
+    """False only if every node's x and v (n_nodes, 3) are finite and its speed^2 is at most vmax2.
+
+    A screen for ``advance``'s instability check, which runs its exact node loop (the
+    free nodes in solve order, first problem wins) only when this returns True.  The
+    sum of |x| and |v| over all nodes is non-finite iff one entry is (or it overflows:
+    then True, and the node loop decides); as a sum of non-negative terms it may be
+    reassociated, which lets LLVM vectorise it (NaN and inf tests stay: no nnan/ninf).
+    """
+    tot = 0.0
+    n_fast = 0
+    for i in range(x.shape[0]):
+        tot += abs(x[i, 0]) + abs(x[i, 1]) + abs(x[i, 2]) + abs(v[i, 0]) + abs(v[i, 1]) + abs(v[i, 2])
+        n_fast += 1 if v[i, 0] * v[i, 0] + v[i, 1] * v[i, 1] + v[i, 2] * v[i, 2] > vmax2 else 0
+    return n_fast > 0 or not math.isfinite(tot)
+
+
 @njit(cache=True, error_model="numpy")
 def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_steps,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
@@ -1436,16 +1557,17 @@ def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_step
         if contact:
             ground_contact_coulomb(x, v, perm, terrain_kind, terrain_params, mu_friction)
         status = STATUS_OK
-        for k in range(perm.shape[0]):
-            i = perm[k]
-            s = (abs(x[i, 0]) + abs(x[i, 1]) + abs(x[i, 2])
-                 + abs(v[i, 0]) + abs(v[i, 1]) + abs(v[i, 2]))
-            if not math.isfinite(s):
-                status = STATUS_NONFINITE
-                break
-            if v[i, 0] * v[i, 0] + v[i, 1] * v[i, 1] + v[i, 2] * v[i, 2] > vmax2:
-                status = STATUS_RUNAWAY
-                break
+        if _maybe_unstable(x, v, vmax2):  # a vectorised screen; the node loop decides
+            for k in range(perm.shape[0]):
+                i = perm[k]
+                s = (abs(x[i, 0]) + abs(x[i, 1]) + abs(x[i, 2])
+                     + abs(v[i, 0]) + abs(v[i, 1]) + abs(v[i, 2]))
+                if not math.isfinite(s):
+                    status = STATUS_NONFINITE
+                    break
+                if v[i, 0] * v[i, 0] + v[i, 1] * v[i, 1] + v[i, 2] * v[i, 2] > vmax2:
+                    status = STATUS_RUNAWAY
+                    break
         if status != STATUS_OK:
             return step, status
     if n_steps > 0:

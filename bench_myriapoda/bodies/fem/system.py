@@ -97,6 +97,8 @@ def build_solver(mass, D, fixed_mask, dt):
     info = K.skyline_cholesky(first, ptr, val)
     if info != 0:
         raise np.linalg.LinAlgError(f"(M + dt D)_ff is not positive definite at row {info - 1}")
+    diag = ptr[1:] - 1
+    val[diag] = 1.0 / val[diag]  # ``skyline_solve`` multiplies by the inverted diagonal
     Dfp = D[perm][:, fixed].tocsr()
     Dfp.sort_indices()
     Dp = D[fixed].tocsr()
