@@ -393,16 +393,9 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     SW.fix_stance_tips(entered, c_T, R_T, geom, angles, tips)
     if collide:
         LC.surface_touchdown_tips(entered, tips, kind, terr)
-    SW.stance_inverse_kinematics(states, c_T, R_T, geom, tips, angles, ik_failed)
-    theta_min = fs[F_THETA_MIN]
-    for k in range(n_legs):
-        if states[k] == SW.STANCE and angles[k, 0] < theta_min:
-            ik_failed[k] = True
-    stance_tips[:, :] = tips
-    L.legs_forward_kinematics(c_T, R_T, geom, angles, O, M, tips)
-    for k in range(n_legs):
-        if states[k] == SW.STANCE:  # a planted tip stays where it touched down
-            tips[k, 0], tips[k, 1], tips[k, 2] = stance_tips[k, 0], stance_tips[k, 1], stance_tips[k, 2]
+    # the STANCE legs' IK, theta_min (rule 3), the FK of all legs with planted tips kept: the controller's
+    # stance_inverse_kinematics, its theta_min test and legs_forward_kinematics in one pass (same doubles)
+    L.stance_ik_and_fk(states, SW.STANCE, c_T, R_T, geom, tips, angles, ik_failed, fs[F_THETA_MIN], O, M)
     if collide:
         LC.stance_knees_inside(states, M, kind, terr, ik_failed)
     fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX], LC.legs_penetration(kind, terr, M, tips))
