@@ -253,6 +253,23 @@ def test_all_legs_kernels_match_single_leg_kernels():
     np.testing.assert_allclose(got[mask], angles[mask], rtol=0, atol=ROUND_TRIP_TOL)
 
 
+def test_wrap_equals_the_general_formula_bit_for_bit():
+    """``_wrap`` returns a itself when a + pi lies in [0, 2 pi): the general a - 2 pi floor((a + pi) / 2 pi)
+    gives the same double there, also for the doubles next to -pi and pi and for -0.0."""
+    two_pi = 2.0 * math.pi
+    vals = list(np.random.default_rng(3).uniform(-12.0, 12.0, 20000)) + [0.0, -0.0]
+    for base in (-3.0 * math.pi, -math.pi, math.pi, 3.0 * math.pi):
+        for direction in (np.inf, -np.inf):
+            x = base
+            for _ in range(64):
+                vals.append(x)
+                x = float(np.nextafter(x, direction))
+    for a in vals:
+        want = a - two_pi * math.floor((a + math.pi) / two_pi)
+        got = L._wrap(a)
+        assert np.float64(got).tobytes() == np.float64(want).tobytes(), a
+
+
 def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
     """The one-pass kernel gives the doubles of the controller's separate sequence (STANCE legs' IK,
     the theta_min test, FK of all legs, planted tips restored), failures and non-STANCE legs included."""

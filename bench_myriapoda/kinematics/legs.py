@@ -121,7 +121,12 @@ def side_sign(leg):
 @njit(cache=True)
 def _wrap(a):
     """Angle a [rad] wrapped into [-pi, pi)."""
-    return a - _TWO_PI * math.floor((a + math.pi) / _TWO_PI)
+    s = a + math.pi
+    if 0.0 <= s < _TWO_PI:
+        # then (a + pi) / 2 pi rounds below 1 (2 pi's ulp is over 2^-53 of it), the floor is 0 and the
+        # general form gives a - 0.0 == a: the same double without the division, the common case
+        return a
+    return a - _TWO_PI * math.floor(s / _TWO_PI)
 
 
 @njit(cache=True)
