@@ -176,15 +176,19 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
 
     # (3) attached nodes follow the rigid bodies
     place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+    # the statistics in registers, stored once: the same sum in the same order, the same maximum
+    res_sum, res_max = acc[ACC_RES_SUM], acc[ACC_RES_MAX]
     for a in range(n_fixed):
         r = residual[a]
-        acc[ACC_RES_SUM] += r
-        if r > acc[ACC_RES_MAX]:
-            acc[ACC_RES_MAX] = r
+        res_sum += r
+        if r > res_max:
+            res_max = r
+    acc[ACC_RES_SUM], acc[ACC_RES_MAX] = res_sum, res_max
     acc[ACC_RES_COUNT] += n_fixed
 
     # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
     # corner depth (after the position projection) and contact count.
+    deepest = acc[ACC_MAX_PEN]
     for i in range(n_rigid):
         hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
         s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
@@ -206,10 +210,11 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
             phi = signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1
-            if -phi > acc[ACC_MAX_PEN]:
-                acc[ACC_MAX_PEN] = -phi
+            if -phi > deepest:
+                deepest = -phi
             if -phi > max_pen:
                 status = DEEP_PENETRATION
+    acc[ACC_MAX_PEN] = deepest
     return status, n_contact
 
 
