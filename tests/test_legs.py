@@ -253,6 +253,66 @@ def test_all_legs_kernels_match_single_leg_kernels():
     np.testing.assert_allclose(got[mask], angles[mask], rtol=0, atol=ROUND_TRIP_TOL)
 
 
+def test_wrap_equals_the_general_formula_bit_for_bit():
+    """``_wrap`` returns a itself when a + pi lies in [0, 2 pi): the general a - 2 pi floor((a + pi) / 2 pi)
+    gives the same double there, also for the doubles next to -pi and pi and for -0.0."""
+    two_pi = 2.0 * math.pi
+    vals = list(np.random.default_rng(3).uniform(-12.0, 12.0, 20000)) + [0.0, -0.0]
+    for base in (-3.0 * math.pi, -math.pi, math.pi, 3.0 * math.pi):
+        for direction in (np.inf, -np.inf):
+            x = base
+            for _ in range(64):
+                vals.append(x)
+                x = float(np.nextafter(x, direction))
+    for a in vals:
+        want = a - two_pi * math.floor((a + math.pi) / two_pi)
+        got = L._wrap(a)
+        assert np.float64(got).tobytes() == np.float64(want).tobytes(), a
+
+
+def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
+    """The one-pass kernel gives the doubles of the controller's separate sequence (STANCE legs' IK,
+    the theta_min test, FK of all legs, planted tips restored), failures and non-STANCE legs included."""
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    rng = np.random.default_rng(11)
+    n_seg = 6
+    n_legs = 2 * n_seg
+    geom = geometry(n_seg)
+    seg_c = rng.normal(size=(n_seg, 3))
+    seg_R = np.stack([Rotation.random(random_state=rng).as_matrix() for _ in range(n_seg)])
+    angles = np.array([random_convex_angles(rng) for _ in range(n_legs)])
+    O0, M0, tips = (np.empty((n_legs, 3)) for _ in range(3))
+    L.legs_forward_kinematics(seg_c, seg_R, geom, angles, O0, M0, tips)
+    # the segments move a little (the Targeter's new poses); some tips out of reach, one on the root
+    seg_c += 0.05 * rng.normal(size=seg_c.shape)
+    tips[3] += 10.0 * seg_R[1][:, 2]
+    roots = np.empty((n_legs, 3))
+    L.legs_roots(seg_c, seg_R, geom, roots)
+    tips[6] = roots[6]
+    states = np.where(rng.random(n_legs) < 0.7, SW.STANCE, SW.SF1).astype(np.int64)
+    states[[3, 6]] = SW.STANCE
+    start = angles + 0.01 * rng.normal(size=angles.shape)
+    theta_min = float(np.median(angles[:, L.THETA]))  # some STANCE legs below it
+    # reference: the controller's sequence
+    a_ref, t_ref = start.copy(), tips.copy()
+    f_ref = np.zeros(n_legs, bool)
+    O_ref, M_ref = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    SW.stance_inverse_kinematics(states, seg_c, seg_R, geom, t_ref, a_ref, f_ref)
+    f_ref |= (states == SW.STANCE) & (a_ref[:, 0] < theta_min)
+    planted = t_ref.copy()
+    L.legs_forward_kinematics(seg_c, seg_R, geom, a_ref, O_ref, M_ref, t_ref)
+    t_ref[states == SW.STANCE] = planted[states == SW.STANCE]
+    # the one-pass kernel
+    a, t = start.copy(), tips.copy()
+    failed = np.zeros(n_legs, bool)
+    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    L.stance_ik_and_fk(states, SW.STANCE, seg_c, seg_R, geom, t, a, failed, theta_min, O, M)
+    assert failed[3] and failed[6] and not failed.all()
+    assert (~failed & (states == SW.STANCE)).any()
+    for got, want in ((a, a_ref), (t, t_ref), (failed, f_ref), (O, O_ref), (M, M_ref)):
+        np.testing.assert_array_equal(got, want)
+
+
 @pytest.mark.parametrize("kind,f", [(PLANE, [0.1] + [0.0] * 7), (SLOPE, [0.0, 0.3] + [0.0] * 6)])
 def test_tips_touching_matches_terrain_reference(kind, f):
     rng = np.random.default_rng(7)

@@ -84,6 +84,24 @@ def test_limited_turn():
     assert T.limited_turn(1e-7, 0.1, 1e-6) == 0.0  # within tolerance: still
 
 
+def test_turn_toward_equals_limited_turn_of_atan2_bit_for_bit():
+    """The shortcut (no atan2 where the turn is surely 0) gives the full form's double, also at the
+    threshold |y| = tol x / 2, around |atan2| = tol and for x <= 0."""
+    rng = np.random.default_rng(5)
+    tol, step = 1e-6, 2.0 / 3000.0
+    xs = np.concatenate([rng.uniform(-1.0, 2.0, 4000), [0.0, -0.0, 1.0, 1.0, 1.0, 1.0]])
+    ys = np.concatenate([rng.uniform(-1.0, 1.0, 4000) * 10.0 ** rng.uniform(-9, 0, 4000),
+                         [1e-7, -1e-7, 0.5e-6, np.nextafter(0.5e-6, 1.0), 1e-6, np.nextafter(1e-6, 1.0)]])
+    hits = 0
+    for x, y in zip(xs, ys):
+        want = T.limited_turn(math.atan2(y, x), step, tol)
+        got = T.turn_toward(y, x, step, tol)
+        assert np.float64(got).tobytes() == np.float64(want).tobytes(), (x, y)
+        hits += x > 0.0 and abs(y) <= 0.5 * tol * x
+    assert hits > 100
+
+
+
 # --------------------------------------------------------------------------
 # Follower
 # --------------------------------------------------------------------------

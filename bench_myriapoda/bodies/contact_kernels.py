@@ -128,3 +128,32 @@ def advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr, fric_mod
     elif vx * vx + vy * vy + vz * vz > max_speed2:
         status = RUNAWAY_SPEED
     return touching, status
+
+
+# ``advance_point_if_clear``'s answer for a point it did not move
+NOT_CLEAR = -1
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, contact_dist, max_speed2):
+    """``advance_point`` (semi-implicit, not Euler) for a point clear of the terrain at both ends of its
+    step, else nothing: returns NOT_CLEAR, or the status code after moving it.
+
+    Clear: phi >= contact_dist now and phi >= 0 after x += dt v.  For such a point ``advance_point``
+    reduces to no friction, no collision, x += dt v, v = (vx, vy, vz) and the blow-up checks; this is
+    that arithmetic (the same doubles), without the contact code around it -- the walking body's many
+    points in the air.  A point not clear (also a NaN distance) is left to ``advance_point``.
+    """
+    px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+    if not signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+        return NOT_CLEAR
+    qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
+    if not signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+        return NOT_CLEAR
+    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
+    v[i, 0], v[i, 1], v[i, 2] = vx, vy, vz
+    if not math.isfinite(qx + qy + qz + vx + vy + vz):
+        return NONFINITE
+    if vx * vx + vy * vy + vz * vz > max_speed2:
+        return RUNAWAY_SPEED
+    return OK

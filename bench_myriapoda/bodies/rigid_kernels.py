@@ -255,18 +255,31 @@ def accumulate_point_forces(body, points, forces, c, force_acc, torque_acc):
     body: (k,) int body index of each force; points: (k, 3) [m] world application
     points; forces: (k, 3) [N]; c: (n, 3) [m].  ACCUMULATES into force_acc (n, 3) [N]
     and torque_acc (n, 3) [N m] (torque about each body's centre of mass).
+
+    A run of consecutive points on the same body (the attached nodes come sorted by body) is
+    summed in registers and stored once: the same additions in the same order as adding each
+    point into the accumulators in memory, so the same doubles, without a chain of dependent
+    loads and stores through memory from one point to the next.
     """
-    for k in range(body.shape[0]):
+    n = body.shape[0]
+    k = 0
+    while k < n:
         i = body[k]
-        fx, fy, fz = forces[k, 0], forces[k, 1], forces[k, 2]
-        tx, ty, tz = _cross(points[k, 0] - c[i, 0], points[k, 1] - c[i, 1],
-                            points[k, 2] - c[i, 2], fx, fy, fz)
-        force_acc[i, 0] += fx
-        force_acc[i, 1] += fy
-        force_acc[i, 2] += fz
-        torque_acc[i, 0] += tx
-        torque_acc[i, 1] += ty
-        torque_acc[i, 2] += tz
+        cx, cy, cz = c[i, 0], c[i, 1], c[i, 2]
+        sfx, sfy, sfz = force_acc[i, 0], force_acc[i, 1], force_acc[i, 2]
+        stx, sty, stz = torque_acc[i, 0], torque_acc[i, 1], torque_acc[i, 2]
+        while k < n and body[k] == i:
+            fx, fy, fz = forces[k, 0], forces[k, 1], forces[k, 2]
+            tx, ty, tz = _cross(points[k, 0] - cx, points[k, 1] - cy, points[k, 2] - cz, fx, fy, fz)
+            sfx += fx
+            sfy += fy
+            sfz += fz
+            stx += tx
+            sty += ty
+            stz += tz
+            k += 1
+        force_acc[i, 0], force_acc[i, 1], force_acc[i, 2] = sfx, sfy, sfz
+        torque_acc[i, 0], torque_acc[i, 1], torque_acc[i, 2] = stx, sty, stz
 
 
 @njit(cache=True)

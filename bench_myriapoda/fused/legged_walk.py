@@ -144,7 +144,7 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
     rec_R (n_seg, 3, 3), rec_links (n_links, 3) [m] after it), capacity n_steps // record_every + 1 rows.
     Returns (steps done, status code, rows recorded); a blow-up ends the chunk after its step.
     """
-    (x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
+    (x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_ptr, inc_off,
      perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
      fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
      c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
@@ -157,7 +157,7 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
                                      residual, dt, S, REC, n_rec)
-        done, status = K.advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
+        done, status = K.advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_ptr, inc_off,
                                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                  fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
                                  c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
@@ -268,7 +268,7 @@ def _hybrid_args(b: BodyHybrid) -> tuple:
     fem, s, rb, sc = b.fem, b.solver, b.rigid, b.scratch
     b.phys[K.MUSCLES_ON] = 0.0
     return (fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, b._muscle_static + (b._no_muscle,),
-            fem.mass, fem._q_ws, fem._F_work, fem._H_work,
+            fem.mass, fem._q_ws, fem._F_work, fem._H_work, fem._inc_ptr, fem._inc_off,
             s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
             s.fixed, s.pf_ptr, s.pf_col, s.pf_val, b.node_link, b.att_body, b.att_local,
             rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,

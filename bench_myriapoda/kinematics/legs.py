@@ -121,7 +121,12 @@ def side_sign(leg):
 @njit(cache=True)
 def _wrap(a):
     """Angle a [rad] wrapped into [-pi, pi)."""
-    return a - _TWO_PI * math.floor((a + math.pi) / _TWO_PI)
+    s = a + math.pi
+    if 0.0 <= s < _TWO_PI:
+        # then (a + pi) / 2 pi rounds below 1 (2 pi's ulp is over 2^-53 of it), the floor is 0 and the
+        # general form gives a - 0.0 == a: the same double without the division, the common case
+        return a
+    return a - _TWO_PI * math.floor(s / _TWO_PI)
 
 
 @njit(cache=True)
@@ -195,6 +200,18 @@ def leg_inverse_kinematics(O, P, R, side, geom_row, theta_hint):
 @njit(cache=True)
 def _ik_vector(wx, wy, wz, R, side, geom_row, theta_hint):
     """``leg_inverse_kinematics`` given the world vector P - O = (wx, wy, wz) [m]."""
+    ok, theta, alpha, beta, _, _, _, _ = _ik_solve(wx, wy, wz, R, side, geom_row, theta_hint)
+    return ok, theta, alpha, beta
+
+
+@njit(cache=True)
+def _ik_solve(wx, wy, wz, R, side, geom_row, theta_hint):
+    """``_ik_vector`` that also returns what the forward kinematics of its solution needs:
+    (ok, theta, alpha, beta, sin theta, cos theta, mu, mv) with (mu, mv) [m] the knee in the
+    leg plane (``leg_plane_points``).  The last four are computed exactly as
+    ``leg_forward_kinematics`` computes them from (theta, alpha), so a caller that reuses them
+    gets the same doubles without evaluating the sines and cosines twice; they are nan when
+    alpha is nan."""
     femur = geom_row[FEMUR]
     tibia = geom_row[TIBIA]
     dx, dy, dz = _matTvec(R, wx, wy, wz)
@@ -207,24 +224,26 @@ def _ik_vector(wx, wy, wz, R, side, geom_row, theta_hint):
             theta -= math.pi
         elif theta < -_HALF_PI:
             theta += math.pi
-    u = dx * math.sin(theta) + lateral * math.cos(theta)
+    st = math.sin(theta)
+    ct = math.cos(theta)
+    u = dx * st + lateral * ct
     v = dy
     d2 = u * u + v * v
     d = math.sqrt(d2)
     if d == 0.0:
-        return False, theta, np.nan, np.nan
+        return False, theta, np.nan, np.nan, st, ct, np.nan, np.nan
     # foot of the knee on the chord OP, and the knee's height above the chord
     a = (femur * femur - tibia * tibia + d2) / (2.0 * d)
     h2 = femur * femur - a * a
     if h2 < 0.0:
-        return False, theta, np.nan, np.nan
+        return False, theta, np.nan, np.nan, st, ct, np.nan, np.nan
     # atan2 forms keep full precision near straight and folded legs (acos would not)
     alpha = _wrap(math.atan2(v, u) + math.atan2(math.sqrt(h2), a))
     mu = femur * math.cos(alpha)
     mv = femur * math.sin(alpha)
     bend = _wrap(alpha - math.atan2(v - mv, u - mu))
     beta = bend - geom_row[GAMMA]
-    return beta > 0.0, theta, alpha, beta
+    return beta > 0.0, theta, alpha, beta, st, ct, mu, mv
 
 
 # --------------------------------------------------------------------------
@@ -281,6 +300,59 @@ def leg_ik_from_segment(seg_c, seg_R, geom, tips, angles, k):
         angles[k, ALPHA] = alpha
         angles[k, BETA] = beta
     return success
+
+
+@njit(cache=True)
+def stance_ik_and_fk(states, stance, seg_c, seg_R, geom, tips, angles, ik_failed, theta_min, O, M):
+    """The legs' IK and FK of one controller step in one pass (paper Sec. 4.2, App. B).
+
+    The same doubles as ``switcher.stance_inverse_kinematics`` (the STANCE legs' angles from their
+    fixed tips), then ik_failed |= STANCE and theta < theta_min, then ``legs_forward_kinematics``
+    of all legs with the STANCE legs' tips kept where they touched down: a STANCE leg whose IK
+    succeeded reuses the IK's sin theta, cos theta and knee (mu, mv) for its root and knee, instead
+    of evaluating them again, and no leg in STANCE computes the tip it would not keep.
+
+    states: (n_legs,) int64; stance: the STANCE state code; seg_c (n_segments, 3) [m], seg_R
+    (n_segments, 3, 3): the segments' (Targeter) poses; geom (n_legs, N_LEG_GEOM); tips (n_legs, 3)
+    [m]: read for STANCE legs, overwritten with the FK tip for the others; angles (n_legs, 3) [rad]:
+    STANCE rows overwritten where the IK succeeds (THETA on entry is the hint); ik_failed (n_legs,)
+    bool, overwritten; theta_min [rad]; O, M (n_legs, 3) [m] roots and knees, overwritten.
+    """
+    for k in range(geom.shape[0]):
+        i = k // 2
+        c = seg_c[i]
+        R = seg_R[i]
+        g = geom[k]
+        side = side_sign(k)
+        ox, oy, oz = _matvec(R, g[ROOT_X], g[ROOT_Y], g[ROOT_Z])
+        O[k, 0], O[k, 1], O[k, 2] = c[0] + ox, c[1] + oy, c[2] + oz
+        if states[k] == stance:
+            ok, theta, alpha, beta, st, ct, mu, mv = _ik_solve(tips[k, 0] - c[0] - ox, tips[k, 1] - c[1] - oy,
+                                                               tips[k, 2] - c[2] - oz, R, side, g, angles[k, THETA])
+            ik_failed[k] = not ok
+            if ok:
+                angles[k, THETA], angles[k, ALPHA], angles[k, BETA] = theta, alpha, beta
+            if angles[k, THETA] < theta_min:
+                ik_failed[k] = True
+            if ok:  # the knee from the IK's own sines and cosines (``leg_forward_kinematics``' M)
+                ux, uz = st, side * ct
+                wx, wy, wz = _matvec(R, mu * ux, mv, mu * uz)
+                M[k, 0], M[k, 1], M[k, 2] = O[k, 0] + wx, O[k, 1] + wy, O[k, 2] + wz
+                continue
+            mu, mv, _, _ = leg_plane_points(angles[k, ALPHA], angles[k, BETA], g[FEMUR], g[TIBIA], g[GAMMA])
+            theta = angles[k, THETA]
+            ux, uz = math.sin(theta), side * math.cos(theta)
+            wx, wy, wz = _matvec(R, mu * ux, mv, mu * uz)
+            M[k, 0], M[k, 1], M[k, 2] = O[k, 0] + wx, O[k, 1] + wy, O[k, 2] + wz
+            continue
+        ik_failed[k] = False
+        mu, mv, pu, pv = leg_plane_points(angles[k, ALPHA], angles[k, BETA], g[FEMUR], g[TIBIA], g[GAMMA])
+        theta = angles[k, THETA]
+        ux, uz = math.sin(theta), side * math.cos(theta)
+        wx, wy, wz = _matvec(R, mu * ux, mv, mu * uz)
+        M[k, 0], M[k, 1], M[k, 2] = O[k, 0] + wx, O[k, 1] + wy, O[k, 2] + wz
+        wx, wy, wz = _matvec(R, pu * ux, pv, pu * uz)
+        tips[k, 0], tips[k, 1], tips[k, 2] = O[k, 0] + wx, O[k, 1] + wy, O[k, 2] + wz
 
 
 @njit(cache=True)

@@ -392,7 +392,7 @@ class BodyHybrid(SupportedSegments):
             buf = act.muscle
         return K.advance(fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, self._muscle_static + (buf,),
                          fem.mass, fem._q_ws,
-                         fem._F_work, fem._H_work,
+                         fem._F_work, fem._H_work, fem._inc_ptr, fem._inc_off,
                          s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                          s.fixed, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self.att_body, self.att_local,
                          rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,

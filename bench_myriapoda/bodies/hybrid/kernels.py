@@ -54,8 +54,8 @@ from numba import njit
 
 from ...world.terrain_kernels import signed_distance
 from .. import rigid_kernels as rk
-from ..contact_kernels import advance_point
-from ..fem.kernels import elastic_forces, semi_implicit_velocity
+from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
+from ..fem.kernels import elastic_forces_gathered, semi_implicit_velocity
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
@@ -176,15 +176,19 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
 
     # (3) attached nodes follow the rigid bodies
     place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+    # the statistics in registers, stored once: the same sum in the same order, the same maximum
+    res_sum, res_max = acc[ACC_RES_SUM], acc[ACC_RES_MAX]
     for a in range(n_fixed):
         r = residual[a]
-        acc[ACC_RES_SUM] += r
-        if r > acc[ACC_RES_MAX]:
-            acc[ACC_RES_MAX] = r
+        res_sum += r
+        if r > res_max:
+            res_max = r
+    acc[ACC_RES_SUM], acc[ACC_RES_MAX] = res_sum, res_max
     acc[ACC_RES_COUNT] += n_fixed
 
     # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
     # corner depth (after the position projection) and contact count.
+    deepest = acc[ACC_MAX_PEN]
     for i in range(n_rigid):
         hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
         s = (c[i, 0] + c[i, 1] + c[i, 2] + vr[i, 0] + vr[i, 1] + vr[i, 2]
@@ -206,15 +210,16 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
             phi = signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1
-            if -phi > acc[ACC_MAX_PEN]:
-                acc[ACC_MAX_PEN] = -phi
+            if -phi > deepest:
+                deepest = -phi
             if -phi > max_pen:
                 status = DEEP_PENETRATION
+    acc[ACC_MAX_PEN] = deepest
     return status, n_contact
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
+def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_ptr, inc_off,
             perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
             fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
             c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
@@ -227,6 +232,8 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
     attached nodes: x, v (n_nodes, 3) [m], [m/s], UPDATED in place (attached
     rows are rewritten from the rigid bodies every step); tets, Dm_inv, coef,
     q_ws, F_work, H_work as in ``fem.kernels.elastic_forces`` (q_ws UPDATED);
+    inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets (``FEMSystem._inc_ptr``, ``_inc_off``),
+    for ``elastic_forces_gathered``;
     muscle: the active links (paper Sec. 7's "actively contractile deformable segments"), a
     tuple (Dm_inv_rest (n_tets, 3, 3), vol, mu, lam (n_tets,), tet_link, tet_y, tet_z (n_tets,),
     act_buf (n_rows, n_links, 3)): when phys[MUSCLES_ON] is set, step k rescales the links' rest
@@ -285,7 +292,8 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
                                 act_buf[min(step, n_rows - 1)], phys[MUSCLE_GAIN], phys[VOLUME] != 0.0, Dm_inv, coef)
         # ---------------- (1) FEM step, attached nodes prescribed at rigid state n
         f_work[:, :] = 0.0
-        acc[ACC_SLOW_TETS] += elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f_work)
+        # nodal sums gathered node by node in the scatter's order: bit for bit ``elastic_forces``
+        acc[ACC_SLOW_TETS] += elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_off, f_work)
         for a in range(n_fixed):
             p = fixed[a]
             f_att[a, 0] = f_work[p, 0]
@@ -309,18 +317,26 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work,
                                fp_ptr, fp_col, fp_val, b_work)
         # Damping reaction on the attached nodes, -(D v^{n+1})_p, with the same
         # prescribed v_p the solve used: total internal force exactly zero.
+        # (each row summed in registers, in the order of its entries: the same doubles as in memory)
         for a in range(n_fixed):
+            s0, s1, s2 = f_att[a, 0], f_att[a, 1], f_att[a, 2]
             for e in range(pf_ptr[a], pf_ptr[a + 1]):
                 j = pf_col[e]
                 d = pf_val[e]
-                f_att[a, 0] -= d * v[j, 0]
-                f_att[a, 1] -= d * v[j, 1]
-                f_att[a, 2] -= d * v[j, 2]
+                s0 -= d * v[j, 0]
+                s1 -= d * v[j, 1]
+                s2 -= d * v[j, 2]
+            f_att[a, 0], f_att[a, 1], f_att[a, 2] = s0, s1, s2
         # Ground contact of the free nodes (the suite's point-mass contact) and eq. 15.
         link_spines(c, spine)
         n_contact = 0
         for k in range(n_free):
             i = perm[k]
+            st = advance_point_if_clear(x, v, i, v[i, 0], v[i, 1], v[i, 2], dt, terr_kind, terr, contact_dist, vmax2)
+            if st != NOT_CLEAR:  # in the air: moved, as advance_point would
+                if st != OK:
+                    status = st
+                continue
             s = node_link[i]
             touching, st = advance_point(x, v, i, v[i, 0], v[i, 1], v[i, 2], spine[s, 0], spine[s, 1],
                                          spine[s, 2], dt, terr_kind, terr, fric_model, fric, r_n, r_t,

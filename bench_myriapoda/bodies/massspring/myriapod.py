@@ -46,7 +46,7 @@ from scipy.spatial.transform import Rotation
 
 from ...world.terrain import terrain_from_scenario
 from .. import rigid_kernels as rk
-from ..contact_kernels import advance_point
+from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..hybrid.kernels import (rigid_segments_step, ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
                               N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
@@ -198,6 +198,11 @@ def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, sprin
             vx = v[i, 0] + dt * (f_work[i, 0] * inv_m + gx)
             vy = v[i, 1] + dt * (f_work[i, 1] * inv_m + gy)
             vz = v[i, 2] + dt * (f_work[i, 2] * inv_m + gz)
+            st = advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, contact_dist, vmax2)
+            if st != NOT_CLEAR:  # in the air: moved, as advance_point would
+                if st != OK:
+                    status = st
+                continue
             s = node_link[i]
             touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2], dt,
                                          terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,

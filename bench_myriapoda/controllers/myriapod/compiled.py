@@ -55,7 +55,7 @@ N_FS = 22
  I_RECORDED, I_RND_USED, I_ANT_RND_USED) = range(18)
 N_INTS = 18
 # positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
-A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 34
+A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 33
 
 # (controller attribute, fs index) of the float scalars, (attribute, ints index) of the int ones
 _FLOATS = (("dt", F_DT), ("contact_distance", F_CONTACT_DIST), ("theta_min", F_THETA_MIN),
@@ -98,8 +98,6 @@ class ControllerState:
         self.fs = np.zeros(N_FS)
         self.ints = np.zeros(N_INTS, dtype=np.int64)
         c = controller
-        n_legs = c.n_legs
-        self.stance_tips = np.zeros((n_legs, 3))
         ant = c.antennae
         if ant is None:  # typed stand-ins, never read (I_HAS_ANTENNAE = 0)
             n = 1
@@ -136,7 +134,7 @@ class ControllerState:
         else:
             a = self._ant
         return (c.states, c.angles, c.tips, c._O, c._M, c.touching, c.airborne, c.ik_failed, c.entered, c.supported,
-                c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, self.stance_tips, c.brain_steps,
+                c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, c.brain_steps,
                 c.geom, c.sw_params, c.tg_params, c.terr, c.terr_walk, c.link_rest, c.height_target) \
             + self._schedule + a
 
@@ -268,7 +266,7 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     err_scratch: (n_seg,) scratch.  Returns whether this step is recorded in the timeline.
     """
     (states, angles, tips, O, M, touching, airborne, ik_failed, entered, supported, kinematic, c_T, R_T,
-     prev_angles, stopped, stance_tips, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
+     prev_angles, stopped, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
      height_target, sched_t, sched_speed, sched_rate, ant_params, ant_f, nominal, offsets, root_target,
      root_omega, retracting, contact, rising, contact_point, contact_normal, contact_depth, arrived, points,
      frames) = A
@@ -393,16 +391,9 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     SW.fix_stance_tips(entered, c_T, R_T, geom, angles, tips)
     if collide:
         LC.surface_touchdown_tips(entered, tips, kind, terr)
-    SW.stance_inverse_kinematics(states, c_T, R_T, geom, tips, angles, ik_failed)
-    theta_min = fs[F_THETA_MIN]
-    for k in range(n_legs):
-        if states[k] == SW.STANCE and angles[k, 0] < theta_min:
-            ik_failed[k] = True
-    stance_tips[:, :] = tips
-    L.legs_forward_kinematics(c_T, R_T, geom, angles, O, M, tips)
-    for k in range(n_legs):
-        if states[k] == SW.STANCE:  # a planted tip stays where it touched down
-            tips[k, 0], tips[k, 1], tips[k, 2] = stance_tips[k, 0], stance_tips[k, 1], stance_tips[k, 2]
+    # the STANCE legs' IK, theta_min (rule 3), the FK of all legs with planted tips kept: the controller's
+    # stance_inverse_kinematics, its theta_min test and legs_forward_kinematics in one pass (same doubles)
+    L.stance_ik_and_fk(states, SW.STANCE, c_T, R_T, geom, tips, angles, ik_failed, fs[F_THETA_MIN], O, M)
     if collide:
         LC.stance_knees_inside(states, M, kind, terr, ik_failed)
     fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX], LC.legs_penetration(kind, terr, M, tips))

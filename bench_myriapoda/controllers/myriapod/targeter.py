@@ -128,6 +128,19 @@ def limited_turn(remaining, max_step, tol):
 
 
 @njit(cache=True)
+def turn_toward(y, x, max_step, tol):
+    """``limited_turn(atan2(y, x), max_step, tol)`` [rad], without the atan2 where its answer is surely 0.
+
+    For x > 0, |atan2(y, x)| <= |y| / x; with |y| <= tol x / 2 the angle is within tol even after the
+    roundings of the test and of atan2 (a few ulps), so the turn is 0 -- the same double the full form
+    returns.  An aligned segment (the common case: the Balancer's two axes every step) skips two atan2.
+    """
+    if x > 0.0 and abs(y) <= 0.5 * tol * x:
+        return 0.0
+    return limited_turn(math.atan2(y, x), max_step, tol)
+
+
+@njit(cache=True)
 def balance(c_T, R_T, h, nx, ny, nz, h_target, k2, omega, tol, dt):
     """Balancer (footnote 2) on a target pose, in place.
 
@@ -145,8 +158,8 @@ def balance(c_T, R_T, h, nx, ny, nz, h_target, k2, omega, tol, dt):
     ly = R_T[0, 1] * nx + R_T[1, 1] * ny + R_T[2, 1] * nz
     lz = R_T[0, 2] * nx + R_T[1, 2] * ny + R_T[2, 2] * nz
     step = omega * dt
-    turn_z = -limited_turn(math.atan2(lx, ly), step, tol)
-    turn_x = limited_turn(math.atan2(lz, ly), step, tol)
+    turn_z = -turn_toward(lx, ly, step, tol)
+    turn_x = turn_toward(lz, ly, step, tol)
     rotate_about_own_axis(R_T, 2, turn_z)
     rotate_about_own_axis(R_T, 0, turn_x)
 
@@ -172,7 +185,7 @@ def follow(c_T, R_T, c_self, c_ahead, l0, k1, omega, tol, dt):
     pz = R_T[0, 2] * lx + R_T[1, 2] * ly + R_T[2, 2] * lz
     if px == 0.0 and pz == 0.0:
         return
-    rotate_about_own_axis(R_T, 1, -limited_turn(math.atan2(pz, px), omega * dt, tol))
+    rotate_about_own_axis(R_T, 1, -turn_toward(pz, px, omega * dt, tol))
 
 
 @njit(cache=True)
