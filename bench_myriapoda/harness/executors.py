@@ -114,6 +114,9 @@ def _worker_main(conn) -> None:
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and stops its workers
     from ..core import registry
+    from . import compile_lock
+
+    compile_lock.install()  # a kernel another worker is compiling is waited for and loaded, not compiled twice
     registry.load_all()
     while True:
         try:

@@ -147,8 +147,8 @@ def balance(c_T, R_T, h, nx, ny, nz, h_target, k2, omega, tol, dt):
     step = omega * dt
     turn_z = -limited_turn(math.atan2(lx, ly), step, tol)
     turn_x = limited_turn(math.atan2(lz, ly), step, tol)
-    rotate_about_own_axis(R_T, 2, turn_z)
-    rotate_about_own_axis(R_T, 0, turn_x)
+    rotate_about_own_axis(R_T, np.int64(2), turn_z)
+    rotate_about_own_axis(R_T, np.int64(0), turn_x)
 
 
 @njit(cache=True)
@@ -172,7 +172,7 @@ def follow(c_T, R_T, c_self, c_ahead, l0, k1, omega, tol, dt):
     pz = R_T[0, 2] * lx + R_T[1, 2] * ly + R_T[2, 2] * lz
     if px == 0.0 and pz == 0.0:
         return
-    rotate_about_own_axis(R_T, 1, -limited_turn(math.atan2(pz, px), omega * dt, tol))
+    rotate_about_own_axis(R_T, np.int64(1), -limited_turn(math.atan2(pz, px), omega * dt, tol))
 
 
 @njit(cache=True)
@@ -186,7 +186,7 @@ def head_motion(c_T, R_T, speed, turn_rate, turn_dir, dt):
     c_T[0] += d * R_T[0, 0]
     c_T[1] += d * R_T[1, 0]
     c_T[2] += d * R_T[2, 0]
-    rotate_about_own_axis(R_T, 1, turn_dir * turn_rate * dt)
+    rotate_about_own_axis(R_T, np.int64(1), turn_dir * turn_rate * dt)
 
 
 @njit(cache=True)
