@@ -46,3 +46,19 @@ def test_scheduler_waits_only_when_every_pending_case_is_in_a_compiling_group():
     s.finished(0)
     assert s.next_job()[0] == 1
     assert s.next_job() is None and not s.pending
+
+
+def test_the_extra_compile_worker_takes_only_cases_that_start_a_compile():
+    from bench_myriapoda.harness.executors import CompileScheduler
+
+    worm = resolve_case("worm", "massspring", "flat")
+    worm_2 = resolve_case("worm", "massspring", "flat", duration=1.0)
+    chain = resolve_case("chain", "hybrid", "fig4-drop")
+    s = CompileScheduler([worm, worm_2, chain])
+    assert s.cold_groups_pending()
+    assert s.next_job()[0] == 0
+    s.finished(0)  # the worm's group is warm: worm_2 is a warm case, the chain still starts a compile
+    assert s.next_job(compile_only=True)[0] == 2
+    assert not s.cold_groups_pending()
+    assert s.next_job(compile_only=True) is None  # only warm work left: the extra worker stops
+    assert s.next_job()[0] == 1

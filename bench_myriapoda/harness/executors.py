@@ -12,7 +12,12 @@ its kernels are in numba's on-disk cache and the other workers load them instead
 of compiling them again.  With fewer groups than workers the idle workers start
 on the next group's first case, so different kernels compile in parallel; a group
 that shares large kernels with one compiling now (same body, or both legged) waits
-behind the warm cases (``CompileScheduler``).  A case that outruns ``timeout_per_case`` (measured from the
+behind the warm cases (``CompileScheduler``).  Two workers that need the same kernel
+at once (the terrain queries, the rigid segments, the leg controller are shared by
+several groups) compile it once: the second waits for the first's cache entry
+(``compile_lock``).  While groups remain to compile, one extra worker takes only
+cases that start a group's compile, so a core is not left idle by a waiting worker;
+it stops when no group is left to compile.  A case that outruns ``timeout_per_case`` (measured from the
 moment it is handed to a worker) is recorded with status ``timeout``; its worker
 is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
 recorded as ``error`` with its exit code and replaced.  A case that raises is
@@ -137,6 +142,7 @@ class _Slot:
     job: tuple[int, Case] | None = None
     started: float = 0.0  # when the case was handed over, then when the worker reported starting it
     running: bool = False
+    retired: bool = False  # stopped for good (the extra compile worker, once no group is left to compile)
 
     def deadline(self, timeout: float) -> float:
         """A case times out ``timeout`` s after its worker starts it; a worker still starting up gets a grace."""
@@ -211,12 +217,19 @@ class CompileScheduler:
         self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
         self.warm: set = set()  # groups with a finished case
 
-    def next_job(self) -> tuple[int, Case] | None:
-        """The (index, case) to hand out now, removed from the pending cases; None: wait."""
+    def cold_groups_pending(self) -> bool:
+        """Whether a pending case would start a group's compile (its group is neither warm nor compiling)."""
+        return any(self.groups[i] not in self.warm and self.groups[i] not in self.compiling for i, _ in self.pending)
+
+    def next_job(self, compile_only: bool = False) -> tuple[int, Case] | None:
+        """The (index, case) to hand out now, removed from the pending cases; None: wait.
+        ``compile_only``: only a case that starts a group's compile (the extra compile worker's jobs)."""
         best, rank = None, 4
         for k, (i, _c) in enumerate(self.pending):
             g = self.groups[i]
             if g in self.warm:
+                if compile_only:
+                    continue
                 r = 2
             elif g in self.compiling:
                 continue
@@ -250,12 +263,20 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
     pending = sched.pending
     next_job = sched.next_job
 
-    slots = [_start_slot(ctx) for _ in range(max(1, min(workers, len(cases))))]
+    n = max(1, min(workers, len(cases)))
+    # One extra worker while groups are still to compile: a worker waiting for a kernel another one is compiling
+    # (compile_lock) leaves its core idle, which the extra worker's compile fills; it takes only cases that start
+    # a group's compile and stops when none is left, so the warm cases run on ``workers`` processes.
+    extra = 1 if n >= 2 and len(set(sched.groups)) > n else 0
+    slots = [_start_slot(ctx) for _ in range(n + extra)]
     try:
         while pending or any(s.job for s in slots):
-            for s in slots:
-                if s.job is None and pending:
-                    s.job = next_job()
+            for k, s in enumerate(slots):
+                if k >= n and s.job is None and not s.retired and not sched.cold_groups_pending():
+                    s.stop()  # the extra compile worker's work is done
+                    s.retired = True
+                if s.job is None and pending and not s.retired:
+                    s.job = next_job(compile_only=k >= n)
                     if s.job is None:
                         continue
                     s.started, s.running = time.monotonic(), False
@@ -295,7 +316,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     emit(result)
     finally:
         for s in slots:
-            s.stop(kill=s.job is not None)
+            if not s.retired:
+                s.stop(kill=s.job is not None)
 
 
 # --------------------------------------------------------------------------- dask
