@@ -112,8 +112,18 @@ def done_hashes(store_path: Path | str, matrix: str, retry_failed: bool = False)
 
 # --------------------------------------------------------------------------- local
 
+def compile_case(case: Case) -> None:
+    """Compile (or load) the kernels ``case`` needs without running it: its creature's, as ``run_case`` does."""
+    from .runner import Creature
+
+    creature = Creature(case)
+    creature.compile()
+    creature.body.observe(0.0)
+
+
 def _worker_main(conn) -> None:
-    """A local worker: receive ``(index, case)``; send ``("started", index)``, then ``("done", slim result)``.
+    """A local worker: receive ``(index, case, compile_only)``; send ``("started", index)``, then
+    ``("done", slim result)``, or with ``compile_only`` ``("compiled", index)`` after :func:`compile_case`.
 
     ``None`` ends it.  The body models are imported once, before the first case.
     """
@@ -130,9 +140,16 @@ def _worker_main(conn) -> None:
             return
         if msg is None:
             return
-        index, case = msg
+        index, case, compile_only = msg
         conn.send(("started", index))
-        conn.send(("done", run_case_slim(case)))
+        if compile_only:
+            try:
+                compile_case(case)
+            except Exception:  # noqa: BLE001 -- the case's own run reports the error
+                pass
+            conn.send(("compiled", index))
+        else:
+            conn.send(("done", run_case_slim(case)))
 
 
 @dataclass
@@ -143,6 +160,7 @@ class _Slot:
     started: float = 0.0  # when the case was handed over, then when the worker reported starting it
     running: bool = False
     retired: bool = False  # stopped for good (the extra compile worker, once no group is left to compile)
+    compile_only: bool = False  # the job compiles its case's kernels without running it (the extra worker)
 
     def deadline(self, timeout: float) -> float:
         """A case times out ``timeout`` s after its worker starts it; a worker still starting up gets a grace."""
@@ -221,15 +239,12 @@ class CompileScheduler:
         """Whether a pending case would start a group's compile (its group is neither warm nor compiling)."""
         return any(self.groups[i] not in self.warm and self.groups[i] not in self.compiling for i, _ in self.pending)
 
-    def next_job(self, compile_only: bool = False) -> tuple[int, Case] | None:
-        """The (index, case) to hand out now, removed from the pending cases; None: wait.
-        ``compile_only``: only a case that starts a group's compile (the extra compile worker's jobs)."""
+    def next_job(self) -> tuple[int, Case] | None:
+        """The (index, case) to hand out now, removed from the pending cases; None: wait."""
         best, rank = None, 4
         for k, (i, _c) in enumerate(self.pending):
             g = self.groups[i]
             if g in self.warm:
-                if compile_only:
-                    continue
                 r = 2
             elif g in self.compiling:
                 continue
@@ -250,6 +265,31 @@ class CompileScheduler:
             self.compiling.add(g)
         return job
 
+    def next_compile_job(self) -> tuple[int, Case] | None:
+        """A case whose group is neither warm nor compiling, left pending, its group now compiling: the extra
+        worker compiles its kernels without running it (:func:`compile_case`), then :meth:`compiled`.
+        A group sharing no large kernels with a compiling one first (as :meth:`next_job`)."""
+        best, rank = None, 3
+        for i, c in self.pending:
+            g = self.groups[i]
+            if g in self.warm or g in self.compiling:
+                continue
+            r = 2 if any(shares_kernels(g, h) for h in self.compiling) else 1
+            if r < rank:
+                best, rank = (i, c), r
+                if r == 1:
+                    break
+        if best is not None:
+            self.compiling.add(self.groups[best[0]])
+        return best
+
+    def compiled(self, index: int, ok: bool = True) -> None:
+        """The compile-only job of case ``index`` ended: its group is warm (``ok``) or cold again."""
+        g = self.groups[index]
+        self.compiling.discard(g)
+        if ok:
+            self.warm.add(g)
+
     def finished(self, index: int) -> None:
         """Case ``index`` ended (any status): its group's kernels are compiled and cached."""
         g = self.groups[index]
@@ -265,8 +305,9 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
 
     n = max(1, min(workers, len(cases)))
     # One extra worker while groups are still to compile: a worker waiting for a kernel another one is compiling
-    # (compile_lock) leaves its core idle, which the extra worker's compile fills; it takes only cases that start
-    # a group's compile and stops when none is left, so the warm cases run on ``workers`` processes.
+    # (compile_lock) leaves its core idle, which the extra worker's compile fills.  It only compiles (a group's
+    # kernels, without running a case: no case's timing shares a core with it beyond the two workers') and stops
+    # when no group is left to compile.
     extra = 1 if n >= 2 and len(set(sched.groups)) > n else 0
     slots = [_start_slot(ctx) for _ in range(n + extra)]
     try:
@@ -276,11 +317,12 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     s.stop()  # the extra compile worker's work is done
                     s.retired = True
                 if s.job is None and pending and not s.retired:
-                    s.job = next_job(compile_only=k >= n)
+                    s.compile_only = k >= n
+                    s.job = sched.next_compile_job() if s.compile_only else next_job()
                     if s.job is None:
                         continue
                     s.started, s.running = time.monotonic(), False
-                    s.conn.send(s.job)
+                    s.conn.send((*s.job, s.compile_only))
             busy = [s for s in slots if s.job]
             wait_s = None
             if timeout is not None:
@@ -298,8 +340,20 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                         break
                     if kind == "started":  # the clock starts when the worker starts the case
                         s.started, s.running = time.monotonic(), True
-                    else:
+                    else:  # "done": the slim result; "compiled": the index of a compile-only job
                         result = payload
+                if s.compile_only:  # the extra compile worker: no result to record; a compile that died or
+                    # outran the timeout leaves its group cold, for a worker to compile with its case
+                    if result is None and (not s.proc.is_alive() or (
+                            timeout is not None and time.monotonic() >= s.deadline(timeout))):
+                        s.stop(kill=True)
+                        s.retired = True
+                        sched.compiled(s.job[0], ok=False)
+                        s.job = None
+                    elif result is not None:
+                        sched.compiled(s.job[0])
+                        s.job = None
+                    continue
                 elapsed = time.monotonic() - s.started
                 if result is None and not s.proc.is_alive():
                     s.proc.join()
