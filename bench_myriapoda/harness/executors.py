@@ -15,9 +15,10 @@ that shares large kernels with one compiling now (same body, or both legged) wai
 behind the warm cases (``CompileScheduler``).  Two workers that need the same kernel
 at once (the terrain queries, the rigid segments, the leg controller are shared by
 several groups) compile it once: the second waits for the first's cache entry
-(``compile_lock``).  While groups remain to compile, one extra worker takes only
-cases that start a group's compile, so a core is not left idle by a waiting worker;
-it stops when no group is left to compile.  A case that outruns ``timeout_per_case`` (measured from the
+(``compile_lock``).  While groups remain to compile, one extra worker compiles a
+cold group's kernels without running its case (``compile_case``; the case then runs
+on a worker as a warm case), so a core is not left idle by a waiting worker and no
+timed case shares a core with it; it stops when no group is left to compile.  A case that outruns ``timeout_per_case`` (measured from the
 moment it is handed to a worker) is recorded with status ``timeout``; its worker
 is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
 recorded as ``error`` with its exit code and replaced.  A case that raises is
