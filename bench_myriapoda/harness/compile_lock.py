@@ -17,7 +17,6 @@ compiled as before.
 """
 from __future__ import annotations
 
-import fcntl
 import hashlib
 import os
 import time
@@ -40,7 +39,12 @@ def _lock_path(dispatcher, args) -> str:
 
 
 def install() -> None:
-    """Wrap numba's ``Dispatcher.compile`` in this process (idempotent)."""
+    """Wrap numba's ``Dispatcher.compile`` in this process (idempotent; without ``fcntl``, e.g. on Windows,
+    nothing changes and workers may compile a shared kernel side by side as before)."""
+    try:
+        import fcntl
+    except ImportError:
+        return
     from numba.core import dispatcher as nd, sigutils
     from numba.core.caching import NullCache
 
