@@ -46,3 +46,34 @@ def test_scheduler_waits_only_when_every_pending_case_is_in_a_compiling_group():
     s.finished(0)
     assert s.next_job()[0] == 1
     assert s.next_job() is None and not s.pending
+
+
+
+def test_the_extra_compile_worker_compiles_a_cold_group_and_leaves_its_case_to_the_workers():
+    from bench_myriapoda.harness.executors import CompileScheduler
+
+    worm = resolve_case("worm", "massspring", "flat")
+    worm_2 = resolve_case("worm", "massspring", "flat", duration=1.0)
+    chain = resolve_case("chain", "hybrid", "fig4-drop")
+    snake_fem = resolve_case("snake", "fem", "flat")
+    s = CompileScheduler([worm, worm_2, chain, snake_fem])
+    assert s.next_job()[0] == 0  # a worker starts the worm's compile
+    assert s.next_compile_job()[0] == 2  # the extra worker compiles the chain's group, shares nothing with it
+    assert s.next_job()[0] == 3  # another worker: the FEM group (worm_2 waits for the worm, the chain compiles)
+    assert s.cold_groups_pending() is False
+    assert s.next_compile_job() is None  # nothing left to compile: the extra worker stops
+    s.compiled(2)  # the chain's kernels are in the cache; its case is a warm case now, still pending
+    assert s.next_job()[0] == 2
+    s.finished(0)
+    assert s.next_job()[0] == 1
+    assert s.next_job() is None and not s.pending
+
+
+def test_a_failed_compile_only_job_leaves_its_group_cold():
+    from bench_myriapoda.harness.executors import CompileScheduler
+
+    chain = resolve_case("chain", "hybrid", "fig4-drop")
+    s = CompileScheduler([chain])
+    assert s.next_compile_job()[0] == 0 and s.next_job() is None
+    s.compiled(0, ok=False)
+    assert s.cold_groups_pending() and s.next_job()[0] == 0

@@ -378,11 +378,12 @@ def _free_rotation(h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2):
     is a rotation, so |L| and the world vector L are kept to round-off.
     (l0, l1, l2): body-frame angular momentum [kg m^2/s].  Returns (q, L_body).
     """
-    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(0, 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
-    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(1, 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
-    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(2, h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
-    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(1, 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
-    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(0, 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
+    # np.int64 axes, not the literals: a Literal[int] argument compiles one signature of _axis_flow per axis
+    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(np.int64(0), 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
+    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(np.int64(1), 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
+    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(np.int64(2), h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
+    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(np.int64(1), 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
+    qw, qx, qy, qz, l0, l1, l2 = _axis_flow(np.int64(0), 0.5 * h, qw, qx, qy, qz, l0, l1, l2, i0, i1, i2)
     return qw, qx, qy, qz, l0, l1, l2
 
 
@@ -503,7 +504,9 @@ def _hu_friction_impulse(a, b, d, u1, u2, m1, m2, lam_n):
     return m1 * p1 * scale, m2 * p2 * scale
 
 
-@njit(cache=True)
+# inlined into its one caller, _step_body: as a kernel of its own numba would optimize and emit its
+# machine code twice (once alone, once linked into _step_body), seconds of compile (README Development notes)
+@njit(cache=True, inline="always")
 def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
                     bounce_threshold, n_iterations, tolerance, impulse_cache, corner_of,
                     lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
@@ -656,7 +659,9 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
     return nc
 
 
-@njit(cache=True)
+# inlined into its one caller, _step_body: as a kernel of its own numba would optimize and emit its
+# machine code twice (once alone, once linked into _step_body), seconds of compile (README Development notes)
+@njit(cache=True, inline="always")
 def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f,
                        n_iterations, beta, slop):
     """Push body i's corners out of the terrain by moving its pose (not its velocity).

@@ -65,7 +65,27 @@ def unsupported_reason(body, controller, steps_per_tick: int, act) -> str | None
     return CC.unsupported_reason(controller)
 
 
-@njit(cache=True, error_model="numpy")
+# The timeline rows are copied element-wise, not as rec[n] = a: an array assigned to a slice compiles numba's
+# shape-mismatch message (string formatting, seconds of compile per process; README Development notes).
+@njit(cache=True, error_model="numpy", inline="always")
+def _copy_rows(a, out):
+    """out[i, k] = a[i, k] for a, out (n, 3)."""
+    for i in range(a.shape[0]):
+        out[i, 0], out[i, 1], out[i, 2] = a[i, 0], a[i, 1], a[i, 2]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _copy_frames(R, out):
+    """out[i] = R[i] for R, out (n, 3, 3)."""
+    for i in range(R.shape[0]):
+        for r in range(3):
+            out[i, r, 0], out[i, r, 1], out[i, r, 2] = R[i, r, 0], R[i, r, 1], R[i, r, 2]
+
+
+# _control and _control_and_support are inlined into the chunks (numba IR inlining): as kernels of their own, numba
+# would optimize and emit the whole controller's machine code once per layer (each compiled function links its
+# callees' code and compiles it again), about 10 s of a cold start (README Development notes).
+@njit(cache=True, error_model="numpy", inline="always")
 def _control(t, C, c, R, REC, n_rec):
     """Step 2 of the module docstring on the segment poses c (n_seg, 3) [m], R (n_seg, 3, 3) for the step
     starting at t [s], and the controller's half of step 4 (row n_rec of REC); returns whether recorded.
@@ -86,11 +106,11 @@ def _control(t, C, c, R, REC, n_rec):
         rec_brain[n_rec] = ints[CC.I_BRAIN]
         rec_contact[n_rec, 0] = ints[CC.I_HAS_ANTENNAE] != 0 and contact[0]
         rec_contact[n_rec, 1] = ints[CC.I_HAS_ANTENNAE] != 0 and contact[1]
-        rec_centres[n_rec] = c
+        _copy_rows(c, rec_centres[n_rec])
     return recorded
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _control_and_support(t, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb, residual, dt, S, REC,
                          n_rec):
     """Steps 1-4 of the module docstring on a body of rigid boxes for the step starting at t [s]; returns
@@ -121,8 +141,8 @@ def _control_and_support(t, C, c, q, vr, w, kinematic, x, v, fixed, att_body, at
     K.place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
     # 4. the monitor's sample: poses after the support, link centres as the mean of their nodes
     if recorded:
-        rec_c[n_rec] = c
-        rec_R[n_rec] = Rb   # place_attached_nodes left the new rotations there
+        _copy_rows(c, rec_c[n_rec])
+        _copy_frames(Rb, rec_R[n_rec])   # place_attached_nodes left the new rotations there
         n_links, per_link = link_nodes.shape[0], link_nodes.shape[1]
         for li in range(n_links):
             for a in range(3):
@@ -237,8 +257,8 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
             for i in range(3):
                 att_target[e, i] = c_T[b, i] + ((R_T[b, i, 0] * r0 + R_T[b, i, 2] * r2) + R_T[b, i, 1] * r1)
         if recorded:
-            rec_c[n_rec] = cseg
-            rec_R[n_rec] = Rseg
+            _copy_rows(cseg, rec_c[n_rec])
+            _copy_frames(Rseg, rec_R[n_rec])
             for li in range(n_seg - 1):
                 for i in range(3):
                     rec_links[n_rec, li, i] = 0.5 * (cseg[li, i] + cseg[li + 1, i])

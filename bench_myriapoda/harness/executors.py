@@ -12,7 +12,13 @@ its kernels are in numba's on-disk cache and the other workers load them instead
 of compiling them again.  With fewer groups than workers the idle workers start
 on the next group's first case, so different kernels compile in parallel; a group
 that shares large kernels with one compiling now (same body, or both legged) waits
-behind the warm cases (``CompileScheduler``).  A case that outruns ``timeout_per_case`` (measured from the
+behind the warm cases (``CompileScheduler``).  Two workers that need the same kernel
+at once (the terrain queries, the rigid segments, the leg controller are shared by
+several groups) compile it once: the second waits for the first's cache entry
+(``compile_lock``).  While groups remain to compile, one extra worker compiles a
+cold group's kernels without running its case (``compile_case``; the case then runs
+on a worker as a warm case), so a core is not left idle by a waiting worker and no
+timed case shares a core with it; it stops when no group is left to compile.  A case that outruns ``timeout_per_case`` (measured from the
 moment it is handed to a worker) is recorded with status ``timeout``; its worker
 is killed and replaced.  A worker that dies (a segfault, an OOM kill) is
 recorded as ``error`` with its exit code and replaced.  A case that raises is
@@ -107,13 +113,26 @@ def done_hashes(store_path: Path | str, matrix: str, retry_failed: bool = False)
 
 # --------------------------------------------------------------------------- local
 
+def compile_case(case: Case) -> None:
+    """Compile (or load) the kernels ``case`` needs without running it: its creature's, as ``run_case`` does."""
+    from .runner import Creature
+
+    creature = Creature(case)
+    creature.compile()
+    creature.body.observe(0.0)
+
+
 def _worker_main(conn) -> None:
-    """A local worker: receive ``(index, case)``; send ``("started", index)``, then ``("done", slim result)``.
+    """A local worker: receive ``(index, case, compile_only)``; send ``("started", index)``, then
+    ``("done", slim result)``, or with ``compile_only`` ``("compiled", index)`` after :func:`compile_case`.
 
     ``None`` ends it.  The body models are imported once, before the first case.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and stops its workers
     from ..core import registry
+    from . import compile_lock
+
+    compile_lock.install()  # a kernel another worker is compiling is waited for and loaded, not compiled twice
     registry.load_all()
     while True:
         try:
@@ -122,9 +141,16 @@ def _worker_main(conn) -> None:
             return
         if msg is None:
             return
-        index, case = msg
+        index, case, compile_only = msg
         conn.send(("started", index))
-        conn.send(("done", run_case_slim(case)))
+        if compile_only:
+            try:
+                compile_case(case)
+            except Exception:  # noqa: BLE001 -- the case's own run reports the error
+                pass
+            conn.send(("compiled", index))
+        else:
+            conn.send(("done", run_case_slim(case)))
 
 
 @dataclass
@@ -134,6 +160,8 @@ class _Slot:
     job: tuple[int, Case] | None = None
     started: float = 0.0  # when the case was handed over, then when the worker reported starting it
     running: bool = False
+    retired: bool = False  # stopped for good (the extra compile worker, once no group is left to compile)
+    compile_only: bool = False  # the job compiles its case's kernels without running it (the extra worker)
 
     def deadline(self, timeout: float) -> float:
         """A case times out ``timeout`` s after its worker starts it; a worker still starting up gets a grace."""
@@ -208,6 +236,10 @@ class CompileScheduler:
         self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
         self.warm: set = set()  # groups with a finished case
 
+    def cold_groups_pending(self) -> bool:
+        """Whether a pending case would start a group's compile (its group is neither warm nor compiling)."""
+        return any(self.groups[i] not in self.warm and self.groups[i] not in self.compiling for i, _ in self.pending)
+
     def next_job(self) -> tuple[int, Case] | None:
         """The (index, case) to hand out now, removed from the pending cases; None: wait."""
         best, rank = None, 4
@@ -234,6 +266,31 @@ class CompileScheduler:
             self.compiling.add(g)
         return job
 
+    def next_compile_job(self) -> tuple[int, Case] | None:
+        """A case whose group is neither warm nor compiling, left pending, its group now compiling: the extra
+        worker compiles its kernels without running it (:func:`compile_case`), then :meth:`compiled`.
+        A group sharing no large kernels with a compiling one first (as :meth:`next_job`)."""
+        best, rank = None, 3
+        for i, c in self.pending:
+            g = self.groups[i]
+            if g in self.warm or g in self.compiling:
+                continue
+            r = 2 if any(shares_kernels(g, h) for h in self.compiling) else 1
+            if r < rank:
+                best, rank = (i, c), r
+                if r == 1:
+                    break
+        if best is not None:
+            self.compiling.add(self.groups[best[0]])
+        return best
+
+    def compiled(self, index: int, ok: bool = True) -> None:
+        """The compile-only job of case ``index`` ended: its group is warm (``ok``) or cold again."""
+        g = self.groups[index]
+        self.compiling.discard(g)
+        if ok:
+            self.warm.add(g)
+
     def finished(self, index: int) -> None:
         """Case ``index`` ended (any status): its group's kernels are compiled and cached."""
         g = self.groups[index]
@@ -247,16 +304,26 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
     pending = sched.pending
     next_job = sched.next_job
 
-    slots = [_start_slot(ctx) for _ in range(max(1, min(workers, len(cases))))]
+    n = max(1, min(workers, len(cases)))
+    # One extra worker while groups are still to compile: a worker waiting for a kernel another one is compiling
+    # (compile_lock) leaves its core idle, which the extra worker's compile fills.  It only compiles (a group's
+    # kernels, without running a case: no case's timing shares a core with it beyond the two workers') and stops
+    # when no group is left to compile.
+    extra = 1 if n >= 2 and len(set(sched.groups)) > n else 0
+    slots = [_start_slot(ctx) for _ in range(n + extra)]
     try:
         while pending or any(s.job for s in slots):
-            for s in slots:
-                if s.job is None and pending:
-                    s.job = next_job()
+            for k, s in enumerate(slots):
+                if k >= n and s.job is None and not s.retired and not sched.cold_groups_pending():
+                    s.stop()  # the extra compile worker's work is done
+                    s.retired = True
+                if s.job is None and pending and not s.retired:
+                    s.compile_only = k >= n
+                    s.job = sched.next_compile_job() if s.compile_only else next_job()
                     if s.job is None:
                         continue
                     s.started, s.running = time.monotonic(), False
-                    s.conn.send(s.job)
+                    s.conn.send((*s.job, s.compile_only))
             busy = [s for s in slots if s.job]
             wait_s = None
             if timeout is not None:
@@ -274,8 +341,20 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                         break
                     if kind == "started":  # the clock starts when the worker starts the case
                         s.started, s.running = time.monotonic(), True
-                    else:
+                    else:  # "done": the slim result; "compiled": the index of a compile-only job
                         result = payload
+                if s.compile_only:  # the extra compile worker: no result to record; a compile that died or
+                    # outran the timeout leaves its group cold, for a worker to compile with its case
+                    if result is None and (not s.proc.is_alive() or (
+                            timeout is not None and time.monotonic() >= s.deadline(timeout))):
+                        s.stop(kill=True)
+                        s.retired = True
+                        sched.compiled(s.job[0], ok=False)
+                        s.job = None
+                    elif result is not None:
+                        sched.compiled(s.job[0])
+                        s.job = None
+                    continue
                 elapsed = time.monotonic() - s.started
                 if result is None and not s.proc.is_alive():
                     s.proc.join()
@@ -292,7 +371,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     emit(result)
     finally:
         for s in slots:
-            s.stop(kill=s.job is not None)
+            if not s.retired:
+                s.stop(kill=s.job is not None)
 
 
 # --------------------------------------------------------------------------- dask

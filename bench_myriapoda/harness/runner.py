@@ -202,9 +202,12 @@ class Creature:
         return getattr(self.body, name)
 
     def compile(self) -> None:
-        self.body.compile()
+        # the controller first: its kernels need only the terrain's, so on a cold start (issue 13) a matrix worker
+        # compiles them while another worker compiles the body kernels this case then waits for (compile_lock);
+        # both compiles leave the body's and the controller's state as they were, so the order changes no result
         if self.own_controller:
             compile_controller(self.body, self.controller, self.open_loop)
+        self.body.compile()
         self.stepper.start()
 
     def advance(self, t0: float, n_steps: int) -> tuple[int, int]:

@@ -477,7 +477,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
             uz[f] = oz[f] + dt * fz[f] * im[f]
             ph[f] = _flat_phi(plane, h, ms, cs, px[f], py[f])
     # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
-    count = 0
+    count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
     for c in range(4):
         for f in range(n_faces):
             phi = wphi[c, f]

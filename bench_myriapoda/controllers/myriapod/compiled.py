@@ -381,7 +381,11 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     # 4. legs
     collide = ints[I_COLLIDE] != 0
     if collide:
-        prev_angles[:, :] = angles
+        # element-wise, not prev_angles[:, :] = angles: an array copied into a slice compiles numba's
+        # shape-mismatch message (string formatting, seconds of compile per process; README Development notes)
+        for k in range(n_legs):
+            for a in range(angles.shape[1]):
+                prev_angles[k, a] = angles[k, a]
     SW.switcher_step(states, angles, airborne, touching, ik_failed, sw_params, dt, entered)
     if collide:
         ints[I_LEG_STUCK] += LC.stop_swinging_legs(states, prev_angles, angles, c_T, R_T, geom, kind, terr, stopped)

@@ -160,8 +160,8 @@ def balance(c_T, R_T, h, nx, ny, nz, h_target, k2, omega, tol, dt):
     step = omega * dt
     turn_z = -turn_toward(lx, ly, step, tol)
     turn_x = turn_toward(lz, ly, step, tol)
-    rotate_about_own_axis(R_T, 2, turn_z)
-    rotate_about_own_axis(R_T, 0, turn_x)
+    rotate_about_own_axis(R_T, np.int64(2), turn_z)
+    rotate_about_own_axis(R_T, np.int64(0), turn_x)
 
 
 @njit(cache=True)
@@ -185,7 +185,7 @@ def follow(c_T, R_T, c_self, c_ahead, l0, k1, omega, tol, dt):
     pz = R_T[0, 2] * lx + R_T[1, 2] * ly + R_T[2, 2] * lz
     if px == 0.0 and pz == 0.0:
         return
-    rotate_about_own_axis(R_T, 1, -turn_toward(pz, px, omega * dt, tol))
+    rotate_about_own_axis(R_T, np.int64(1), -turn_toward(pz, px, omega * dt, tol))
 
 
 @njit(cache=True)
@@ -199,7 +199,7 @@ def head_motion(c_T, R_T, speed, turn_rate, turn_dir, dt):
     c_T[0] += d * R_T[0, 0]
     c_T[1] += d * R_T[1, 0]
     c_T[2] += d * R_T[2, 0]
-    rotate_about_own_axis(R_T, 1, turn_dir * turn_rate * dt)
+    rotate_about_own_axis(R_T, np.int64(1), turn_dir * turn_rate * dt)
 
 
 @njit(cache=True)
