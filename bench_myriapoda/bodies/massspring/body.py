@@ -24,7 +24,7 @@ from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
-from .lattice import build_lattice, spring_families
+from .lattice import build_lattice, spring_families, spring_groups
 
 
 # Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
@@ -132,12 +132,22 @@ class BodyMassSpring(NodeSegments):
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
-        # the step kernel's spring families and corner-major work arrays (kernels module docstring)
+        # the step kernel's spring groups and corner-major work arrays (kernels module docstring);
+        # the families' work arrays serve their per-family reference kernels (tests)
         n_faces = cre.segments + 1
         self.families = spring_families(lat, self.stiffness, self.damping)
-        self._xc, self._vc, self._fc = (np.zeros((3, 4, n_faces)) for _ in range(3))
-        self._dfs = np.zeros((3, n_faces))
-        self._rest_fam = np.zeros((self.families.index.shape[0], n_faces))
+        self.groups = spring_groups(self.families, n_faces)
+        if self.groups.plan.shape[1] != K.N_TERMS:
+            raise ValueError(f"lattice nodes sum {self.groups.plan.shape[1]} spring forces, the kernel {K.N_TERMS}")
+        stride = self.groups.stride
+        # positions and velocities carry a fifth, padding corner row: the groups' loops over whole rows
+        # read b ends up to one column past the fourth
+        self._xc, self._vc = np.zeros((3, 5, stride)), np.zeros((3, 5, stride))
+        self._fc = np.zeros((3, 4, stride))
+        self._gf = np.full((3 * self.groups.index.shape[0], 4 * stride + 1), -0.0)
+        self._st, self._fs = np.ones(4 * stride), np.ones(4 * stride)
+        self._dfs = np.zeros((3, stride))
+        self._rest_fam = np.zeros((self.families.index.shape[0], stride))
         self._stretch_c = np.ones((4, cre.segments))
 
     # ------------------------------------------------------------------ stepping
@@ -147,11 +157,11 @@ class BodyMassSpring(NodeSegments):
         Without ``act`` the muscles are at rest (a passive body)."""
         if act is None:
             act = self._rest_actuation
-        fam = self.families
-        return K.advance(self.x, self.v, self.inv_mass, fam.index, fam.params, act.muscle, self.fric_model,
-                         self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                         self._xc, self._vc, self._fc, self._dfs, self._rest_fam, self._act, self._face_scale,
-                         self._stretch_c, self._spine, self.acc)
+        grp = self.groups
+        return K.advance(self.x, self.v, self.inv_mass, grp.index, grp.params, grp.plan, act.muscle,
+                         self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
+                         self._xc, self._vc, self._fc, self._gf, self._st, self._fs, self._act,
+                         self._face_scale, self._spine, self.acc)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""

@@ -51,8 +51,8 @@ from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
-from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, PAR_D, PAR_K, PAR_L0,
-                      PAR_LC, SIDE_FACES)
+from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, GRP_DROW, GRP_HI, GRP_KIND,
+                      GRP_LO, GRP_SHIFT, PAR_D, PAR_K, PAR_L0, PAR_LC, PLAN_BACK, PLAN_GROUP, PLAN_SIGN, SIDE_FACES)
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
@@ -175,8 +175,9 @@ def spine_vectors(x, n_faces, out):
 
 @njit(cache=True)
 def spine_vectors_c(xc, out):
-    """``spine_vectors`` from corner-major positions xc (3, 4, n_faces): the same sums in the same order."""
-    n_faces = xc.shape[2]
+    """``spine_vectors`` from corner-major positions xc (3, 4, >= n_faces) into out (n_faces, 3): the same
+    sums in the same order."""
+    n_faces = out.shape[0]
     for j in range(n_faces):
         a = j - 1 if j > 0 else 0
         b = j + 1 if j < n_faces - 1 else n_faces - 1
@@ -194,8 +195,8 @@ def spine_vectors_c(xc, out):
 
 @njit(cache=True)
 def _corner_major(a, ac):
-    """Copy a (n_nodes, 3) into ac (3, 4, n_faces) (node 4 f + c at [:, c, f])."""
-    for f in range(ac.shape[2]):
+    """Copy a (n_nodes, 3) into ac (3, 4, >= n_faces) (node 4 f + c at [:, c, f]; padding columns untouched)."""
+    for f in range(a.shape[0] // 4):
         for c in range(4):
             for d in range(3):
                 ac[d, c, f] = a[4 * f + c, d]
@@ -203,8 +204,8 @@ def _corner_major(a, ac):
 
 @njit(cache=True)
 def _node_major(ac, a):
-    """Copy ac (3, 4, n_faces) back into a (n_nodes, 3)."""
-    for f in range(ac.shape[2]):
+    """Copy ac (3, 4, >= n_faces) back into a (n_nodes, 3)."""
+    for f in range(a.shape[0] // 4):
         for c in range(4):
             for d in range(3):
                 a[4 * f + c, d] = ac[d, c, f]
@@ -293,6 +294,138 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
                 fb[t] += g[t]
 
 
+N_TERMS = 9  # spring force terms of every node of a cube lattice (lattice.SpringGroups.plan)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
+    """The force f u of the spring from flat index ia (its a end) to ib (its b end) of the flat
+    corner-major arrays xf, vf (axis stride ``dim``): ``family_spring_forces``'s arithmetic, operation
+    by operation (a spring shorter than 1e-12 m pulls nothing).  Indices are uint64 (see
+    ``group_spring_forces``)."""
+    dim2 = dim + dim
+    dx = xf[ib] - xf[ia]
+    dy = xf[dim + ib] - xf[dim + ia]
+    dz = xf[dim2 + ib] - xf[dim2 + ia]
+    length = math.sqrt(dx * dx + dy * dy + dz * dz)
+    ux, uy, uz = dx / length, dy / length, dz / length
+    ldot = (vf[ib] - vf[ia]) * ux + (vf[dim + ib] - vf[dim + ia]) * uy + (vf[dim2 + ib] - vf[dim2 + ia]) * uz
+    f = k * (rest - length) - d * ldot
+    live = length >= 1e-12
+    return (f * ux if live else 0.0), (f * uy if live else 0.0), (f * uz if live else 0.0)
+
+
+@njit(cache=True, error_model="numpy")
+def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc):
+    """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
+    ``family_spring_forces`` (fc zeroed first) in ``lattice.SpringGroups`` loops, bitwise the same forces.
+
+    act (n_seg, 3): the step's muscle strains; xc, vc (3, 5, stride) corner-major positions [m] and
+    velocities [m/s] (stride = ``SpringGroups.stride``: node (c, t) at flat index c * stride + t of an
+    axis; row 4 is padding, read by the loops' last springs); grp, gpar, plan: ``SpringGroups`` index,
+    params and plan.  Scratch: face_scale (n_faces,); st, fs (4 stride,) the fibre stretches and face
+    scales by corner row; gf (3 n_groups, 4 stride + 1), filled with -0.0 once, the groups' spring
+    forces, spring i at column 1 + i.
+
+    Pass 1, one loop per group over its whole rows: the rest length of every spring (the rules of
+    ``lattice_rest_lengths``, the same operations) and its force f u, as ``family_spring_forces``.
+    Pass 2, one loop per corner and axis over whole rows: each node sums the terms of ``plan``,
+    starting from 0.0, in the order in which ``family_spring_forces`` adds them.  A spring that does
+    not exist is read as an exact no-op: +0.0 where it would be subtracted (x - 0.0 == x for every x)
+    and -0.0 where added (x + -0.0 == x, also for x = -0.0), so every node of a row runs the same sum
+    and the loops have no branches.  The padding columns' sums are never used.
+
+    The loops index flat arrays with uint64 offsets: a signed index plus a run-time offset could be
+    negative to numba, whose wrap-around select turns the loads into gathers, and views per loop cost
+    a reference count each (measured: about 0.15 us per group loop with views on a 6-segment snake).
+    """
+    n_seg = act.shape[0]
+    n_faces = n_seg + 1
+    stride = xc.shape[2]
+    face_scales(act, volume_conserving, face_scale)
+    for c in range(4):
+        for t in range(n_seg):
+            st[c * stride + t] = fibre_stretch(act, t, c)
+        for t in range(n_faces):
+            fs[c * stride + t] = face_scale[t]
+    xf = xc.reshape(xc.size)
+    vf = vc.reshape(vc.size)
+    gff = gf.reshape(gf.size)
+    gp = gpar.reshape(gpar.size)
+    dim = np.uint64(xc.shape[1] * stride)
+    n_groups = grp.shape[0]
+    glen = gf.shape[1]
+    plen = gpar.shape[2]
+    one = np.uint64(1)
+    for g in range(n_groups):
+        s = grp[g, GRP_SHIFT]
+        drow = grp[g, GRP_DROW] * stride
+        lo = grp[g, GRP_LO] * stride
+        n = (grp[g, GRP_HI] - grp[g, GRP_LO]) * stride  # whole rows: b ends up to flat 4 stride (the padding row)
+        kind = grp[g, GRP_KIND]
+        ia0 = np.uint64(lo)
+        ib0 = np.uint64(lo + drow + s)  # the b end of the group's first spring
+        sb0 = np.uint64(lo + drow)  # the b end's fibre, same segment
+        pk = np.uint64((PAR_K * n_groups + g) * plen + lo)
+        pd = np.uint64((PAR_D * n_groups + g) * plen + lo)
+        pl0 = np.uint64((PAR_L0 * n_groups + g) * plen + lo)
+        plc = np.uint64((PAR_LC * n_groups + g) * plen + lo)
+        o0 = np.uint64(3 * g * glen + 1 + lo)
+        o1 = np.uint64((3 * g + 1) * glen + 1 + lo)
+        o2 = np.uint64((3 * g + 2) * glen + 1 + lo)
+        if kind == AXIAL:
+            for t in range(n):
+                u = np.uint64(t)
+                rest = gp[pl0 + u] * st[ia0 + u]
+                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
+        elif kind == CROSS:
+            for t in range(n):
+                u = np.uint64(t)
+                rest = gp[plc + u] * fs[ia0 + u]
+                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
+        else:
+            for t in range(n):
+                u = np.uint64(t)
+                axial = gp[pl0 + u] * 0.5 * (st[ia0 + u] + st[sb0 + u])
+                cross = gp[plc + u] * 0.5 * (fs[ia0 + u] + fs[ia0 + u + one])
+                rest = math.sqrt(axial * axial + cross * cross)
+                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
+        if s != 0:  # the springs past the last face: +0.0 read by its a end, -0.0 read by the next row's first b end
+            for r in range(grp[g, GRP_LO], grp[g, GRP_HI]):
+                for e in range(3):
+                    gf[3 * g + e, 1 + r * stride + n_faces - 1] = 0.0
+                    gf[3 * g + e, 1 + r * stride + stride - 1] = -0.0
+    fcf = fc.reshape(fc.size)
+    for c in range(4):
+        b = 1 + c * stride
+        for e in range(3):
+            out = np.uint64((e * 4 + c) * stride)
+            r0 = np.uint64((3 * plan[c, 0, PLAN_GROUP] + e) * glen + b - plan[c, 0, PLAN_BACK])
+            r1 = np.uint64((3 * plan[c, 1, PLAN_GROUP] + e) * glen + b - plan[c, 1, PLAN_BACK])
+            r2 = np.uint64((3 * plan[c, 2, PLAN_GROUP] + e) * glen + b - plan[c, 2, PLAN_BACK])
+            r3 = np.uint64((3 * plan[c, 3, PLAN_GROUP] + e) * glen + b - plan[c, 3, PLAN_BACK])
+            r4 = np.uint64((3 * plan[c, 4, PLAN_GROUP] + e) * glen + b - plan[c, 4, PLAN_BACK])
+            r5 = np.uint64((3 * plan[c, 5, PLAN_GROUP] + e) * glen + b - plan[c, 5, PLAN_BACK])
+            r6 = np.uint64((3 * plan[c, 6, PLAN_GROUP] + e) * glen + b - plan[c, 6, PLAN_BACK])
+            r7 = np.uint64((3 * plan[c, 7, PLAN_GROUP] + e) * glen + b - plan[c, 7, PLAN_BACK])
+            r8 = np.uint64((3 * plan[c, 8, PLAN_GROUP] + e) * glen + b - plan[c, 8, PLAN_BACK])
+            s0, s1, s2 = float(plan[c, 0, PLAN_SIGN]), float(plan[c, 1, PLAN_SIGN]), float(plan[c, 2, PLAN_SIGN])
+            s3, s4, s5 = float(plan[c, 3, PLAN_SIGN]), float(plan[c, 4, PLAN_SIGN]), float(plan[c, 5, PLAN_SIGN])
+            s6, s7, s8 = float(plan[c, 6, PLAN_SIGN]), float(plan[c, 7, PLAN_SIGN]), float(plan[c, 8, PLAN_SIGN])
+            for t in range(stride):
+                u = np.uint64(t)
+                # x + (-1.0 * y) == x - y exactly: the sum of family_spring_forces, term by term
+                a = 0.0 + s0 * gff[r0 + u]
+                a = a + s1 * gff[r1 + u]
+                a = a + s2 * gff[r2 + u]
+                a = a + s3 * gff[r3 + u]
+                a = a + s4 * gff[r4 + u]
+                a = a + s5 * gff[r5 + u]
+                a = a + s6 * gff[r6 + u]
+                a = a + s7 * gff[r7 + u]
+                fcf[out + u] = a + s8 * gff[r8 + u]
+
+
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
 W_VX, W_VY, W_VZ, W_PHI, W_PEN, B_VX, B_VY, B_VZ, B_SX, B_SY, B_SZ, B_JN = range(12)
 N_WORK = 12
@@ -365,9 +498,10 @@ def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fri
 
     Velocity update from the forces fc, contact friction (under ``stick`` only for the corners of
     segments in ``seg_held``), position update, Miller's collision and the blow-up checks, node by
-    node.  xc, vc, fc (3, 4, n_faces).  Returns (nodes within the contact distance, status).
+    node.  xc, vc, fc (3, 4, >= n_faces); inv_mass (n_nodes,).  Returns (nodes within the contact
+    distance, status).
     """
-    n_faces = xc.shape[2]
+    n_faces = inv_mass.shape[0] // 4
     n_seg = n_faces - 1
     g = phys[GRAVITY]
     dt = phys[DT]
@@ -442,12 +576,17 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     (``coulomb_friction_batch``; the surface normal is the same for every node here); (4) position
     update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
     fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects.
+    Passes (1) and (4) are element-wise, so each is one loop over the four corner rows taken as one
+    flat row (rows of a short body's few faces are too short to vectorise one by one).
     The step's status is that of the last node in node order with a problem, as in the node loop.
-    xc, vc, fc (3, 4, n_faces); imc (4, n_faces): inverse masses [1/kg], corner-major (0: held in
-    place); work (N_WORK, 4 n_faces); touch (4 n_faces,) int64 and code (4, n_faces) int64 scratch.
+    xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
+    imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
+    work (N_WORK, 4 stride); touch (4 stride,) int64 and code (4, stride) int64 scratch.
     Returns (nodes within the contact distance, status).
     """
-    n_faces = xc.shape[2]
+    n_faces = spine.shape[0]
+    stride = xc.shape[2]
+    n_flat = 4 * stride
     g = phys[GRAVITY]
     dt = phys[DT]
     r_n = phys[R_N]
@@ -461,21 +600,24 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     h = terr[0]
     ms = -math.sin(terr[1])
     cs = math.cos(terr[1])
-    wvx, wvy, wvz = work[W_VX].reshape((4, n_faces)), work[W_VY].reshape((4, n_faces)), work[W_VZ].reshape((4, n_faces))
-    wphi, wpen = work[W_PHI].reshape((4, n_faces)), work[W_PEN].reshape((4, n_faces))
+    xf = xc.reshape((3, xc.shape[1] * stride))  # rows 0..3 of a (3, 5, stride) array: its padding row past them
+    vf = vc.reshape((3, vc.shape[1] * stride))
+    ff = fc.reshape((3, fc.shape[1] * stride))
+    im = imc.reshape(n_flat)
+    wvx, wvy, wvz = work[W_VX].reshape((4, stride)), work[W_VY].reshape((4, stride)), work[W_VZ].reshape((4, stride))
+    wphi, wpen = work[W_PHI].reshape((4, stride)), work[W_PEN].reshape((4, stride))
     bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
     bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
     # (1) velocities after forces and signed distances (a held node's are computed and never used)
-    for c in range(4):
-        im, ox, oy, oz = imc[c], vc[0, c], vc[1, c], vc[2, c]
-        fx, fy, fz = fc[0, c], fc[1, c], fc[2, c]
-        px, py = xc[0, c], xc[1, c]
-        ux, uy, uz, ph = wvx[c], wvy[c], wvz[c], wphi[c]
-        for f in range(n_faces):
-            ux[f] = ox[f] + dt * fx[f] * im[f]
-            uy[f] = oy[f] + dt * (fy[f] * im[f] - g)
-            uz[f] = oz[f] + dt * fz[f] * im[f]
-            ph[f] = _flat_phi(plane, h, ms, cs, px[f], py[f])
+    ox, oy, oz = vf[0], vf[1], vf[2]
+    fx, fy, fz = ff[0], ff[1], ff[2]
+    px, py = xf[0], xf[1]
+    ux, uy, uz, ph = work[W_VX], work[W_VY], work[W_VZ], work[W_PHI]
+    for n in range(n_flat):
+        ux[n] = ox[n] + dt * fx[n] * im[n]
+        uy[n] = oy[n] + dt * (fy[n] * im[n] - g)
+        uz[n] = oz[n] + dt * fz[n] * im[n]
+        ph[n] = _flat_phi(plane, h, ms, cs, px[n], py[n])
     # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
     count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
     for c in range(4):
@@ -492,7 +634,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
                 bjn[count] = -(1.0 + r_n) * vn if (vn < 0.0 and reaches) else 0.0
                 bvx[count], bvy[count], bvz[count] = vx, vy, vz
                 bsx[count], bsy[count], bsz[count] = spine[f, 0], spine[f, 1], spine[f, 2]
-                touch[count] = c * n_faces + f
+                touch[count] = c * stride + f
                 count += 1
     # (3) friction, vectorised, and back to the nodes
     coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
@@ -504,60 +646,58 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     n_pen = 0
     n_bad = 0
     pen0 = acc[ACC_MAX_PEN]  # a penetration not above this is not above the maximum at its node either
-    for c in range(4):
-        im = imc[c]
-        x0, x1, x2 = xc[0, c], xc[1, c], xc[2, c]
-        v0, v1, v2 = vc[0, c], vc[1, c], vc[2, c]
-        ux, uy, uz, ph, pn = wvx[c], wvy[c], wvz[c], wphi[c], wpen[c]
-        cd = code[c]
-        for f in range(n_faces):
-            px, py, pz = x0[f], x1[f], x2[f]
-            vx, vy, vz = ux[f], uy[f], uz[f]
-            qx = px + 0.5 * dt * (v0[f] + vx) if euler else px + dt * vx
-            qy = py + 0.5 * dt * (v1[f] + vy) if euler else py + dt * vy
-            qz = pz + 0.5 * dt * (v2[f] + vz) if euler else pz + dt * vz
-            phi = ph[f]
-            phi_q = _flat_phi(plane, h, ms, cs, qx, qy)
-            # contact_kernels.collide_path: crossing point, reflection of the part beyond, push-out
-            s = 0.0 if phi <= 0.0 else phi / (phi - phi_q)
-            ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
-            dx, dy, dz = qx - ix, qy - iy, qz - iz
-            dn = dx * nx + dy * ny + dz * nz
-            tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
-            rx = ix - r_n * dn * nx + r_t * tx
-            ry = iy - r_n * dn * ny + r_t * ty
-            rz = iz - r_n * dn * nz + r_t * tz
-            vn = vx * nx + vy * ny + vz * nz
-            into = vn < 0.0
-            wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
-            bx = r_t * wx - r_n * vn * nx if into else vx
-            by = r_t * wy - r_n * vn * ny if into else vy
-            bz = r_t * wz - r_n * vn * nz if into else vz
-            phi_r = _flat_phi(plane, h, ms, cs, rx, ry)
-            inside = phi_r < 0.0
-            rx = rx - phi_r * nx if inside else rx
-            ry = ry - phi_r * ny if inside else ry
-            rz = rz - phi_r * nz if inside else rz
-            hit = phi_q < 0.0
-            held = im[f] == 0.0  # held in place: no forces, no gravity, no motion
-            qx = px if held else (rx if hit else qx)
-            qy = py if held else (ry if hit else qy)
-            qz = pz if held else (rz if hit else qz)
-            vx = v0[f] if held else (bx if hit else vx)
-            vy = v1[f] if held else (by if hit else vy)
-            vz = v2[f] if held else (bz if hit else vz)
-            x0[f], x1[f], x2[f] = qx, qy, qz
-            v0[f], v1[f], v2[f] = vx, vy, vz
-            valid = hit and not held
-            pen = -phi_r if inside else 0.0
-            pn[f] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
-            n_pen += 1 if (valid and pen > pen0) else 0
-            st = DEEP_PENETRATION if (valid and pen > max_pen) else OK
-            st = RUNAWAY_SPEED if vx * vx + vy * vy + vz * vz > max_speed2 else st
-            st = NONFINITE if not math.isfinite(qx + qy + qz + vx + vy + vz) else st
-            st = OK if held else st
-            cd[f] = st
-            n_bad += 1 if st != OK else 0
+    x0, x1, x2 = xf[0], xf[1], xf[2]
+    v0, v1, v2 = vf[0], vf[1], vf[2]
+    pn = work[W_PEN]
+    cd = code.reshape(n_flat)
+    for n in range(n_flat):
+        px, py, pz = x0[n], x1[n], x2[n]
+        vx, vy, vz = ux[n], uy[n], uz[n]
+        qx = px + 0.5 * dt * (v0[n] + vx) if euler else px + dt * vx
+        qy = py + 0.5 * dt * (v1[n] + vy) if euler else py + dt * vy
+        qz = pz + 0.5 * dt * (v2[n] + vz) if euler else pz + dt * vz
+        phi = ph[n]
+        phi_q = _flat_phi(plane, h, ms, cs, qx, qy)
+        # contact_kernels.collide_path: crossing point, reflection of the part beyond, push-out
+        s = 0.0 if phi <= 0.0 else phi / (phi - phi_q)
+        ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
+        dx, dy, dz = qx - ix, qy - iy, qz - iz
+        dn = dx * nx + dy * ny + dz * nz
+        tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
+        rx = ix - r_n * dn * nx + r_t * tx
+        ry = iy - r_n * dn * ny + r_t * ty
+        rz = iz - r_n * dn * nz + r_t * tz
+        vn = vx * nx + vy * ny + vz * nz
+        into = vn < 0.0
+        wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
+        bx = r_t * wx - r_n * vn * nx if into else vx
+        by = r_t * wy - r_n * vn * ny if into else vy
+        bz = r_t * wz - r_n * vn * nz if into else vz
+        phi_r = _flat_phi(plane, h, ms, cs, rx, ry)
+        inside = phi_r < 0.0
+        rx = rx - phi_r * nx if inside else rx
+        ry = ry - phi_r * ny if inside else ry
+        rz = rz - phi_r * nz if inside else rz
+        hit = phi_q < 0.0
+        held = im[n] == 0.0  # held in place: no forces, no gravity, no motion
+        qx = px if held else (rx if hit else qx)
+        qy = py if held else (ry if hit else qy)
+        qz = pz if held else (rz if hit else qz)
+        vx = v0[n] if held else (bx if hit else vx)
+        vy = v1[n] if held else (by if hit else vy)
+        vz = v2[n] if held else (bz if hit else vz)
+        x0[n], x1[n], x2[n] = qx, qy, qz
+        v0[n], v1[n], v2[n] = vx, vy, vz
+        valid = hit and not held
+        pen = -phi_r if inside else 0.0
+        pn[n] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
+        n_pen += 1 if (valid and pen > pen0) else 0
+        st = DEEP_PENETRATION if (valid and pen > max_pen) else OK
+        st = RUNAWAY_SPEED if vx * vx + vy * vy + vz * vz > max_speed2 else st
+        st = NONFINITE if not math.isfinite(qx + qy + qz + vx + vy + vz) else st
+        st = OK if held else st
+        cd[n] = st
+        n_bad += 1 if st != OK else 0
     if n_pen > 0:  # a collision left a penetration above the maximum so far: raise it in node order
         for f in range(n_faces):
             for c in range(4):
@@ -573,22 +713,24 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, fam, params, act_buf,
+def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
             fric_model, fric, terr_kind, terr, phys, n_steps,
-            xc, vc, fc, dfs, rest, act, face_scale, stretch, spine, acc):
+            xc, vc, fc, gf, st, fs, act, face_scale, spine, acc):
     """Advance the lattice ``n_steps`` steps; return (steps done, status).
 
-    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  fam, params: the lattice's
-    ``SpringFamilies`` (index, params).  act_buf (n_rows, n_seg, 3): the muscle strains of
+    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  grp, gpar, plan: the lattice's
+    ``SpringGroups`` (index, params, plan).  act_buf (n_rows, n_seg, 3): the muscle strains of
     step k in row k (rows past the last repeat it).  ``act`` (n_seg, 3) is overwritten with
     row n_steps (the actuation at the end time, which ``energy`` uses), or the last row.
-    Work arrays: xc, vc, fc (3, 4, n_faces); dfs (3, n_faces); rest (n_fam, n_faces);
-    face_scale (n_faces,); stretch (4, n_seg); spine (n_faces, 3).
+    Work arrays: xc, vc, fc (3, 4, stride) with stride = ``SpringGroups.stride`` (padding columns
+    zero); gf (3 n_groups, 4 stride + 1) filled with -0.0 (``group_spring_forces``); st, fs
+    (4 stride,); face_scale (n_faces,); spine (n_faces, 3).
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
     n_nodes = x.shape[0]
     n_faces = n_nodes // 4
+    stride = xc.shape[2]
     volume = phys[VOLUME] != 0.0
     contact_dist = fric[CONTACT_DISTANCE]
     n_rows = act_buf.shape[0]
@@ -604,17 +746,15 @@ def advance(x, v, inv_mass, fam, params, act_buf,
     # Anisotropic Coulomb friction on a plane or slope without obstacles (the snake's scene): the
     # node block runs batched (``_nodes_coulomb_flat``), bitwise the same as ``_nodes_general``.
     batched = fric_model == COULOMB and (terr_kind == PLANE or terr_kind == SLOPE) and terr[H_NOBST] <= 0.0
-    work = np.empty((N_WORK, n_nodes if batched else 0))
-    touch = np.empty(n_nodes if batched else 0, dtype=np.int64)
-    code = np.empty((4, n_faces if batched else 0), dtype=np.int64)
-    imc = np.empty((4, n_faces))
+    work = np.empty((N_WORK, 4 * stride if batched else 0))
+    touch = np.empty(4 * stride if batched else 0, dtype=np.int64)
+    code = np.empty((4, stride if batched else 0), dtype=np.int64)
+    imc = np.zeros((4, stride))  # the padding columns are held nodes
     for f in range(n_faces):
         for c in range(4):
             imc[c, f] = inv_mass[4 * f + c]
     for step in range(n_steps):
-        family_rest_lengths(act_buf[min(step, n_rows - 1)], volume, fam, params, stretch, face_scale, rest)
-        fc[:, :, :] = 0.0
-        family_spring_forces(xc, vc, fam, params, rest, dfs, fc)
+        group_spring_forces(act_buf[min(step, n_rows - 1)], volume, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc)
         spine_vectors_c(xc, spine)
         if stick:
             # Miller's caterpillar rule (Sec. 4, Image 4) holds the *segments* in contact with the

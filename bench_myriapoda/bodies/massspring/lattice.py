@@ -92,6 +92,22 @@ def build_lattice(n_seg: int, seg_len: float, width: float, height: float) -> La
                    L0=r[:, 6].copy(), Lc=r[:, 7].copy(), rest_length=rest)
 
 
+FACE_STRIDE_MULTIPLE = 8  # doubles per AVX-512 vector: a loop over whole rows runs no scalar remainder
+
+
+def face_stride(n_faces: int) -> int:
+    """Columns per corner row of the step kernel's corner-major arrays: the faces and at least one padding
+    column, rounded up to ``FACE_STRIDE_MULTIPLE``.
+
+    The padding keeps the spring groups' flat loops (``spring_groups``) of different corner rows apart:
+    a spring that would join the last face of one row to the first face of the next lands there; and it
+    makes every loop over whole rows a whole number of vectors (a short body's rows of a few faces
+    would otherwise run mostly in the scalar remainder, where sqrt and division cost about four times
+    as much per spring)."""
+    m = FACE_STRIDE_MULTIPLE
+    return (n_faces + 1 + m - 1) // m * m
+
+
 # Columns of ``SpringFamilies.index``.
 FAM_A, FAM_B, FAM_SHIFT, FAM_KIND, FAM_CA, FAM_CB = range(6)
 # Rows of ``SpringFamilies.params``.
@@ -105,14 +121,16 @@ class SpringFamilies:
     Every spring of ``build_lattice`` joins corner a of face t to corner b of face t + shift
     (shift 0: a CROSS edge inside face t; shift 1: an AXIAL edge or a SIDE_DIAG of segment t).
     Springs with the same (a, b, shift, kind, rest corners) form a family with one spring per
-    face t = 0 .. n_faces - 1 - shift.  In the kernel's corner-major node layout (3, 4, n_faces)
+    face t = 0 .. n_faces - 1 - shift.  In the kernel's corner-major node layout (3, 4, stride)
     a family then reads two contiguous rows, so its loop vectorises (no index gathers).
 
     index: (n_fam, 6) int64, columns FAM_A, FAM_B (node corners), FAM_SHIFT, FAM_KIND and
     FAM_CA, FAM_CB (the fibres that set a spring's rest length, ``Lattice.corner_a/b``);
-    params: (4, n_fam, n_faces) float64, rows PAR_K [N/m], PAR_D [N s/m], PAR_L0, PAR_LC [m]
-    per spring (padding past n_faces - shift is zero); spring: (n_fam, n_faces) int64, the
-    lattice's spring index of each entry (-1 in the padding).
+    params: (4, n_fam, stride) float64, rows PAR_K [N/m], PAR_D [N s/m], PAR_L0, PAR_LC [m]
+    per spring (padding past n_faces - shift is zero); spring: (n_fam, stride) int64, the
+    lattice's spring index of each entry (-1 in the padding).  ``stride`` = n_faces + 1
+    (``face_stride``): the step kernel's corner-major arrays (3, 4, stride) carry one padding
+    column per corner row (``spring_groups``).
     """
 
     index: np.ndarray
@@ -136,8 +154,8 @@ def spring_families(lat: Lattice, stiffness: np.ndarray, damping: np.ndarray) ->
         keys.setdefault(key, []).append(e)
     n_fam = len(keys)
     index = np.zeros((n_fam, 6), dtype=np.int64)
-    params = np.zeros((4, n_fam, n_faces))
-    spring = np.full((n_fam, n_faces), -1, dtype=np.int64)
+    params = np.zeros((4, n_fam, face_stride(n_faces)))
+    spring = np.full((n_fam, face_stride(n_faces)), -1, dtype=np.int64)
     for q, (key, members) in enumerate(sorted(keys.items())):
         index[q] = key
         count = n_faces - key[FAM_SHIFT]
@@ -150,3 +168,68 @@ def spring_families(lat: Lattice, stiffness: np.ndarray, damping: np.ndarray) ->
         params[PAR_L0, q, faces] = lat.L0[members]
         params[PAR_LC, q, faces] = lat.Lc[members]
     return SpringFamilies(index=index, params=params, spring=spring)
+
+
+# Columns of ``SpringGroups.index``.
+GRP_SHIFT, GRP_DROW, GRP_KIND, GRP_LO, GRP_HI = range(5)
+# Columns of ``SpringGroups.plan``.
+PLAN_GROUP, PLAN_SIGN, PLAN_BACK = range(3)
+
+
+@dataclass(frozen=True)
+class SpringGroups:
+    """The spring families merged into flat loops over the corner-major node arrays, and the order in
+    which each node sums its spring forces.
+
+    With ``stride`` = n_faces + 1 columns per corner row, node (corner c, face t) is flat index
+    i = c * stride + t of a (3, 4, stride) array, and family (a, b, shift) joins i = a * stride + t to
+    i + (b - a) * stride + shift.  Families with the same (shift, b - a, kind) are one group: a single
+    loop over i in [lo * stride, hi * stride - shift) computes all of them (rows lo..hi-1 of corners a;
+    a row of the range that is no family of the group, and the padding columns, give springs nobody
+    reads).  So the 18 families of a cube lattice run as 8 loops of 1 to 4 rows each, long enough to
+    vectorise also on short bodies.
+
+    index: (n_groups, 5) int64, columns GRP_SHIFT, GRP_DROW (b - a), GRP_KIND, GRP_LO, GRP_HI;
+    params: (4, n_groups, 4 stride) float64, rows PAR_K, PAR_D, PAR_L0, PAR_LC of the spring at
+    flat index i (zero where no spring is);
+    plan: (4, n_terms, 3) int64, for each corner the terms of its nodes' force sum in order
+    (PLAN_GROUP, PLAN_SIGN -1 at the spring's a end and +1 at its b end, PLAN_BACK: read the group's
+    force at the node's flat index minus this).  The order is that of ``kernels.family_spring_forces``
+    (families in ``SpringFamilies`` order, within one the a ends before the b ends), so the sums are
+    bitwise the same.
+    """
+
+    stride: int
+    index: np.ndarray
+    params: np.ndarray
+    plan: np.ndarray
+
+
+def spring_groups(fam: SpringFamilies, n_faces: int) -> SpringGroups:
+    """Merge the families ``fam`` of an n_faces-face lattice into ``SpringGroups``.
+
+    Raises ValueError if two families of a group would share a corner row, or if the corners'
+    force sums have different numbers of terms (not a cube lattice)."""
+    stride = face_stride(n_faces)
+    keys = sorted({(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND])) for r in fam.index})
+    gid = {k: g for g, k in enumerate(keys)}
+    index = np.zeros((len(keys), 5), dtype=np.int64)
+    params = np.zeros((4, len(keys), 4 * stride))
+    rows: dict[int, set] = {g: set() for g in range(len(keys))}
+    for q, r in enumerate(fam.index):
+        g = gid[(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND]))]
+        a = int(r[FAM_A])
+        if a in rows[g]:
+            raise ValueError(f"spring families {keys[g]} share corner row {a}: not a cube lattice")
+        rows[g].add(a)
+        params[:, g, a * stride:(a + 1) * stride] = fam.params[:, q, :stride]
+    for g, (shift, drow, kind) in enumerate(keys):
+        index[g] = (shift, drow, kind, min(rows[g]), max(rows[g]) + 1)
+    terms: list[list] = [[] for _ in range(4)]
+    for r in fam.index:  # the summation order of family_spring_forces: by family, a ends then b ends
+        g = gid[(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND]))]
+        terms[int(r[FAM_A])].append((g, -1, 0))
+        terms[int(r[FAM_B])].append((g, 1, int(r[FAM_B] - r[FAM_A]) * stride + int(r[FAM_SHIFT])))
+    if len({len(t) for t in terms}) != 1:
+        raise ValueError(f"the corners' force sums have {[len(t) for t in terms]} terms: not a cube lattice")
+    return SpringGroups(stride=stride, index=index, params=params, plan=np.array(terms, dtype=np.int64))
