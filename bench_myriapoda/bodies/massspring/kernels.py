@@ -600,24 +600,26 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     h = terr[0]
     ms = -math.sin(terr[1])
     cs = math.cos(terr[1])
-    xf = xc.reshape((3, xc.shape[1] * stride))  # rows 0..3 of a (3, 5, stride) array: its padding row past them
-    vf = vc.reshape((3, vc.shape[1] * stride))
-    ff = fc.reshape((3, fc.shape[1] * stride))
-    im = imc.reshape(n_flat)
+    # flat views indexed with uint64 offsets: one view per array (a view costs a reference count)
+    xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
+    im, wf, cd = imc.reshape(imc.size), work.reshape(work.size), code.reshape(code.size)
+    xd = np.uint64(xc.shape[1] * stride)  # axis stride of xc, vc (rows 0..3 of a (3, 5, stride) array)
+    fd = np.uint64(fc.shape[1] * stride)
+    wl = np.uint64(work.shape[1])
+    xd2, fd2 = xd + xd, fd + fd
+    ovx, ovy, ovz, ophi, open_ = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl, np.uint64(W_PEN) * wl
+    # (1) velocities after forces and signed distances (a held node's are computed and never used)
+    for t in range(n_flat):
+        n = np.uint64(t)
+        imn = im[n]
+        wf[ovx + n] = vf[n] + dt * ff[n] * imn
+        wf[ovy + n] = vf[xd + n] + dt * (ff[fd + n] * imn - g)
+        wf[ovz + n] = vf[xd2 + n] + dt * ff[fd2 + n] * imn
+        wf[ophi + n] = _flat_phi(plane, h, ms, cs, xf[n], xf[xd + n])
     wvx, wvy, wvz = work[W_VX].reshape((4, stride)), work[W_VY].reshape((4, stride)), work[W_VZ].reshape((4, stride))
     wphi, wpen = work[W_PHI].reshape((4, stride)), work[W_PEN].reshape((4, stride))
     bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
     bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
-    # (1) velocities after forces and signed distances (a held node's are computed and never used)
-    ox, oy, oz = vf[0], vf[1], vf[2]
-    fx, fy, fz = ff[0], ff[1], ff[2]
-    px, py = xf[0], xf[1]
-    ux, uy, uz, ph = work[W_VX], work[W_VY], work[W_VZ], work[W_PHI]
-    for n in range(n_flat):
-        ux[n] = ox[n] + dt * fx[n] * im[n]
-        uy[n] = oy[n] + dt * (fy[n] * im[n] - g)
-        uz[n] = oz[n] + dt * fz[n] * im[n]
-        ph[n] = _flat_phi(plane, h, ms, cs, px[n], py[n])
     # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
     count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
     for c in range(4):
@@ -638,25 +640,23 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
                 count += 1
     # (3) friction, vectorised, and back to the nodes
     coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
-    fvx, fvy, fvz = work[W_VX], work[W_VY], work[W_VZ]
     for k in range(count):
-        i = touch[k]
-        fvx[i], fvy[i], fvz[i] = bvx[k], bvy[k], bvz[k]
-    # (4) positions, collisions, checks
+        i = np.uint64(touch[k])
+        wf[ovx + i], wf[ovy + i], wf[ovz + i] = bvx[k], bvy[k], bvz[k]
+    # (4) positions, collisions, checks; every load unconditional (selects, not branches)
     n_pen = 0
     n_bad = 0
     pen0 = acc[ACC_MAX_PEN]  # a penetration not above this is not above the maximum at its node either
-    x0, x1, x2 = xf[0], xf[1], xf[2]
-    v0, v1, v2 = vf[0], vf[1], vf[2]
-    pn = work[W_PEN]
-    cd = code.reshape(n_flat)
-    for n in range(n_flat):
-        px, py, pz = x0[n], x1[n], x2[n]
-        vx, vy, vz = ux[n], uy[n], uz[n]
-        qx = px + 0.5 * dt * (v0[n] + vx) if euler else px + dt * vx
-        qy = py + 0.5 * dt * (v1[n] + vy) if euler else py + dt * vy
-        qz = pz + 0.5 * dt * (v2[n] + vz) if euler else pz + dt * vz
-        phi = ph[n]
+    for t in range(n_flat):
+        n = np.uint64(t)
+        px, py, pz = xf[n], xf[xd + n], xf[xd2 + n]
+        ox, oy, oz = vf[n], vf[xd + n], vf[xd2 + n]
+        vx, vy, vz = wf[ovx + n], wf[ovy + n], wf[ovz + n]
+        phi = wf[ophi + n]
+        held = im[n] == 0.0  # held in place: no forces, no gravity, no motion
+        qx = px + 0.5 * dt * (ox + vx) if euler else px + dt * vx
+        qy = py + 0.5 * dt * (oy + vy) if euler else py + dt * vy
+        qz = pz + 0.5 * dt * (oz + vz) if euler else pz + dt * vz
         phi_q = _flat_phi(plane, h, ms, cs, qx, qy)
         # contact_kernels.collide_path: crossing point, reflection of the part beyond, push-out
         s = 0.0 if phi <= 0.0 else phi / (phi - phi_q)
@@ -679,18 +679,17 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
         ry = ry - phi_r * ny if inside else ry
         rz = rz - phi_r * nz if inside else rz
         hit = phi_q < 0.0
-        held = im[n] == 0.0  # held in place: no forces, no gravity, no motion
         qx = px if held else (rx if hit else qx)
         qy = py if held else (ry if hit else qy)
         qz = pz if held else (rz if hit else qz)
-        vx = v0[n] if held else (bx if hit else vx)
-        vy = v1[n] if held else (by if hit else vy)
-        vz = v2[n] if held else (bz if hit else vz)
-        x0[n], x1[n], x2[n] = qx, qy, qz
-        v0[n], v1[n], v2[n] = vx, vy, vz
+        vx = ox if held else (bx if hit else vx)
+        vy = oy if held else (by if hit else vy)
+        vz = oz if held else (bz if hit else vz)
+        xf[n], xf[xd + n], xf[xd2 + n] = qx, qy, qz
+        vf[n], vf[xd + n], vf[xd2 + n] = vx, vy, vz
         valid = hit and not held
         pen = -phi_r if inside else 0.0
-        pn[n] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
+        wf[open_ + n] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
         n_pen += 1 if (valid and pen > pen0) else 0
         st = DEEP_PENETRATION if (valid and pen > max_pen) else OK
         st = RUNAWAY_SPEED if vx * vx + vy * vy + vz * vz > max_speed2 else st
