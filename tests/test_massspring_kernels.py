@@ -313,6 +313,65 @@ def test_family_spring_forces_bitwise_equal_numpys_three_pass_order(segments):
     assert np.array_equal(fc, ref)
 
 
+@pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 200])
+@pytest.mark.parametrize("state", ["random", "collapsed"])
+def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
+    """The step's spring groups (one loop per group over padded corner rows, then each node's ordered
+    sum) give every node the bits of ``family_rest_lengths`` + ``family_spring_forces`` run family by
+    family on unpadded rows, signed zeros included: random states with zero-length springs, and a
+    lattice collapsed to one point (every spring pulls nothing: every force must be +0.0)."""
+    from bench_myriapoda.bodies.massspring.lattice import face_stride
+    case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
+    body = BodyMassSpring(case)
+    r = np.random.default_rng(100 + segments)
+    n_faces = segments + 1
+    if state == "random":
+        x = body.x + r.normal(scale=0.003, size=body.x.shape)
+        x[4:8] = x[0:4]  # zero-length axial springs
+        v = r.normal(size=body.x.shape)
+    else:
+        x = np.zeros_like(body.x) + 0.25
+        v = np.zeros_like(body.x)
+    act = r.normal(scale=0.1, size=(segments, 3))
+    fam, grp = body.families, body.groups
+    assert grp.stride == face_stride(n_faces) and grp.stride >= n_faces + 1 and grp.stride % 8 == 0
+    # the reference: the per-family kernels on rows of exactly n_faces columns
+    xu, vu, fu = (np.zeros((3, 4, n_faces)) for _ in range(3))
+    K._corner_major(x, xu)
+    K._corner_major(v, vu)
+    params = np.ascontiguousarray(fam.params[:, :, :n_faces])
+    rest = np.zeros((fam.index.shape[0], n_faces))
+    K.family_rest_lengths(act, True, fam.index, params, np.ones((4, segments)), np.ones(n_faces), rest)
+    K.family_spring_forces(xu, vu, fam.index, params, rest, np.zeros((3, n_faces)), fu)
+    xc, vc, fc = body._xc, body._vc, body._fc
+    K._corner_major(x, xc)
+    K._corner_major(v, vc)
+    fc[:] = np.nan  # every real column is overwritten
+    K.group_spring_forces(act, True, xc, vc, grp.index, grp.params, grp.plan, body._face_scale, body._st, body._fs,
+                          body._gf, fc)
+    got = np.ascontiguousarray(fc[:, :, :n_faces])
+    assert np.array_equal(got.view(np.int64), fu.view(np.int64))
+    if state == "collapsed":
+        assert np.all(got.view(np.int64) == 0)  # +0.0, not -0.0
+    # a second call from the state the first left gives the same (no scratch carried over)
+    K.group_spring_forces(act, True, xc, vc, grp.index, grp.params, grp.plan, body._face_scale, body._st, body._fs,
+                          body._gf, fc)
+    assert np.array_equal(np.ascontiguousarray(fc[:, :, :n_faces]).view(np.int64), fu.view(np.int64))
+
+
+def test_spring_groups_of_a_cube_lattice():
+    """Miller's cube lattice runs as 8 group loops (3 cross-section, 1 axial, 4 side-diagonal), and each of
+    the four corners sums 9 spring forces (3 face edges, 2 axial edges, 4 side diagonals)."""
+    from bench_myriapoda.bodies.massspring.lattice import GRP_HI, GRP_LO, spring_families, spring_groups
+    lat = build_lattice(5, 0.1, 0.05, 0.04)
+    fam = spring_families(lat, np.ones(lat.n_springs), np.zeros(lat.n_springs))
+    grp = spring_groups(fam, 6)
+    assert grp.index.shape[0] == 8 and grp.plan.shape == (4, K.N_TERMS, 3)
+    assert int(np.sum(grp.index[:, GRP_HI] - grp.index[:, GRP_LO])) == 20  # rows run; 18 families
+    assert sorted(np.count_nonzero(grp.params[0, g]) for g in range(8)) == sorted(
+        [6 * 3, 6 * 2, 6 * 1, 5 * 4, 5 * 2, 5 * 2, 5 * 2, 5 * 2])  # stiffness only where a spring is
+
+
 def _coulomb_cases(r, n_cases, n):
     """(v, s, jn) rows for the batched Coulomb friction, with the edge cases of ``ground_friction``:
     no normal impulse, no tangential speed, a spine along the normal, static and kinetic friction."""
