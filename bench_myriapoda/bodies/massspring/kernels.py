@@ -567,86 +567,20 @@ def _flat_phi(plane, h, ms, cs, x, y):
 
 
 @njit(cache=True, error_model="numpy")
-def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
-    """One step of every free node under COULOMB friction on a plane or slope without obstacles.
-
-    ``_nodes_general``'s arithmetic, operation by operation, in four passes that vectorise along
-    the corner-major rows: (1) each node's velocity after forces and signed distance; (2) the
-    touching nodes' friction inputs gathered into ``work``'s B_ rows and (3) their friction
-    (``coulomb_friction_batch``; the surface normal is the same for every node here); (4) position
-    update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
-    fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects.
-    Passes (1) and (4) are element-wise, so each is one loop over the four corner rows taken as one
-    flat row (rows of a short body's few faces are too short to vectorise one by one).
-    The step's status is that of the last node in node order with a problem, as in the node loop.
-    xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
-    imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
-    work (N_WORK, 4 stride); touch (4 stride,) int64 and code (4, stride) int64 scratch.
-    Returns (nodes within the contact distance, status).
-    """
-    n_faces = spine.shape[0]
-    stride = xc.shape[2]
-    n_flat = 4 * stride
-    g = phys[GRAVITY]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    euler = phys[INTEGRATOR] == EULER
-    contact_dist = fric[CONTACT_DISTANCE]
-    max_pen = phys[MAX_PEN]
-    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
-    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)  # one normal: no obstacles (caller checks)
-    plane = terr_kind == PLANE
-    h = terr[0]
-    ms = -math.sin(terr[1])
-    cs = math.cos(terr[1])
-    # flat views indexed with uint64 offsets: one view per array (a view costs a reference count)
-    xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
-    im, wf, cd = imc.reshape(imc.size), work.reshape(work.size), code.reshape(code.size)
-    xd = np.uint64(xc.shape[1] * stride)  # axis stride of xc, vc (rows 0..3 of a (3, 5, stride) array)
-    fd = np.uint64(fc.shape[1] * stride)
-    wl = np.uint64(work.shape[1])
-    xd2, fd2 = xd + xd, fd + fd
-    ovx, ovy, ovz, ophi, open_ = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl, np.uint64(W_PEN) * wl
-    # (1) velocities after forces and signed distances (a held node's are computed and never used)
-    for t in range(n_flat):
-        n = np.uint64(t)
-        imn = im[n]
-        wf[ovx + n] = vf[n] + dt * ff[n] * imn
-        wf[ovy + n] = vf[xd + n] + dt * (ff[fd + n] * imn - g)
-        wf[ovz + n] = vf[xd2 + n] + dt * ff[fd2 + n] * imn
-        wf[ophi + n] = _flat_phi(plane, h, ms, cs, xf[n], xf[xd + n])
-    wvx, wvy, wvz = work[W_VX].reshape((4, stride)), work[W_VY].reshape((4, stride)), work[W_VZ].reshape((4, stride))
-    wphi, wpen = work[W_PHI].reshape((4, stride)), work[W_PEN].reshape((4, stride))
-    bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
-    bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
-    # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
-    count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
-    for c in range(4):
-        for f in range(n_faces):
-            phi = wphi[c, f]
-            if phi < contact_dist and imc[c, f] != 0.0:
-                vx, vy, vz = wvx[c, f], wvy[c, f], wvz[c, f]
-                if euler:
-                    dx, dy, dz = 0.5 * dt * (vc[0, c, f] + vx), 0.5 * dt * (vc[1, c, f] + vy), 0.5 * dt * (vc[2, c, f] + vz)
-                else:
-                    dx, dy, dz = dt * vx, dt * vy, dt * vz
-                vn = vx * nx + vy * ny + vz * nz
-                reaches = phi + dx * nx + dy * ny + dz * nz < 0.0
-                bjn[count] = -(1.0 + r_n) * vn if (vn < 0.0 and reaches) else 0.0
-                bvx[count], bvy[count], bvz[count] = vx, vy, vz
-                bsx[count], bsy[count], bsz[count] = spine[f, 0], spine[f, 1], spine[f, 2]
-                touch[count] = c * stride + f
-                count += 1
-    # (3) friction, vectorised, and back to the nodes
-    coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
-    for k in range(count):
-        i = np.uint64(touch[k])
-        wf[ovx + i], wf[ovy + i], wf[ovz + i] = bvx[k], bvy[k], bvz[k]
-    # (4) positions, collisions, checks; every load unconditional (selects, not branches)
+def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, dt, euler, plane, h, ms, cs, nx, ny, nz, r_n, r_t,
+                    max_pen, max_speed2):
+    """Pass (4) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
+    n_flat nodes of the flat corner-major arrays xf, vf (axis stride xd), velocities and signed distances
+    from the work array wf (row length wl), written as selects so that the loop vectorises (its own
+    function: in the node pass's body numba joined its variables with those of the gather pass, and
+    LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
+    Writes each node's penetration (NaN: none) to wf's W_PEN row and status to cd; returns (nodes whose
+    penetration exceeds pen0, nodes with a status other than OK)."""
+    xd2 = xd + xd
+    ovx, ovy, ovz = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl
+    ophi, open_ = np.uint64(W_PHI) * wl, np.uint64(W_PEN) * wl
     n_pen = 0
     n_bad = 0
-    pen0 = acc[ACC_MAX_PEN]  # a penetration not above this is not above the maximum at its node either
     for t in range(n_flat):
         n = np.uint64(t)
         px, py, pz = xf[n], xf[xd + n], xf[xd2 + n]
@@ -687,16 +621,99 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
         vz = oz if held else (bz if hit else vz)
         xf[n], xf[xd + n], xf[xd2 + n] = qx, qy, qz
         vf[n], vf[xd + n], vf[xd2 + n] = vx, vy, vz
-        valid = hit and not held
+        valid = hit & (not held)  # & rather than and: a short-circuit branch stops the vectoriser
         pen = -phi_r if inside else 0.0
         wf[open_ + n] = pen if valid else math.nan  # NaN: no collision (never raises the maximum)
-        n_pen += 1 if (valid and pen > pen0) else 0
-        st = DEEP_PENETRATION if (valid and pen > max_pen) else OK
+        n_pen += 1 if (valid & (pen > pen0)) else 0
+        st = DEEP_PENETRATION if (valid & (pen > max_pen)) else OK
         st = RUNAWAY_SPEED if vx * vx + vy * vy + vz * vz > max_speed2 else st
         st = NONFINITE if not math.isfinite(qx + qy + qz + vx + vy + vz) else st
         st = OK if held else st
         cd[n] = st
         n_bad += 1 if st != OK else 0
+    return n_pen, n_bad
+
+
+@njit(cache=True, error_model="numpy")
+def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
+    """One step of every free node under COULOMB friction on a plane or slope without obstacles.
+
+    ``_nodes_general``'s arithmetic, operation by operation, in four passes that vectorise along
+    the corner-major rows: (1) each node's velocity after forces and signed distance; (2) the
+    touching nodes' friction inputs gathered into ``work``'s B_ rows and (3) their friction
+    (``coulomb_friction_batch``; the surface normal is the same for every node here); (4) position
+    update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
+    fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects.
+    Passes (1) and (4) are element-wise, so each is one loop over the four corner rows taken as one
+    flat row (rows of a short body's few faces are too short to vectorise one by one).
+    The step's status is that of the last node in node order with a problem, as in the node loop.
+    xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
+    imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
+    work (N_WORK, 4 stride); touch (4 stride,) int64 and code (4, stride) int64 scratch.
+    Returns (nodes within the contact distance, status).
+    """
+    n_faces = spine.shape[0]
+    stride = xc.shape[2]
+    n_flat = 4 * stride
+    g = phys[GRAVITY]
+    dt = phys[DT]
+    r_n = phys[R_N]
+    r_t = phys[R_T]
+    euler = phys[INTEGRATOR] == EULER
+    contact_dist = fric[CONTACT_DISTANCE]
+    max_pen = phys[MAX_PEN]
+    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)  # one normal: no obstacles (caller checks)
+    plane = terr_kind == PLANE
+    h = terr[0]
+    ms = -math.sin(terr[1])
+    cs = math.cos(terr[1])
+    # flat views indexed with uint64 offsets: one view per array (a view costs a reference count)
+    xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
+    im, wf, cd = imc.reshape(imc.size), work.reshape(work.size), code.reshape(code.size)
+    xd = np.uint64(xc.shape[1] * stride)  # axis stride of xc, vc (rows 0..3 of a (3, 5, stride) array)
+    fd = np.uint64(fc.shape[1] * stride)
+    wl = np.uint64(work.shape[1])
+    xd2, fd2 = xd + xd, fd + fd
+    ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl
+    # (1) velocities after forces and signed distances (a held node's are computed and never used)
+    for t in range(n_flat):
+        n = np.uint64(t)
+        imn = im[n]
+        wf[ovx + n] = vf[n] + dt * ff[n] * imn
+        wf[ovy + n] = vf[xd + n] + dt * (ff[fd + n] * imn - g)
+        wf[ovz + n] = vf[xd2 + n] + dt * ff[fd2 + n] * imn
+        wf[ophi + n] = _flat_phi(plane, h, ms, cs, xf[n], xf[xd + n])
+    wvx, wvy, wvz = work[W_VX].reshape((4, stride)), work[W_VY].reshape((4, stride)), work[W_VZ].reshape((4, stride))
+    wphi, wpen = work[W_PHI].reshape((4, stride)), work[W_PEN].reshape((4, stride))
+    bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
+    bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
+    # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
+    count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
+    for c in range(4):
+        for f in range(n_faces):
+            cphi = wphi[c, f]
+            if cphi < contact_dist and imc[c, f] != 0.0:
+                cvx, cvy, cvz = wvx[c, f], wvy[c, f], wvz[c, f]
+                if euler:
+                    cdx, cdy, cdz = 0.5 * dt * (vc[0, c, f] + cvx), 0.5 * dt * (vc[1, c, f] + cvy), 0.5 * dt * (vc[2, c, f] + cvz)
+                else:
+                    cdx, cdy, cdz = dt * cvx, dt * cvy, dt * cvz
+                cvn = cvx * nx + cvy * ny + cvz * nz
+                reaches = cphi + cdx * nx + cdy * ny + cdz * nz < 0.0
+                bjn[count] = -(1.0 + r_n) * cvn if (cvn < 0.0 and reaches) else 0.0
+                bvx[count], bvy[count], bvz[count] = cvx, cvy, cvz
+                bsx[count], bsy[count], bsz[count] = spine[f, 0], spine[f, 1], spine[f, 2]
+                touch[count] = c * stride + f
+                count += 1
+    # (3) friction, vectorised, and back to the nodes
+    coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
+    for k in range(count):
+        i = np.uint64(touch[k])
+        wf[ovx + i], wf[ovy + i], wf[ovz + i] = bvx[k], bvy[k], bvz[k]
+    # (4) positions, collisions, checks
+    n_pen, n_bad = _positions_flat(xf, vf, wf, im, cd, acc[ACC_MAX_PEN], n_flat, xd, wl, dt, euler, plane, h, ms, cs,
+                                   nx, ny, nz, r_n, r_t, max_pen, max_speed2)
     if n_pen > 0:  # a collision left a penetration above the maximum so far: raise it in node order
         for f in range(n_faces):
             for c in range(4):
