@@ -21,22 +21,26 @@
 7. blow-up checks: non-finite values, a mass faster than a limit, a mass deeper
    inside the terrain than a limit.
 
-Layout of the step loop.  The springs are run by family (``lattice.spring_families``): all
-springs joining corner a of face t to corner b of face t + shift.  Within one ``advance`` call
-node positions, velocities and forces live in a corner-major layout (3, 4, n_faces) (copied in
-at the start of the call and back at its end or on a blow-up), so a family
-reads and writes contiguous rows and its loop vectorises (sqrt and divisions in SIMD lanes);
-indexed gathers of the (n_nodes, 3) state cost more than the arithmetic.  Per spring the
-arithmetic is that of ``spring_forces``; only the order in which a node's spring forces are
-summed differs (by family, not by spring index), so results agree to round-off (~1e-16
-relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
+Layout of the step loop.  Within one ``advance`` call node positions, velocities and forces live
+in a corner-major layout (3, 4, stride) (positions and velocities with a fifth, padding row; stride
+= ``lattice.face_stride``: the faces and at least one padding column, a multiple of 8), copied in at
+the start of the call and back at its end or on a blow-up.  A spring family (``lattice.spring_families``:
+all springs joining corner a of face t to corner b of face t + shift) then joins flat index i of a
+row to i + (b - a) stride + shift, and families with the same offset and kind run as one loop over
+whole rows (``lattice.spring_groups``, ``group_spring_forces``): 8 loops per step that vectorise
+(sqrt and divisions in SIMD lanes) also on short bodies; indexed gathers of the (n_nodes, 3) state
+cost more than the arithmetic.  Each node then sums its spring forces in the order of the
+per-family reference kernels ``family_rest_lengths`` and ``family_spring_forces`` (bitwise the same
+forces).  Per spring the arithmetic is that of ``spring_forces``; only the order in which a node's
+spring forces are summed differs (by family, not by spring index), so results agree to round-off
+(~1e-16 relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
 references (and serve the energy and the legged chain).
 
 The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
 on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` runs it instead: the
 touching nodes' friction is gathered and computed in one vectorised loop
 (``coulomb_friction_batch``), bitwise the same results (the friction was 45 % of the snake's step
-called node by node).
+called node by node); its element-wise passes run over the four corner rows as one flat row.
 """
 from __future__ import annotations
 
@@ -249,8 +253,10 @@ def family_rest_lengths(act, volume_conserving, fam, params, stretch, face_scale
 
 @njit(cache=True, error_model="numpy")
 def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
-    """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``fc`` (3, 4, n_faces).
+    """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``fc`` (3, 4, n_faces), family by family.
 
+    The reference of ``group_spring_forces`` (which the step runs): its summation order is the one the
+    groups reproduce, bit for bit (tests/test_massspring_kernels.py).
     xc, vc: (3, 4, n_faces) corner-major positions [m] and velocities [m/s] (node 4 t + c at
     [:, c, t]); fam, params: ``lattice.SpringFamilies``; rest (n_fam, n_faces) [m]; dfs
     (3, n_faces) scratch.  Per spring the arithmetic of ``spring_forces`` (a spring shorter
