@@ -1481,7 +1481,7 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
         b1 = m * v[i, 1] + dt * f[i, 1]
         b2 = m * v[i, 2] + dt * f[i, 2]
         for a in range(fp_ptr[k], fp_ptr[k + 1]):
-            j = fp_col[a]
+            j = np.uint64(fp_col[a])  # (as i)
             c = dt * fp_val[a]
             b0 -= c * v[j, 0]
             b1 -= c * v[j, 1]

@@ -374,7 +374,7 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_pt
                 continue
             s0, s1, s2 = f_att[a, 0], f_att[a, 1], f_att[a, 2]
             for e in range(pf_ptr[a], pf_ptr[a + 1]):
-                j = pf_col[e]
+                j = np.uint64(pf_col[e])  # node ids are >= 0: no wrap-around test per index
                 d = pf_val[e]
                 s0 -= d * v[j, 0]
                 s1 -= d * v[j, 1]
