@@ -1000,6 +1000,36 @@ def _rotation_stress_pass(F, coef, q, H):
                                 r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def _fixup_tet(F, coef, q, H, b, l):
+    """``_rotation_fixup`` of the tet in block b, lane l: its rotation (``_fcr_rotation`` from its q), increment
+    and forces."""
+    L = LANES
+    f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
+    f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
+    f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
+    ow, ox, oy, oz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
+    (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, _it) = _fcr_rotation(
+        f00, f01, f02, f10, f11, f12, f20, f21, f22, ow, ox, oy, oz)
+    q[b, l] = qw
+    q[b, L + l] = qx
+    q[b, 2 * L + l] = qy
+    q[b, 3 * L + l] = qz
+    # the increment for the next step's prediction: conj(q_old) q_new = (cw, c), d = c / cw (the same
+    # for q_new and -q_new); none if it is not a small turn (the SVD's answer, or a flip)
+    cw = ow * qw + ox * qx + oy * qy + oz * qz
+    cx = ow * qx - qw * ox - (oy * qz - oz * qy)
+    cy = ow * qy - qw * oy - (oz * qx - ox * qz)
+    cz = ow * qz - qw * oz - (ox * qy - oy * qx)
+    dx, dy, dz = cx / cw, cy / cw, cz / cw
+    small = dx * dx + dy * dy + dz * dz < _NEWTON_MAX_HH
+    q[b, Q_D * L + l] = dx if small else 0.0
+    q[b, (Q_D + 1) * L + l] = dy if small else 0.0
+    q[b, (Q_D + 2) * L + l] = dz if small else 0.0
+    _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                        r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+
+
 @njit(cache=True, error_model="numpy")
 def _rotation_fixup(n_tets, F, coef, q, H):
     """Finish the tets the branch-free pass left unconverged; returns how many.
@@ -1011,35 +1041,19 @@ def _rotation_fixup(n_tets, F, coef, q, H):
     """
     L = LANES
     count = 0
-    for e in range(n_tets):
-        b = e // L
-        l = e - b * L
-        if H[b, H_HH * L + l] < _NEWTON_TOL_HH:
+    for b in range((n_tets + L - 1) // L):
+        # a block whose lanes were all accepted (the common case) is skipped after one vector
+        # compare; NaN counts as not accepted, as in the lane test below
+        n_open = 0
+        for l in range(L):
+            n_open += 0 if H[b, H_HH * L + l] < _NEWTON_TOL_HH else 1
+        if n_open == 0:
             continue
-        count += 1
-        f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
-        f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
-        f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-        ow, ox, oy, oz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
-        (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, _it) = _fcr_rotation(
-            f00, f01, f02, f10, f11, f12, f20, f21, f22, ow, ox, oy, oz)
-        q[b, l] = qw
-        q[b, L + l] = qx
-        q[b, 2 * L + l] = qy
-        q[b, 3 * L + l] = qz
-        # the increment for the next step's prediction: conj(q_old) q_new = (cw, c), d = c / cw (the same
-        # for q_new and -q_new); none if it is not a small turn (the SVD's answer, or a flip)
-        cw = ow * qw + ox * qx + oy * qy + oz * qz
-        cx = ow * qx - qw * ox - (oy * qz - oz * qy)
-        cy = ow * qy - qw * oy - (oz * qx - ox * qz)
-        cz = ow * qz - qw * oz - (ox * qy - oy * qx)
-        dx, dy, dz = cx / cw, cy / cw, cz / cw
-        small = dx * dx + dy * dy + dz * dz < _NEWTON_MAX_HH
-        q[b, Q_D * L + l] = dx if small else 0.0
-        q[b, (Q_D + 1) * L + l] = dy if small else 0.0
-        q[b, (Q_D + 2) * L + l] = dz if small else 0.0
-        _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                            r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+        for l in range(min(L, n_tets - b * L)):
+            if H[b, H_HH * L + l] < _NEWTON_TOL_HH:
+                continue
+            count += 1
+            _fixup_tet(F, coef, q, H, b, l)
     return count
 
 
@@ -1090,30 +1104,47 @@ def elastic_forces(x, tets, Dm_inv, coef, q_ws, F_work, H_work, f):
     return n_slow
 
 
-@njit(cache=True, error_model="numpy")
-def _gather_pass(inc_ptr, inc_off, H, f):
-    """Accumulate the per-tet nodal forces H into f (n_nodes, 3) node by node (eqs. 10-11).
+@njit(cache=True, inline="always", error_model="numpy")
+def gather_node_force(Hf, inc_ptr, inc_off, i, s0, s1, s2):
+    """(s0, s1, s2) plus the element forces on node i, H_work's entries flat (Hf = H_work.reshape(H_work.size)).
 
-    inc_ptr, inc_off: ``node_incidence``.  Each node's sum runs in registers
-    over its tets in ascending order, the order ``_scatter_pass`` adds them in
-    memory: the same result, bit for bit, without the scatter's chain of
-    dependent loads and stores through memory where consecutive tets share a node.
+    inc_ptr, inc_off: ``node_incidence``.  The sum runs in registers over the node's tets in
+    ascending order, the order ``_scatter_pass`` adds them in memory: the same result, bit for
+    bit, without the scatter's chain of dependent loads and stores through memory where
+    consecutive tets share a node.
     """
-    Hf = H.reshape(H.size)
     L1 = np.uint64(LANES)
     L2 = np.uint64(2 * LANES)
+    for a in range(inc_ptr[i], inc_ptr[i + 1]):
+        o = inc_off[a]
+        s0 += Hf[o]
+        s1 += Hf[o + L1]
+        s2 += Hf[o + L2]
+    return s0, s1, s2
+
+
+@njit(cache=True, error_model="numpy")
+def _gather_pass(inc_ptr, inc_off, H, f):
+    """Accumulate the per-tet nodal forces H into f (n_nodes, 3) node by node (eqs. 10-11;
+    ``gather_node_force``, inc_ptr, inc_off: ``node_incidence``)."""
+    Hf = H.reshape(H.size)
     for i in range(f.shape[0]):
-        s0 = f[i, 0]
-        s1 = f[i, 1]
-        s2 = f[i, 2]
-        for a in range(inc_ptr[i], inc_ptr[i + 1]):
-            o = inc_off[a]
-            s0 += Hf[o]
-            s1 += Hf[o + L1]
-            s2 += Hf[o + L2]
+        s0, s1, s2 = gather_node_force(Hf, inc_ptr, inc_off, i, f[i, 0], f[i, 1], f[i, 2])
         f[i, 0] = s0
         f[i, 1] = s1
         f[i, 2] = s2
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def element_forces(x, tets, coef, q_ws, F_work, H_work):
+    """The element pass of ``elastic_forces`` without the nodal sums: every tet's nodal forces into
+    H_work (rows 0-8 and 10-12, module docstring), q_ws UPDATED; returns the number of slow-path tets.
+
+    For a caller that sums only some nodes' forces (``gather_node_force``), as the hybrid body does.
+    """
+    _edge_pass(x, tets, F_work)
+    _rotation_stress_pass(F_work, coef, q_ws, H_work)
+    return _rotation_fixup(tets.shape[0], F_work, coef, q_ws, H_work)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1123,9 +1154,7 @@ def elastic_forces_gathered(x, tets, coef, q_ws, F_work, H_work, inc_ptr, inc_of
 
     ACCUMULATES into f: (n_nodes, 3) [N].  Returns the number of slow-path tets.
     """
-    _edge_pass(x, tets, F_work)
-    _rotation_stress_pass(F_work, coef, q_ws, H_work)
-    n_slow = _rotation_fixup(tets.shape[0], F_work, coef, q_ws, H_work)
+    n_slow = element_forces(x, tets, coef, q_ws, F_work, H_work)
     _gather_pass(inc_ptr, inc_off, H_work, f)
     return n_slow
 
@@ -1452,7 +1481,7 @@ def semi_implicit_velocity(v, mass, f, dt, perm, sky_first, sky_ptr, sky_L,
         b1 = m * v[i, 1] + dt * f[i, 1]
         b2 = m * v[i, 2] + dt * f[i, 2]
         for a in range(fp_ptr[k], fp_ptr[k + 1]):
-            j = fp_col[a]
+            j = np.uint64(fp_col[a])  # (as i)
             c = dt * fp_val[a]
             b0 -= c * v[j, 0]
             b1 -= c * v[j, 1]
