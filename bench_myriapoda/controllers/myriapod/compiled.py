@@ -47,15 +47,20 @@ ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
 (F_DT, F_CONTACT_DIST, F_THETA_MIN, F_MAJORITY, F_HEAD_SPEED, F_TURN_MAX, F_TURN_RATE, F_AVOID_RATE,
  F_AVOID_HOLD, F_AVOID_SPEED, F_MAX_BODY_TURN, F_TURN_MEMORY_LENGTH,
  F_AVOID_DIR, F_TURN_MEMORY, F_AVOID_UNTIL, F_TURN_LEFT, F_T_WALK, F_TOUCH_AT_WALK, F_TRACKING_SUM,
- F_HEADING_CMD, F_HEADING_ERR_SUM, F_LEG_PEN_MAX) = range(22)
-N_FS = 22
+ F_HEADING_CMD, F_HEADING_ERR_SUM, F_LEG_PEN_MAX, F_ANT_T) = range(23)
+N_FS = 23
 # int scalars (``ints``)
 (I_TERR_KIND, I_MIN_STANCE, I_WALK_MODE, I_RECORD_EVERY, I_COLLIDE, I_HAS_ANTENNAE, I_PRIORITY_LEFT,
  I_BRAIN, I_STEP, I_TRACKING_N, I_HEADING_ERR_N, I_LEG_STOPS, I_LEG_STUCK, I_CONTACT_EVENTS, I_TARGETS_DRAWN,
- I_RECORDED, I_RND_USED, I_ANT_RND_USED) = range(18)
-N_INTS = 18
+ I_RECORDED, I_RND_USED, I_ANT_RND_USED, I_ANT_DEFER, I_ANT_PENDING) = range(20)
+N_INTS = 20
+# I_ANT_DEFER = 1: on a terrain without obstacles the antennae's links (wave angles, frames, points beyond
+# the roots) are computed only once per chunk, by ``finish_chunk`` after its last step, for that step's time
+# F_ANT_T (``antennae.antennae_step``'s ``links``): within a chunk nothing reads them, so the state after the
+# chunk is the same doubles.  I_ANT_PENDING: a step left them to ``finish_chunk``.
 # positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
 A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 33
+A_ANT_PARAMS, A_NOMINAL, A_OFFSETS, A_POINTS, A_FRAMES = 26, 28, 29, 39, 40
 
 # (controller attribute, fs index) of the float scalars, (attribute, ints index) of the int ones
 _FLOATS = (("dt", F_DT), ("contact_distance", F_CONTACT_DIST), ("theta_min", F_THETA_MIN),
@@ -127,6 +132,8 @@ class ControllerState:
         ints[I_RECORDED] = c.recorded
         ints[I_RND_USED] = 0
         ints[I_ANT_RND_USED] = 0
+        ints[I_ANT_DEFER] = 1   # the chunk kernels call finish_chunk
+        ints[I_ANT_PENDING] = 0
         if ant is not None:
             a = (ant.params, ant.f, ant.nominal, ant.offsets, ant.root_target, ant.root_omega, ant.retracting,
                  ant.contact, ant.rising, ant.contact_point, ant.contact_normal, ant.contact_depth, ant.arrived,
@@ -255,6 +262,15 @@ def _avoidance_turn(left, right, priority_left):
 
 
 @njit(cache=True)
+def finish_chunk(fs, ints, A):
+    """After the last ``controller_step`` of a chunk (and before anything reads the antennae): the antennae's
+    links the chunk's steps left to it (``I_ANT_DEFER``), for the last step's time."""
+    if ints[I_ANT_PENDING] != 0:
+        AN.antennae_links(A[A_ANT_PARAMS], fs[F_ANT_T], A[A_NOMINAL], A[A_OFFSETS], A[A_POINTS], A[A_FRAMES])
+        ints[I_ANT_PENDING] = 0
+
+
+@njit(cache=True)
 def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     """One ``MyriapodController.step`` (its docstring has the order) for the step starting at t [s].
 
@@ -264,6 +280,8 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     support the body must carry this step.  rnd, ant_rnd: pre-drawn doubles of the controller's and
     the antennae's generators, consumed from ints[I_RND_USED], ints[I_ANT_RND_USED].
     err_scratch: (n_seg,) scratch.  Returns whether this step is recorded in the timeline.
+    With ints[I_ANT_DEFER] = 1 (``ControllerState.pack`` sets it) the caller calls ``finish_chunk``
+    after its last step.
     """
     (states, angles, tips, O, M, touching, airborne, ik_failed, entered, supported, kinematic, c_T, R_T,
      prev_angles, stopped, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
@@ -291,10 +309,14 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     # 1. antennae (food is not compiled)
     has_ant = ints[I_HAS_ANTENNAE] != 0
     if has_ant:
+        links = ints[I_ANT_DEFER] == 0 or ant_f[AN.H_NOBST] > 0.0
         n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f, nominal, offsets,
                                                  root_target, root_omega, retracting, contact, rising,
                                                  contact_point, contact_normal, contact_depth, arrived, points,
-                                                 frames)
+                                                 frames, links)
+        if not links:
+            fs[F_ANT_T] = t
+            ints[I_ANT_PENDING] = 1
         ints[I_CONTACT_EVENTS] += n_rising
         if any_arrived:
             for a in range(2):
