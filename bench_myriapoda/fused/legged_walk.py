@@ -11,12 +11,17 @@ with the same kernels in the same order on the same arrays:
 2. the controller's step (``controllers.myriapod.compiled.controller_step``);
 3. the support (the bodies' ``set_support``): kinematic = supported | held, the supported
    boxes driven to their targets (``kinematic_targets.drive_to_targets``, paper Sec. 4.1),
-   the attached link nodes put back on the boxes (``hybrid.kernels.place_attached_nodes``);
+   the attached link nodes put back on the boxes (``_place_attached``: the arithmetic of
+   ``hybrid.kernels.place_attached_nodes`` without the coupling residual, which the body's
+   step overwrites before reading it);
 4. a timeline sample every ``record_every`` steps: the controller's record (states, tips,
    brain mode, antenna contact, segment centres before the support) and the monitor's
    (box poses and link centres after the support), into buffers;
 5. one body step (``hybrid.kernels.advance``, ``massspring.myriapod.advance_chain`` or
    ``fem.myriapod.advance_chain``, n = 1).
+
+After the last step (or a step that blew up) ``compiled.finish_chunk`` computes the antennae's
+links that the chunk's steps left to it on a terrain without obstacles (``compiled.I_ANT_DEFER``).
 
 Python is entered once per chunk (the runner's sample rate): ``FusedLeggedWalk.advance``
 packs the controller's scalars, pre-draws its random numbers, calls the kernel, and
