@@ -147,6 +147,38 @@ def test_links_follow_the_travelling_wave():
                                        atol=1e-12)
 
 
+def test_deferred_links_equal_the_full_step_bit_for_bit():
+    """``antennae_step(..., links=False)`` then ``antennae_links`` for the last step (the fused chunk's way on a
+    terrain without obstacles) leaves the doubles of ``links=True`` every step; with obstacles ``links`` is
+    ignored.  Random head poses, root targets redrawn, offsets relaxing from a retraction."""
+    rng = np.random.default_rng(5)
+    cfg = replace(AntennaeConfig(), wave_amplitude_theta_deg=10.0, wave_amplitude_phi_deg=5.0)
+    for f in (TK.header(0.0), cylinder_terrain(0.3, 0.0, 0.05)):
+        full = A.Antennae(cfg, DT, np.random.default_rng(1), f)
+        lazy = A.Antennae(cfg, DT, np.random.default_rng(1), f)
+        for a in (full, lazy):
+            a.offsets[:] = 0.01 * np.arange(a.offsets.size).reshape(a.offsets.shape)
+        names = ("nominal", "offsets", "root_target", "root_omega", "retracting", "contact", "rising",
+                 "contact_point", "contact_normal", "contact_depth", "arrived", "points", "frames")
+        for chunk in (1, 5, 40):
+            for k in range(chunk):
+                t = k * DT
+                c, R = 0.01 * rng.normal(size=3), random_rotation(rng)
+                full.step(c, R, t)
+                n_r, arrived = A.antennae_step(c, R, t, DT, lazy.params, lazy.f, lazy.nominal, lazy.offsets,
+                                               lazy.root_target, lazy.root_omega, lazy.retracting, lazy.contact,
+                                               lazy.rising, lazy.contact_point, lazy.contact_normal,
+                                               lazy.contact_depth, lazy.arrived, lazy.points, lazy.frames, False)
+                if arrived:
+                    for a in (A.LEFT, A.RIGHT):
+                        if lazy.arrived[a]:
+                            lazy.root_target[a] = lazy._draw()
+            A.antennae_links(lazy.params, t, lazy.nominal, lazy.offsets, lazy.points, lazy.frames)
+            for name in names:
+                np.testing.assert_array_equal(getattr(lazy, name), getattr(full, name), err_msg=name)
+        assert full.targets_drawn > 2
+
+
 # --------------------------------------------------------------------------- contact and retraction
 
 def cylinder_terrain(x, z, radius, height=3.0):

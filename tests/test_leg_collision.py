@@ -139,6 +139,30 @@ def test_a_leg_pushed_inside_by_its_segment_escapes_to_the_surface():
     assert kn >= 0.0 and 0.0 <= min(kn, tp) < SURFACE_TOL_M
 
 
+@pytest.mark.parametrize("check_knees", [True, False])
+def test_knees_inside_and_penetration_equals_the_two_kernels(check_knees):
+    """The one-pass kernel of the compiled controller gives ``stance_knees_inside``'s ik_failed and
+    ``legs_penetration``'s depth, and the tips' signed distances ``legs.tips_touching`` tests."""
+    rng = np.random.default_rng(3)
+    f = TK.with_obstacles(TK.header(0.0), [TK.cylinder_record(0.2, 0.1, 0.3, -1.0, 0.4)])
+    n = 40
+    knees, tips = rng.uniform(-0.6, 0.6, (n, 3)), rng.uniform(-0.6, 0.6, (n, 3))
+    states = np.where(rng.random(n) < 0.6, SW.STANCE, SW.SF2).astype(np.int64)
+    failed0 = rng.random(n) < 0.2
+    ref, got = failed0.copy(), failed0.copy()
+    if check_knees:
+        LC.stance_knees_inside(states, knees, TK.PLANE, f, ref)
+    depth = LC.legs_penetration(TK.PLANE, f, knees, tips)
+    tip_phi = np.zeros(n)
+    assert LC.knees_inside_and_penetration(states, knees, tips, TK.PLANE, f, check_knees, got, tip_phi) == depth
+    np.testing.assert_array_equal(got, ref)
+    assert depth > 0.0 and (ref != failed0).any() == check_knees
+    for cd in (0.0, 0.01):
+        touching = np.zeros(n, bool)
+        L.tips_touching(TK.PLANE, f, tips, cd, touching)
+        np.testing.assert_array_equal(tip_phi <= cd, touching)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("body", ["hybrid", "massspring", "fem"])
 @pytest.mark.parametrize("scenario,duration", [("fig13-cylinders", 12.0), ("foraging", 10.0),

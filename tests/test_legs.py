@@ -334,3 +334,49 @@ def test_leg_geometry_validates_and_mirrors():
         L.leg_geometry(1, gamma=-0.1)
     with pytest.raises(ValueError, match="femur"):
         L.leg_geometry(1, femur=0.0)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_stance_ik_and_fk_pairs_equal_ik_then_fk_bit_for_bit(seed):
+    """The one-pass kernel runs the two STANCE legs of a segment side by side (``legs._stance_pair``): the same
+    doubles as the controller's separate sequence when every leg is in STANCE, with failures of each kind in
+    either leg of a pair (tip out of reach, tip on the root, only a non-convex knee) and theta below theta_min,
+    and with one leg of a segment swinging."""
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    rng = np.random.default_rng(seed)
+    n_seg = 8
+    n_legs = 2 * n_seg
+    geom = geometry(n_seg)
+    seg_c = rng.normal(size=(n_seg, 3))
+    seg_R = np.stack([Rotation.random(random_state=rng).as_matrix() for _ in range(n_seg)])
+    angles = np.array([random_convex_angles(rng) for _ in range(n_legs)])
+    O0, M0, tips = (np.empty((n_legs, 3)) for _ in range(3))
+    L.legs_forward_kinematics(seg_c, seg_R, geom, angles, O0, M0, tips)
+    seg_c += 0.05 * rng.normal(size=seg_c.shape)
+    roots = np.empty((n_legs, 3))
+    L.legs_roots(seg_c, seg_R, geom, roots)
+    tips[2] += 10.0 * seg_R[1][:, 2]          # out of reach, left leg of a pair
+    tips[5] = roots[5]                        # on the root, right leg of a pair
+    # only a non-convex knee: the tip nearly straight out from the root (beta <= 0), left leg of segment 4
+    u = seg_R[4] @ np.array([0.0, 0.0, -1.0])
+    tips[8] = roots[8] + 0.999 * (geom[8, L.FEMUR] + geom[8, L.TIBIA]) * u
+    states = np.full(n_legs, SW.STANCE, np.int64)
+    states[13] = SW.SF2                       # segment 6: one leg swinging
+    start = angles + 0.01 * rng.normal(size=angles.shape)
+    theta_min = float(np.quantile(angles[:, L.THETA], 0.3))
+    a_ref, t_ref = start.copy(), tips.copy()
+    f_ref = np.zeros(n_legs, bool)
+    O_ref, M_ref = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    SW.stance_inverse_kinematics(states, seg_c, seg_R, geom, t_ref, a_ref, f_ref)
+    f_ref |= (states == SW.STANCE) & (a_ref[:, 0] < theta_min)
+    planted = t_ref.copy()
+    L.legs_forward_kinematics(seg_c, seg_R, geom, a_ref, O_ref, M_ref, t_ref)
+    t_ref[states == SW.STANCE] = planted[states == SW.STANCE]
+    a, t = start.copy(), tips.copy()
+    failed = np.zeros(n_legs, bool)
+    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    L.stance_ik_and_fk(states, SW.STANCE, seg_c, seg_R, geom, t, a, failed, theta_min, O, M)
+    ok8 = L.leg_ik_from_segment(seg_c, seg_R, geom, tips, start.copy(), 8)   # circles meet, knee non-convex
+    assert failed[2] and failed[5] and failed[8] and not ok8 and not failed.all()
+    for got, want in ((a, a_ref), (t, t_ref), (failed, f_ref), (O, O_ref), (M, M_ref)):
+        np.testing.assert_array_equal(got, want)

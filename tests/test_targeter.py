@@ -333,3 +333,36 @@ def test_targeter_params_validation():
         T.targeter_params(k1=-1.0)
     with pytest.raises(ValueError):
         T.targeter_params(omega_follow=float("nan"))
+
+
+@pytest.mark.parametrize("kind,f", [(PLANE, FLAT), (SLOPE, TILTED)])
+def test_targeter_step_equals_one_pass_of_the_kernels_bit_for_bit(kind, f):
+    """``targeter_step`` runs its segments in two passes (centres, then turns and Gram-Schmidt): the same
+    doubles as one head-to-tail pass of balance, head_motion / follow and orthonormalize per segment
+    (Sec. 6 order), with segments left to the dynamics among them, turning and misaligned poses."""
+    from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+    rng = np.random.default_rng(4)
+    n = 9
+    c = np.cumsum(np.c_[-0.3 + 0.05 * rng.normal(size=n), 0.02 * rng.normal(size=n), 0.05 * rng.normal(size=n)], 0)
+    c[:, 1] += 1.0
+    R = np.stack([Rotation.from_rotvec(0.2 * rng.normal(size=3)).as_matrix() for _ in range(n)])
+    kinematic = np.ones(n, bool)
+    kinematic[[3, 4]] = False
+    p = params()
+    link_rest, height_target = np.full(n, 0.28), np.full(n, 0.9)
+    got_c, got_R = run_step(c, R, kinematic, kind, f, p, link_rest, height_target, 0.4, 0.8, 1)
+    c_T, R_T = c.copy(), R.copy()
+    for i in range(n):
+        if not kinematic[i]:
+            continue
+        h = signed_distance(kind, f, *c[i])
+        nx, ny, nz = surface_normal(kind, f, *c[i])
+        T.balance(c_T[i], R_T[i], h, nx, ny, nz, height_target[i], p[T.K2], p[T.OMEGA_BALANCE], p[T.ALIGN_TOL], DT)
+        if i == 0:
+            T.head_motion(c_T[0], R_T[0], 0.4, 0.8, 1, DT)
+        else:
+            T.follow(c_T[i], R_T[i], c[i], c_T[i - 1], link_rest[i], p[T.K1], p[T.OMEGA_FOLLOW], p[T.ALIGN_TOL], DT)
+        T.orthonormalize(R_T[i])
+    assert not np.array_equal(R_T[kinematic], R[kinematic])
+    np.testing.assert_array_equal(got_c, c_T)
+    np.testing.assert_array_equal(got_R, R_T)

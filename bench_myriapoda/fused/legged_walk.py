@@ -11,12 +11,17 @@ with the same kernels in the same order on the same arrays:
 2. the controller's step (``controllers.myriapod.compiled.controller_step``);
 3. the support (the bodies' ``set_support``): kinematic = supported | held, the supported
    boxes driven to their targets (``kinematic_targets.drive_to_targets``, paper Sec. 4.1),
-   the attached link nodes put back on the boxes (``hybrid.kernels.place_attached_nodes``);
+   the attached link nodes put back on the boxes (``_place_attached``: the arithmetic of
+   ``hybrid.kernels.place_attached_nodes`` without the coupling residual, which the body's
+   step overwrites before reading it);
 4. a timeline sample every ``record_every`` steps: the controller's record (states, tips,
    brain mode, antenna contact, segment centres before the support) and the monitor's
    (box poses and link centres after the support), into buffers;
 5. one body step (``hybrid.kernels.advance``, ``massspring.myriapod.advance_chain`` or
    ``fem.myriapod.advance_chain``, n = 1).
+
+After the last step (or a step that blew up) ``compiled.finish_chunk`` computes the antennae's
+links that the chunk's steps left to it on a terrain without obstacles (``compiled.I_ANT_DEFER``).
 
 Python is entered once per chunk (the runner's sample rate): ``FusedLeggedWalk.advance``
 packs the controller's scalars, pre-draws its random numbers, calls the kernel, and
@@ -82,6 +87,27 @@ def _copy_frames(R, out):
             out[i, r, 0], out[i, r, 1], out[i, r, 2] = R[i, r, 0], R[i, r, 1], R[i, r, 2]
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _place_attached(fixed, att_body, att_local, c, q, vr, w, Rb, x, v):
+    """``hybrid.kernels.place_attached_nodes`` without its coupling residual: x[fixed], v[fixed] (the same
+    doubles) and Rb (n_seg, 3, 3), the boxes' rotations.  The support's residual (the Python path's
+    ``apply_support`` computes it) is never read: the body's step overwrites it before its statistics, so the
+    fused support skips it and the copy of the positions it is measured from."""
+    rk.quat_to_matrix(q, Rb)
+    for a in range(fixed.shape[0]):
+        i = att_body[a]
+        p = fixed[a]
+        lx, ly, lz = att_local[a, 0], att_local[a, 1], att_local[a, 2]
+        rx = Rb[i, 0, 0] * lx + Rb[i, 0, 1] * ly + Rb[i, 0, 2] * lz
+        ry = Rb[i, 1, 0] * lx + Rb[i, 1, 1] * ly + Rb[i, 1, 2] * lz
+        rz = Rb[i, 2, 0] * lx + Rb[i, 2, 1] * ly + Rb[i, 2, 2] * lz
+        x[p, 0], x[p, 1], x[p, 2] = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+        # v_c + w x r (Baraff 1997 I, Sec. 2.5)
+        v[p, 0] = vr[i, 0] + w[i, 1] * rz - w[i, 2] * ry
+        v[p, 1] = vr[i, 1] + w[i, 2] * rx - w[i, 0] * rz
+        v[p, 2] = vr[i, 2] + w[i, 0] * ry - w[i, 1] * rx
+
+
 # _control and _control_and_support are inlined into the chunks (numba IR inlining): as kernels of their own, numba
 # would optimize and emit the whole controller's machine code once per layer (each compiled function links its
 # callees' code and compiles it again), about 10 s of a cold start (README Development notes).
@@ -111,19 +137,17 @@ def _control(t, C, c, R, REC, n_rec):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _control_and_support(t, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb, residual, dt, S, REC,
-                         n_rec):
+def _control_and_support(t, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb, dt, S, REC, n_rec):
     """Steps 1-4 of the module docstring on a body of rigid boxes for the step starting at t [s]; returns
     the rows recorded so far.
 
     C: the controller (``_control``).  c, q, vr, w, kinematic: the boxes (``rigid_kernels``), UPDATED by
     the support; x, v (n_nodes, 3): the link nodes, attached rows UPDATED; fixed, att_body, att_local: the
-    attachment; Rb (n_seg, 3, 3) and residual (n_fixed,): scratch the body shares
-    (``place_attached_nodes``).  S = (held (n_seg,) bool, link_nodes (n_links, m), Rseg (n_seg, 3, 3),
-    qtmp (4,), x_pred (n_fixed, 3)).  REC: the timeline buffers (``hybrid_chunk``).
+    attachment; Rb (n_seg, 3, 3): scratch the body shares (``_place_attached``).  S = (held (n_seg,) bool,
+    link_nodes (n_links, m), Rseg (n_seg, 3, 3), qtmp (4,)).  REC: the timeline buffers (``hybrid_chunk``).
     """
     A = C[2]
-    held, link_nodes, Rseg, qtmp, x_pred = S
+    held, link_nodes, Rseg, qtmp = S
     rec_c, rec_R, rec_links = REC[6], REC[7], REC[8]
     seg_kin, c_T, R_T = A[CC.A_KINEMATIC], A[CC.A_C_T], A[CC.A_R_T]
     n_seg = c.shape[0]
@@ -135,10 +159,7 @@ def _control_and_support(t, C, c, q, vr, w, kinematic, x, v, fixed, att_body, at
     for i in range(n_seg):
         kinematic[i] = seg_kin[i] or held[i]
     drive_to_targets(c, q, vr, w, Rseg, kinematic, c_T, R_T, dt, qtmp)
-    for a in range(fixed.shape[0]):
-        p = fixed[a]
-        x_pred[a, 0], x_pred[a, 1], x_pred[a, 2] = x[p, 0], x[p, 1], x[p, 2]
-    K.place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pred, residual)
+    _place_attached(fixed, att_body, att_local, c, q, vr, w, Rb, x, v)
     # 4. the monitor's sample: poses after the support, link centres as the mean of their nodes
     if recorded:
         _copy_rows(c, rec_c[n_rec])
@@ -176,7 +197,7 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
     n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
-                                     residual, dt, S, REC, n_rec)
+                                     dt, S, REC, n_rec)
         done, status = K.advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_ptr, inc_off,
                                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
                                  fixed, pf_ptr, pf_col, pf_val, node_link, att_body, att_local,
@@ -185,7 +206,9 @@ def hybrid_chunk(t0, n_steps, C, BA, S, REC):
                                  f_work, b_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                  R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
+            CC.finish_chunk(C[0], C[1], C[2])
             return k + 1, status, n_rec
+    CC.finish_chunk(C[0], C[1], C[2])
     return n_steps, K.OK, n_rec
 
 
@@ -203,14 +226,16 @@ def massspring_chunk(t0, n_steps, C, BA, S, REC):
     n_rec, one_step = np.int64(0), np.int64(1)
     for k in range(n_steps):
         n_rec = _control_and_support(t0 + k * dt, C, c, q, vr, w, kinematic, x, v, fixed, att_body, att_local, Rb,
-                                     residual, dt, S, REC, n_rec)
+                                     dt, S, REC, n_rec)
         done, status = MS.advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, springs, stiffness,
                                         damping, rest, c, q, vr, w, rmass, inertia_body, half_extents, kinematic,
                                         impulse_cache, gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, f_att, x_att, x_pred_adv, residual, spine, force, torque, Rb,
                                         R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
         if status != K.OK:
+            CC.finish_chunk(C[0], C[1], C[2])
             return k + 1, status, n_rec
+    CC.finish_chunk(C[0], C[1], C[2])
     return n_steps, K.OK, n_rec
 
 
@@ -269,7 +294,9 @@ def fem_chunk(t0, n_steps, C, BA, S, REC):
                                         gravity, terr_kind, terr, fric_model, fric, phys, one_step,
                                         f_work, b_work, cent, spine, acc)
         if status != K.OK:
+            CC.finish_chunk(C[0], C[1], C[2])
             return k + 1, status, n_rec
+    CC.finish_chunk(C[0], C[1], C[2])
     return n_steps, K.OK, n_rec
 
 
@@ -331,8 +358,7 @@ class FusedLeggedWalk:
             self.S = (body._held, body.block_nodes, body.rest_offsets, np.zeros((n_seg, 3)), np.zeros((n_seg, 3, 3)),
                       self.Rseg)
         else:
-            self.S = (body._held, np.ascontiguousarray(body.mesh.link_nodes, dtype=np.int64), self.Rseg, np.zeros(4),
-                      np.zeros((len(body.fixed), 3)))
+            self.S = (body._held, np.ascontiguousarray(body.mesh.link_nodes, dtype=np.int64), self.Rseg, np.zeros(4))
         self._alloc(1, n_seg, n_legs)
 
     def _alloc(self, rows: int, n_seg: int, n_legs: int) -> None:

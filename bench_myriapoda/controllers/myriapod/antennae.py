@@ -222,7 +222,7 @@ def antennae_forward_kinematics(c, R, params, angles, points, frames):
 
 @njit(cache=True)
 def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_omega, retracting, contact,
-                  rising, contact_point, contact_normal, contact_depth, arrived, points, frames):
+                  rising, contact_point, contact_normal, contact_depth, arrived, points, frames, links):
     """One antenna update (Sec. 6, step 1) from the head pose (c (3,) [m], R (3, 3)) at time t [s].
 
     f: terrain parameter vector (its obstacle block is queried; the ground is not).
@@ -237,6 +237,13 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
     contact_depth (2,) [m] its depth (-phi, > 0 inside; 0 without contact);
     arrived (2,) bool: the root reached a random target (draw a new one);
     points (2, N + 1, 3) [m]; frames (2, N + 1, 3, 3) (0: the head frame, i + 1: link i).
+    links: False lets a caller that steps many times in a row (``compiled.controller_step`` inside a fused
+    chunk) skip, on a terrain WITHOUT obstacles, the links' wave angles (nominal rows 1..N-1), frames and
+    points beyond the roots: there no sample can touch anything, so nothing in this step reads them (the
+    contact stays off, the retraction never starts); the roots (points[:, 0], frames[:, 0]), the root
+    dynamics, the offsets' relaxation and the contact signals are updated as always, and
+    ``antennae_links`` with this step's t computes the skipped rows later -- the same doubles, since they
+    depend only on t, the roots and the joint angles this step leaves.  With obstacles ``links`` is ignored.
     Returns (rising edges this step, True when a root arrived at its target).
     """
     n_rising = 0
@@ -248,6 +255,7 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
     relax = math.exp(-dt / params[P_RELAX_TAU])
     near = np.empty(int(f[H_NOBST]), dtype=np.int64)
     reach = n * link + 2.0 * params[P_RELEASE]  # no sample of an antenna is farther from its root
+    full = links or has_obst
     for a in range(2):
         s = 1.0 if a == LEFT else -1.0
         # 1. the root link toward its target at constant speed; the other links' wave
@@ -258,7 +266,8 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
                 root_omega[a] = params[P_OMEGA0]
             arrived[a] = True
             any_arrived = True
-        wave_angles(params, t, nominal[a])
+        if full:
+            wave_angles(params, t, nominal[a])
         for i in range(n):
             offsets[a, i, THETA] *= relax
             offsets[a, i, PHI] *= relax
@@ -271,7 +280,7 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
         min_phi = np.inf
         # only the obstacles within the antenna's reach are queried below
         n_near = _near_obstacles(f, points[a, 0, 0], points[a, 0, 1], points[a, 0, 2], reach, near) if has_obst else 0
-        for i in range(n):
+        for i in range(n if full else 0):
             F_prev = frames[a, i]
             F = frames[a, i + 1]
             th = nominal[a, i, THETA] + offsets[a, i, THETA]
@@ -363,6 +372,27 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
     return n_rising, any_arrived
 
 
+@njit(cache=True)
+def antennae_links(params, t, nominal, offsets, points, frames):
+    """The rows ``antennae_step(..., links=False)`` skipped, for its step at time t [s]: the wave angles
+    (nominal (2, N, 2) [rad], rows 1..N-1), the links' frames (frames (2, N + 1, 3, 3), entries 1..N) and
+    points (points (2, N + 1, 3) [m], entries 1..N) from the roots points[:, 0], frames[:, 0] and the joint
+    angles nominal + offsets; the arithmetic of ``antennae_step``'s link loop without obstacles."""
+    n = nominal.shape[1]
+    link = params[P_LINK]
+    for a in range(2):
+        s = 1.0 if a == LEFT else -1.0
+        wave_angles(params, t, nominal[a])
+        for i in range(n):
+            F = frames[a, i + 1]
+            th = nominal[a, i, THETA] + offsets[a, i, THETA]
+            pp = nominal[a, i, PHI] + offsets[a, i, PHI]
+            _yaw_pitch_frame(frames[a, i], s * th, pp, F)
+            points[a, i + 1, 0] = points[a, i, 0] + link * F[0, 0]
+            points[a, i + 1, 1] = points[a, i, 1] + link * F[1, 0]
+            points[a, i + 1, 2] = points[a, i, 2] + link * F[2, 0]
+
+
 class Antennae:
     """State and update of the two antennae of one head (see the module docstring).
 
@@ -424,7 +454,7 @@ class Antennae:
         n_rising, arrived = antennae_step(c, R, t, self.dt, self.params, self.f, self.nominal, self.offsets,
                                           self.root_target, self.root_omega, self.retracting, self.contact,
                                           self.rising, self.contact_point, self.contact_normal, self.contact_depth,
-                                          self.arrived, self.points, self.frames)
+                                          self.arrived, self.points, self.frames, True)
         self.contact_events += n_rising
         if arrived:
             for a in (LEFT, RIGHT):

@@ -47,15 +47,22 @@ ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
 (F_DT, F_CONTACT_DIST, F_THETA_MIN, F_MAJORITY, F_HEAD_SPEED, F_TURN_MAX, F_TURN_RATE, F_AVOID_RATE,
  F_AVOID_HOLD, F_AVOID_SPEED, F_MAX_BODY_TURN, F_TURN_MEMORY_LENGTH,
  F_AVOID_DIR, F_TURN_MEMORY, F_AVOID_UNTIL, F_TURN_LEFT, F_T_WALK, F_TOUCH_AT_WALK, F_TRACKING_SUM,
- F_HEADING_CMD, F_HEADING_ERR_SUM, F_LEG_PEN_MAX) = range(22)
-N_FS = 22
+ F_HEADING_CMD, F_HEADING_ERR_SUM, F_LEG_PEN_MAX, F_ANT_T) = range(23)
+N_FS = 23
 # int scalars (``ints``)
 (I_TERR_KIND, I_MIN_STANCE, I_WALK_MODE, I_RECORD_EVERY, I_COLLIDE, I_HAS_ANTENNAE, I_PRIORITY_LEFT,
  I_BRAIN, I_STEP, I_TRACKING_N, I_HEADING_ERR_N, I_LEG_STOPS, I_LEG_STUCK, I_CONTACT_EVENTS, I_TARGETS_DRAWN,
- I_RECORDED, I_RND_USED, I_ANT_RND_USED) = range(18)
-N_INTS = 18
+ I_RECORDED, I_RND_USED, I_ANT_RND_USED, I_ANT_DEFER, I_ANT_PENDING, I_TIP_PHI_OK) = range(21)
+N_INTS = 21
+# I_ANT_DEFER = 1: on a terrain without obstacles the antennae's links (wave angles, frames, points beyond
+# the roots) are computed only once per chunk, by ``finish_chunk`` after its last step, for that step's time
+# F_ANT_T (``antennae.antennae_step``'s ``links``): within a chunk nothing reads them, so the state after the
+# chunk is the same doubles.  I_ANT_PENDING: a step left them to ``finish_chunk``.  I_TIP_PHI_OK: the tips'
+# signed distances in ``tip_phi`` (the last entry of ``A``) are those of the tips as they stand (measured at the
+# end of the last step; the tips move only in the controller's step), so the next step's contact test reuses them.
 # positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
 A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 33
+A_ANT_PARAMS, A_NOMINAL, A_OFFSETS, A_POINTS, A_FRAMES = 26, 28, 29, 39, 40
 
 # (controller attribute, fs index) of the float scalars, (attribute, ints index) of the int ones
 _FLOATS = (("dt", F_DT), ("contact_distance", F_CONTACT_DIST), ("theta_min", F_THETA_MIN),
@@ -110,6 +117,7 @@ class ControllerState:
                           np.ascontiguousarray(rate, dtype=np.float64))
         self.rnd = np.zeros(1)
         self.ant_rnd = np.zeros(1)
+        self.tip_phi = np.zeros(c.n_legs)  # the tips' signed distances [m] (I_TIP_PHI_OK)
 
     def pack(self) -> tuple:
         """Scalars into ``fs``/``ints``; returns the array tuple ``A``."""
@@ -127,6 +135,9 @@ class ControllerState:
         ints[I_RECORDED] = c.recorded
         ints[I_RND_USED] = 0
         ints[I_ANT_RND_USED] = 0
+        ints[I_ANT_DEFER] = 1   # the chunk kernels call finish_chunk
+        ints[I_ANT_PENDING] = 0
+        ints[I_TIP_PHI_OK] = 0   # measured afresh in a chunk's first step: the caller may have moved the tips
         if ant is not None:
             a = (ant.params, ant.f, ant.nominal, ant.offsets, ant.root_target, ant.root_omega, ant.retracting,
                  ant.contact, ant.rising, ant.contact_point, ant.contact_normal, ant.contact_depth, ant.arrived,
@@ -136,7 +147,7 @@ class ControllerState:
         return (c.states, c.angles, c.tips, c._O, c._M, c.touching, c.airborne, c.ik_failed, c.entered, c.supported,
                 c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, c.brain_steps,
                 c.geom, c.sw_params, c.tg_params, c.terr, c.terr_walk, c.link_rest, c.height_target) \
-            + self._schedule + a
+            + self._schedule + a + (self.tip_phi,)
 
     def draws(self, n_steps: int) -> None:
         """Pre-draw the doubles a chunk of ``n_steps`` steps may use (at most one random-walk turn and two
@@ -255,6 +266,15 @@ def _avoidance_turn(left, right, priority_left):
 
 
 @njit(cache=True)
+def finish_chunk(fs, ints, A):
+    """After the last ``controller_step`` of a chunk (and before anything reads the antennae): the antennae's
+    links the chunk's steps left to it (``I_ANT_DEFER``), for the last step's time."""
+    if ints[I_ANT_PENDING] != 0:
+        AN.antennae_links(A[A_ANT_PARAMS], fs[F_ANT_T], A[A_NOMINAL], A[A_OFFSETS], A[A_POINTS], A[A_FRAMES])
+        ints[I_ANT_PENDING] = 0
+
+
+@njit(cache=True)
 def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     """One ``MyriapodController.step`` (its docstring has the order) for the step starting at t [s].
 
@@ -264,12 +284,14 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     support the body must carry this step.  rnd, ant_rnd: pre-drawn doubles of the controller's and
     the antennae's generators, consumed from ints[I_RND_USED], ints[I_ANT_RND_USED].
     err_scratch: (n_seg,) scratch.  Returns whether this step is recorded in the timeline.
+    With ints[I_ANT_DEFER] = 1 (``ControllerState.pack`` sets it) the caller calls ``finish_chunk``
+    after its last step.
     """
     (states, angles, tips, O, M, touching, airborne, ik_failed, entered, supported, kinematic, c_T, R_T,
      prev_angles, stopped, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
      height_target, sched_t, sched_speed, sched_rate, ant_params, ant_f, nominal, offsets, root_target,
      root_omega, retracting, contact, rising, contact_point, contact_normal, contact_depth, arrived, points,
-     frames) = A
+     frames, tip_phi) = A
     dt = fs[F_DT]
     kind = ints[I_TERR_KIND]
     n_seg = c.shape[0]
@@ -288,13 +310,18 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
         ints[I_TRACKING_N] += m
     if step == 0:
         L.legs_forward_kinematics(c, R, geom, angles, O, M, tips)
+        ints[I_TIP_PHI_OK] = 0
     # 1. antennae (food is not compiled)
     has_ant = ints[I_HAS_ANTENNAE] != 0
     if has_ant:
+        links = ints[I_ANT_DEFER] == 0 or ant_f[AN.H_NOBST] > 0.0
         n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f, nominal, offsets,
                                                  root_target, root_omega, retracting, contact, rising,
                                                  contact_point, contact_normal, contact_depth, arrived, points,
-                                                 frames)
+                                                 frames, links)
+        if not links:
+            fs[F_ANT_T] = t
+            ints[I_ANT_PENDING] = 1
         ints[I_CONTACT_EVENTS] += n_rising
         if any_arrived:
             for a in range(2):
@@ -308,7 +335,12 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
                     ints[I_ANT_RND_USED] += 2
                     ints[I_TARGETS_DRAWN] += 1
     # 2. head: brain mode
-    L.tips_touching(kind, terr, tips, fs[F_CONTACT_DIST], touching)
+    if ints[I_TIP_PHI_OK] != 0:  # legs.tips_touching on the tips' distances measured after they last moved
+        cd = fs[F_CONTACT_DIST]
+        for k in range(n_legs):
+            touching[k] = tip_phi[k] <= cd
+    else:
+        L.tips_touching(kind, terr, tips, fs[F_CONTACT_DIST], touching)
     n_touch = 0
     for k in range(n_legs):
         if touching[k]:
@@ -398,9 +430,11 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     # the STANCE legs' IK, theta_min (rule 3), the FK of all legs with planted tips kept: the controller's
     # stance_inverse_kinematics, its theta_min test and legs_forward_kinematics in one pass (same doubles)
     L.stance_ik_and_fk(states, SW.STANCE, c_T, R_T, geom, tips, angles, ik_failed, fs[F_THETA_MIN], O, M)
-    if collide:
-        LC.stance_knees_inside(states, M, kind, terr, ik_failed)
-    fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX], LC.legs_penetration(kind, terr, M, tips))
+    # stance_knees_inside (with collisions) and legs_penetration, each knee's distance taken once; the tips'
+    # distances kept for the next step's contact test
+    fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX],
+                            LC.knees_inside_and_penetration(states, M, tips, kind, terr, collide, ik_failed, tip_phi))
+    ints[I_TIP_PHI_OK] = 1
     recorded = step % ints[I_RECORD_EVERY] == 0
     ints[I_RECORDED] = recorded
     ints[I_STEP] = step + 1

@@ -156,3 +156,20 @@ def legs_penetration(kind, f, knees, tips):
         deepest = max(deepest, -signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2]),
                       -signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2]))
     return deepest
+
+
+@njit(cache=True)
+def knees_inside_and_penetration(states, knees, tips, kind, f, check_knees, ik_failed, tip_phi):
+    """``stance_knees_inside`` (when check_knees) then ``legs_penetration`` in one pass, each knee's signed
+    distance taken once: the same ik_failed and the same depth [m] (returned).  tip_phi (n_legs,) [m],
+    overwritten: the tips' signed distances, for a caller that tests the same tips again before they move
+    (the next controller step's ``legs.tips_touching``)."""
+    deepest = 0.0
+    for k in range(tips.shape[0]):
+        pk = signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2])
+        if check_knees and states[k] == STANCE and pk < 0.0:
+            ik_failed[k] = True
+        pt = signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
+        tip_phi[k] = pt
+        deepest = max(deepest, -pk, -pt)
+    return deepest

@@ -172,6 +172,13 @@ def follow(c_T, R_T, c_self, c_ahead, l0, k1, omega, tol, dt):
     c_ahead: (3,) [m] the (updated) centre of the segment ahead; l0 [m] rest
     link length; k1 [1/(m s)]; omega [rad/s]; tol [rad]; dt [s].
     """
+    _follow_centre(c_T, c_self, c_ahead, l0, k1, dt)
+    _follow_turn(R_T, c_self, c_ahead, omega, tol, dt)
+
+
+@njit(cache=True, inline="always")
+def _follow_centre(c_T, c_self, c_ahead, l0, k1, dt):
+    """The Follower's move of the centre: c_T += k1 (|l| - l0) l dt, l = c_ahead - c_self."""
     lx = c_ahead[0] - c_self[0]
     ly = c_ahead[1] - c_self[1]
     lz = c_ahead[2] - c_self[2]
@@ -180,6 +187,14 @@ def follow(c_T, R_T, c_self, c_ahead, l0, k1, omega, tol, dt):
     c_T[0] += g * lx
     c_T[1] += g * ly
     c_T[2] += g * lz
+
+
+@njit(cache=True, inline="always")
+def _follow_turn(R_T, c_self, c_ahead, omega, tol, dt):
+    """The Follower's turn of the x axis toward l = c_ahead - c_self about the segment's own y axis."""
+    lx = c_ahead[0] - c_self[0]
+    ly = c_ahead[1] - c_self[1]
+    lz = c_ahead[2] - c_self[2]
     # angle from the x axis to l in the segment's x-z plane, positive toward +z
     px = R_T[0, 0] * lx + R_T[1, 0] * ly + R_T[2, 0] * lz
     pz = R_T[0, 2] * lx + R_T[1, 2] * ly + R_T[2, 2] * lz
@@ -218,7 +233,13 @@ def targeter_step(c, R, kinematic, kind, f, params, link_rest, height_target,
     c_T: (n_segments, 3) [m], R_T: (n_segments, 3, 3): overwritten (must not
     alias c, R).
     """
-    for i in range(c.shape[0]):
+    # Two passes over the segments, each segment's operations in the order of Sec. 6 (Balancer, then the
+    # head's motion or the Follower, then Gram-Schmidt), so the same doubles as one pass: the centres first,
+    # head to tail (a Follower needs the final centre of the segment ahead: a chain of dependent steps), then
+    # the Followers' turns and the re-orthonormalization, which depend on that chain but not on each other,
+    # so the processor overlaps their atan2, sin, cos and square roots across segments (issue 13).
+    n = c.shape[0]
+    for i in range(n):
         for a in range(3):
             c_T[i, a] = c[i, a]
             for b in range(3):
@@ -233,8 +254,12 @@ def targeter_step(c, R, kinematic, kind, f, params, link_rest, height_target,
         if i == 0:
             head_motion(c_T[0], R_T[0], head_speed, head_turn_rate, head_turn_dir, dt)
         else:
-            follow(c_T[i], R_T[i], c[i], c_T[i - 1], link_rest[i], params[K1], params[OMEGA_FOLLOW],
-                   params[ALIGN_TOL], dt)
+            _follow_centre(c_T[i], c[i], c_T[i - 1], link_rest[i], params[K1], dt)
+    for i in range(n):
+        if not kinematic[i]:
+            continue
+        if i > 0:
+            _follow_turn(R_T[i], c[i], c_T[i - 1], params[OMEGA_FOLLOW], params[ALIGN_TOL], dt)
         orthonormalize(R_T[i])
 
 
