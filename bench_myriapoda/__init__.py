@@ -36,6 +36,14 @@ if "NUMBA_CACHE_DIR" not in os.environ:  # a user's own choice wins
     except AttributeError:
         pass
 
+# Cold start (issue 13): numba's type inference tries many typing templates per operation and builds an error
+# for each one that does not match (about 65,000 in one compile of the hybrid chain's kernels); with colorama
+# installed, each error's message is coloured, which runs colorama's init and wraps stdout and stderr every
+# time (5 % of the profiled compile).  Plain messages cost nothing; they only matter when a kernel fails to
+# compile, and then they read the same without the terminal colours.  Read when numba.core.errors is imported
+# (after this line, as the package does not import numba itself); a user's own setting wins.
+os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
+
 
 # The Python API (api.py), imported on first use: `import bench_myriapoda` stays light (no numba,
 # no pandas) and the numba cache directory above is set before anything imports numba.
