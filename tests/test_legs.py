@@ -294,19 +294,10 @@ def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
     start = angles + 0.01 * rng.normal(size=angles.shape)
     theta_min = float(np.median(angles[:, L.THETA]))  # some STANCE legs below it
     # reference: the controller's sequence
-    a_ref, t_ref = start.copy(), tips.copy()
-    f_ref = np.zeros(n_legs, bool)
-    O_ref, M_ref = np.empty((n_legs, 3)), np.empty((n_legs, 3))
-    SW.stance_inverse_kinematics(states, seg_c, seg_R, geom, t_ref, a_ref, f_ref)
-    f_ref |= (states == SW.STANCE) & (a_ref[:, 0] < theta_min)
-    planted = t_ref.copy()
-    L.legs_forward_kinematics(seg_c, seg_R, geom, a_ref, O_ref, M_ref, t_ref)
-    t_ref[states == SW.STANCE] = planted[states == SW.STANCE]
+    a_ref, t_ref, f_ref, O_ref, M_ref = _ik_then_fk_as_the_controller(states, seg_c, seg_R, geom, tips, start,
+                                                                      theta_min)
     # the one-pass kernel
-    a, t = start.copy(), tips.copy()
-    failed = np.zeros(n_legs, bool)
-    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
-    L.stance_ik_and_fk(states, SW.STANCE, seg_c, seg_R, geom, t, a, failed, theta_min, O, M)
+    a, t, failed, O, M = _stance_ik_and_fk_one_pass(states, seg_c, seg_R, geom, tips, start, theta_min)
     assert failed[3] and failed[6] and not failed.all()
     assert (~failed & (states == SW.STANCE)).any()
     for got, want in ((a, a_ref), (t, t_ref), (failed, f_ref), (O, O_ref), (M, M_ref)):
@@ -364,19 +355,38 @@ def test_stance_ik_and_fk_pairs_equal_ik_then_fk_bit_for_bit(seed):
     states[13] = SW.SF2                       # segment 6: one leg swinging
     start = angles + 0.01 * rng.normal(size=angles.shape)
     theta_min = float(np.quantile(angles[:, L.THETA], 0.3))
-    a_ref, t_ref = start.copy(), tips.copy()
-    f_ref = np.zeros(n_legs, bool)
-    O_ref, M_ref = np.empty((n_legs, 3)), np.empty((n_legs, 3))
-    SW.stance_inverse_kinematics(states, seg_c, seg_R, geom, t_ref, a_ref, f_ref)
-    f_ref |= (states == SW.STANCE) & (a_ref[:, 0] < theta_min)
-    planted = t_ref.copy()
-    L.legs_forward_kinematics(seg_c, seg_R, geom, a_ref, O_ref, M_ref, t_ref)
-    t_ref[states == SW.STANCE] = planted[states == SW.STANCE]
-    a, t = start.copy(), tips.copy()
-    failed = np.zeros(n_legs, bool)
-    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
-    L.stance_ik_and_fk(states, SW.STANCE, seg_c, seg_R, geom, t, a, failed, theta_min, O, M)
+    a_ref, t_ref, f_ref, O_ref, M_ref = _ik_then_fk_as_the_controller(states, seg_c, seg_R, geom, tips, start,
+                                                                      theta_min)
+    a, t, failed, O, M = _stance_ik_and_fk_one_pass(states, seg_c, seg_R, geom, tips, start, theta_min)
     ok8 = L.leg_ik_from_segment(seg_c, seg_R, geom, tips, start.copy(), 8)   # circles meet, knee non-convex
     assert failed[2] and failed[5] and failed[8] and not ok8 and not failed.all()
     for got, want in ((a, a_ref), (t, t_ref), (failed, f_ref), (O, O_ref), (M, M_ref)):
         np.testing.assert_array_equal(got, want)
+
+
+def _ik_then_fk_as_the_controller(states, seg_c, seg_R, geom, tips, start, theta_min):
+    """The controller's separate sequence, the reference of ``legs.stance_ik_and_fk``: the STANCE legs' IK
+    (``switcher.stance_inverse_kinematics``), the theta_min test, then every leg's FK, the STANCE tips kept
+    where they were planted.  Returns (angles, tips, failed, knees O, knees M) as new arrays."""
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    n_legs = len(states)
+    a, t = start.copy(), tips.copy()
+    failed = np.zeros(n_legs, bool)
+    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    SW.stance_inverse_kinematics(states, seg_c, seg_R, geom, t, a, failed)
+    failed |= (states == SW.STANCE) & (a[:, 0] < theta_min)
+    planted = t.copy()
+    L.legs_forward_kinematics(seg_c, seg_R, geom, a, O, M, t)
+    t[states == SW.STANCE] = planted[states == SW.STANCE]
+    return a, t, failed, O, M
+
+
+def _stance_ik_and_fk_one_pass(states, seg_c, seg_R, geom, tips, start, theta_min):
+    """``legs.stance_ik_and_fk`` on copies of the same inputs; returns what the reference returns."""
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    n_legs = len(states)
+    a, t = start.copy(), tips.copy()
+    failed = np.zeros(n_legs, bool)
+    O, M = np.empty((n_legs, 3)), np.empty((n_legs, 3))
+    L.stance_ik_and_fk(states, SW.STANCE, seg_c, seg_R, geom, t, a, failed, theta_min, O, M)
+    return a, t, failed, O, M
