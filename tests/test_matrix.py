@@ -195,6 +195,37 @@ def test_local_and_dask_give_identical_metrics(tmp_path):
     assert speeds[0.0] != speeds[0.001]
 
 
+def test_dask_worker_processes_get_the_compile_lock_and_the_threaded_cluster_leaves_this_process_alone():
+    # issue 13: the local executor's workers compile a shared kernel once (compile_lock); Dask worker processes
+    # on one machine share numba's cache the same way and must wait for each other too
+    pytest.importorskip("dask.distributed")
+    import gc
+
+    from bench_myriapoda.harness import executors
+
+    before = executors.worker_process_state()
+    client, cluster = executors.dask_client(None, workers=1, processes=True)
+    try:
+        state = client.run(executors.worker_process_state)
+        assert len(state) == 1
+        assert [tuple(v) for v in state.values()] == [(True, executors.WORKER_GC_THRESHOLDS)]
+        # a restarted worker (a timed-out case's) gets them again
+        client.restart_workers(list(state))
+        again = client.run(executors.worker_process_state)
+        assert [tuple(v) for v in again.values()] == [(True, executors.WORKER_GC_THRESHOLDS)]
+    finally:
+        client.close()
+        cluster.close()
+    client, cluster = executors.dask_client(None, workers=1, processes=False)
+    try:
+        assert list(client.run(executors.worker_process_state).values()) == [before]
+    finally:
+        client.close()
+        cluster.close()
+    assert executors.worker_process_state() == before
+    assert gc.get_threshold() == before[1]
+
+
 def test_a_case_that_raises_blows_up_or_outruns_its_timeout_is_recorded_and_the_others_complete(tmp_path, capsys):
     p = write(tmp_path, """
         [matrix]

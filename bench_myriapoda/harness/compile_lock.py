@@ -12,7 +12,10 @@ first, then loads the saved machine code instead of compiling it again.
 
 No deadlock: a process holds the locks of the kernels it is compiling, outermost first, along the
 call graph, which has no cycles; and a wait gives up after ``WAIT_S`` and compiles anyway.  Locks
-die with their process (``flock``).  Kernels without ``cache=True`` (numba's own helpers) are
+die with their process (``flock``).  A file lock is taken inside numba's own compiler lock (one
+compile at a time per process), so in a process with several threads compiling (a Dask worker with
+``--nthreads`` above 1) only one thread at a time holds file locks; without that, two threads could
+each hold one file lock and wait for numba's lock held by the other.  Kernels without ``cache=True`` (numba's own helpers) are
 compiled as before.
 """
 from __future__ import annotations
@@ -47,6 +50,7 @@ def install() -> None:
         return
     from numba.core import dispatcher as nd, sigutils
     from numba.core.caching import NullCache
+    from numba.core.compiler_lock import global_compiler_lock
 
     if getattr(nd.Dispatcher.compile, "_bench_compile_lock", False):
         return
@@ -59,8 +63,12 @@ def install() -> None:
         if tuple(args) in self.overloads:
             return plain(self, sig)
         path = _lock_path(self, tuple(args))
-        if path in _held:
-            return plain(self, sig)
+        with global_compiler_lock:  # re-entrant; numba takes it again inside ``plain``
+            if path in _held:
+                return plain(self, sig)
+            return _locked(path, self, sig)
+
+    def _locked(path, self, sig):
         fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
         try:
             t0 = time.monotonic()

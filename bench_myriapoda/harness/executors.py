@@ -140,10 +140,8 @@ def _worker_main(conn) -> None:
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and stops its workers
     from ..core import registry
-    from . import compile_lock
 
-    compile_lock.install()  # a kernel another worker is compiling is waited for and loaded, not compiled twice
-    gc.set_threshold(*WORKER_GC_THRESHOLDS)
+    worker_process_settings()  # the compile lock: a kernel another worker is compiling is loaded, not compiled twice
     registry.load_all()
     while True:
         try:
@@ -390,15 +388,9 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
 
 def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeout: float | None,
               emit: Callable[[RunResult], None], processes: bool = True) -> None:
-    from dask.distributed import Client, LocalCluster, wait  # optional dependency: imported only here
+    from dask.distributed import wait  # optional dependency: imported only here
 
-    cluster = None
-    if scheduler:
-        client = Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
-    else:
-        cluster = LocalCluster(n_workers=max(1, workers), threads_per_worker=1, processes=processes,
-                               dashboard_address=None)
-        client = Client(cluster)
+    client, cluster = dask_client(scheduler, workers, processes)
     try:
         futures = {client.submit(run_case_slim, case, pure=False): case for case in cases}
         started: dict[str, float] = {}
@@ -434,6 +426,68 @@ def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeou
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+def worker_process_settings() -> None:
+    """What every matrix worker process sets before its first case: the compile lock (a kernel another
+    worker process is compiling is waited for and loaded from numba's cache, not compiled twice) and
+    the garbage collector's thresholds (``WORKER_GC_THRESHOLDS``).  Idempotent."""
+    from . import compile_lock
+
+    compile_lock.install()
+    gc.set_threshold(*WORKER_GC_THRESHOLDS)
+
+
+def worker_process_state() -> tuple[bool, tuple[int, int, int]]:
+    """(compile lock installed, garbage-collector thresholds) of the calling process."""
+    from numba.core import dispatcher as nd
+
+    return bool(getattr(nd.Dispatcher.compile, "_bench_compile_lock", False)), gc.get_threshold()
+
+
+def _worker_setup_plugin():
+    """A Dask ``WorkerPlugin`` that runs :func:`worker_process_settings` in every worker, also in
+    workers that join or are restarted later (a timed-out case's worker is restarted)."""
+    from distributed.diagnostics.plugin import WorkerPlugin
+
+    class WorkerProcessSettings(WorkerPlugin):
+        name = "bench-myriapoda-worker-process-settings"
+
+        def setup(self, worker) -> None:
+            worker_process_settings()
+
+    return WorkerProcessSettings()
+
+
+def dask_client(scheduler: str | None, workers: int, processes: bool = True):
+    """(client, local cluster or None): a ``Client`` of the cluster at ``scheduler``, or of a new
+    ``LocalCluster`` of ``workers`` single-threaded workers (threads of this process when not
+    ``processes``).
+
+    Worker processes get :func:`worker_process_settings`, as the local executor's workers do: on a
+    cold start the workers of one machine share numba's cache directory, and without the compile
+    lock two of them compile the same shared kernel side by side.  Threads of this process are
+    left alone: numba compiles one kernel at a time per process anyway, and the settings would
+    change the calling process.
+    """
+    from dask.distributed import Client, LocalCluster
+
+    cluster = None
+    if scheduler:
+        client = Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
+    else:
+        cluster = LocalCluster(n_workers=max(1, workers), threads_per_worker=1, processes=processes,
+                               dashboard_address=None)
+        client = Client(cluster)
+    if scheduler or processes:
+        try:
+            client.register_plugin(_worker_setup_plugin())
+        except Exception:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+            raise
+    return client, cluster
 
 
 DASK_CONNECT_TIMEOUT_S = 10.0
