@@ -345,23 +345,47 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
     negative to numba, whose wrap-around select turns the loads into gathers, and views per loop cost
     a reference count each (measured: about 0.15 us per group loop with views on a 6-segment snake).
     """
-    n_seg = act.shape[0]
-    n_faces = n_seg + 1
     stride = xc.shape[2]
-    face_scales(act, volume_conserving, face_scale)
-    for c in range(4):
-        for t in range(n_seg):
-            st[c * stride + t] = fibre_stretch(act, t, c)
-        for t in range(n_faces):
-            fs[c * stride + t] = face_scale[t]
-    xf = xc.reshape(xc.size)
-    vf = vc.reshape(vc.size)
-    gff = gf.reshape(gf.size)
-    gp = gpar.reshape(gpar.size)
-    dim = np.uint64(xc.shape[1] * stride)
+    act_buf = act.reshape((1, act.shape[0], act.shape[1]))
+    _group_forces_flat(act_buf, np.int64(0), volume_conserving, xc.reshape(xc.size), vc.reshape(vc.size),
+                       np.uint64(xc.shape[1] * stride), stride, grp, gpar.reshape(gpar.size), gpar.shape[2], plan,
+                       face_scale, st, fs, gf.reshape(gf.size), gf.shape[1], fc.reshape(fc.size))
+
+
+@njit(cache=True, error_model="numpy")
+def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp, gp, plen, plan, face_scale, st, fs,
+                       gff, glen, fcf):
+    """``group_spring_forces`` on flat arrays, made once per ``advance`` call (a view costs a reference
+    count): xf, vf the (3, 5, stride) positions and velocities taken flat (axis stride ``dim``, uint64); gp
+    the groups' params taken flat (row length plen); gff the groups' forces taken flat (row length glen);
+    fcf the (3, 4, stride) forces taken flat.  The step's muscle strains are row ``row`` of act_buf
+    (n_rows, n_seg, 3), read in place.  The fibre stretches and face scales (``fibre_stretch``,
+    ``face_scales``: the same operations) are computed in one loop over the faces."""
+    n_seg = act_buf.shape[1]
+    n_faces = n_seg + 1
+    for t in range(n_faces):
+        if volume_conserving:  # face_scales: Miller Sec. 4
+            tot = 0.0
+            cnt = 0
+            if t > 0:
+                tot += max(1.0 + act_buf[row, t - 1, 0], MIN_STRETCH)
+                cnt += 1
+            if t < n_seg:
+                tot += max(1.0 + act_buf[row, t, 0], MIN_STRETCH)
+                cnt += 1
+            scale = 1.0 / math.sqrt(tot / cnt)
+        else:
+            scale = 1.0
+        face_scale[t] = scale
+        for c in range(4):
+            fs[c * stride + t] = scale
+        if t < n_seg:  # fibre_stretch of the four corners' fibres of segment t
+            a0, a1, a2 = act_buf[row, t, 0], act_buf[row, t, 1], act_buf[row, t, 2]
+            st[t] = max(1.0 + a0 + a1 * -1.0 + a2 * -1.0, MIN_STRETCH)
+            st[stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * -1.0, MIN_STRETCH)
+            st[2 * stride + t] = max(1.0 + a0 + a1 * -1.0 + a2 * 1.0, MIN_STRETCH)
+            st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
     n_groups = grp.shape[0]
-    glen = gf.shape[1]
-    plen = gpar.shape[2]
     one = np.uint64(1)
     for g in range(n_groups):
         s = grp[g, GRP_SHIFT]
@@ -399,9 +423,9 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
         if s != 0:  # the springs past the last face: +0.0 read by its a end, -0.0 read by the next row's first b end
             for r in range(grp[g, GRP_LO], grp[g, GRP_HI]):
                 for e in range(3):
-                    gf[3 * g + e, 1 + r * stride + n_faces - 1] = 0.0
-                    gf[3 * g + e, 1 + r * stride + stride - 1] = -0.0
-    fcf = fc.reshape(fc.size)
+                    o = np.uint64((3 * g + e) * glen + 1 + r * stride)
+                    gff[o + np.uint64(n_faces - 1)] = 0.0
+                    gff[o + np.uint64(stride - 1)] = -0.0
     for c in range(4):
         b = 1 + c * stride
         for e in range(3):
@@ -430,6 +454,8 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
                 a = a + s6 * gff[r6 + u]
                 a = a + s7 * gff[r7 + u]
                 fcf[out + u] = a + s8 * gff[r8 + u]
+
+
 
 
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
@@ -817,12 +843,14 @@ def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
     for f in range(n_faces):
         for c in range(4):
             imc[c * stride + f] = inv_mass[4 * f + c]
-    # flat views for the batched node pass, made once per call (a view costs a reference count)
+    # flat views for the spring groups and the batched node pass, made once per call (a view costs a reference count)
     xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
     xd, fd, wlu = np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl)
     osx = np.uint64(B_SX) * wlu
+    gp, plen, gff, glen = gpar.reshape(gpar.size), gpar.shape[2], gf.reshape(gf.size), gf.shape[1]
     for step in range(n_steps):
-        group_spring_forces(act_buf[min(step, n_rows - 1)], volume, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc)
+        _group_forces_flat(act_buf, min(step, n_rows - 1), volume, xf, vf, xd, stride, grp, gp, plen, plan, face_scale,
+                           st, fs, gff, glen, ff)
         if not batched:
             spine_vectors_c(xc, spine)
         if stick:
