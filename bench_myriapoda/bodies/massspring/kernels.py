@@ -37,10 +37,13 @@ spring forces are summed differs (by family, not by spring index), so results ag
 references (and serve the energy and the legged chain).
 
 The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
-on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` runs it instead: the
-touching nodes' friction is gathered and computed in one vectorised loop
-(``coulomb_friction_batch``), bitwise the same results (the friction was 45 % of the snake's step
-called node by node); its element-wise passes run over the four corner rows as one flat row.
+on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` (``_node_rows`` in the step
+loop) runs it instead, bitwise the same results: every node's velocity, signed distance and normal
+impulse in one vectorised loop over the four corner rows taken as one flat row, then the friction
+(``coulomb_friction_batch``'s arithmetic) over whole corner rows that hold a touching node (a node
+without an impulse keeps its velocity exactly, so the touching nodes need no gather), then positions,
+collisions and checks (``_positions_flat``).  Called node by node the friction was 45 % of the snake's
+step; gathering the touching nodes cost about 21 ns per segment and 0.35 us per step on a short body.
 """
 from __future__ import annotations
 
@@ -606,11 +609,11 @@ def _flat_phi(plane, h, ms, cs, x, y):
 @njit(cache=True, error_model="numpy")
 def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, dt, euler, plane, h, ms, cs, nx, ny, nz, r_n, r_t,
                     max_pen, max_speed2):
-    """Pass (4) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
+    """Pass (3) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
     n_flat nodes of the flat corner-major arrays xf, vf (axis stride xd), velocities and signed distances
     from the work array wf (row length wl), written as selects so that the loop vectorises (its own
-    function: in the node pass's body numba joined its variables with those of the gather pass, and
-    LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
+    function: in the node pass's body numba joined its variables with those of the (since removed) gather
+    pass, and LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
     Writes each node's penetration (NaN: none) to wf's W_PEN row and status to cd; returns (nodes whose
     penetration exceeds pen0, nodes with a status other than OK)."""
     xd2 = xd + xd
