@@ -454,3 +454,51 @@ def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integ
     assert np.array_equal(acc_a.view(np.int64), acc_b.view(np.int64))
     assert np.array_equal(acc_a, acc_b)
     assert np.array_equal(xa[:, 3, 0], xc[:, 3, 0]) and np.array_equal(va[:, 1, 4], vc[:, 1, 4])
+
+
+@pytest.mark.parametrize("integrator", ["symplectic", "euler"])
+def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_general_node_block(integrator):
+    """The friction of the batched node pass runs over whole corner rows that hold a touching node; the
+    nodes of those rows that are off the ground (beyond the contact distance), and the padding columns of
+    the step kernel's layout (stride > n_faces), keep their velocities exactly: the same bits as
+    ``_nodes_general`` with the dorsal rows lifted and some ventral nodes off the plane, as on the snake."""
+    case = resolve_case("snake", "massspring", "flat", overrides=["creature.segments=9", f"body.integrator={integrator}"])
+    body = BodyMassSpring(case)
+    r = np.random.default_rng(5)
+    n_nodes = body.x.shape[0]
+    n_faces = n_nodes // 4
+    x = body.x.copy()
+    x[:, 1] = 0.0
+    x[2::4, 1] = x[3::4, 1] = 0.05  # dorsal rows: far above the contact distance
+    contact = body.fric[FK.CONTACT_DISTANCE]
+    x[0::4, 1] = r.uniform(-2e-5, 2.0 * contact, n_faces)  # ventral: some touch, some are off the ground
+    x[1::4, 1] = r.uniform(-2e-5, 2.0 * contact, n_faces)
+    v = r.normal(scale=0.05, size=x.shape)
+    v[0::4, 1] = v[1::4, 1] = -0.1  # moving into the plane: normal impulses and collisions
+    assert 2 < np.sum(x[:, 1] < contact) < n_nodes // 2 and np.any((x[:, 1] >= contact) & (x[:, 1] < 0.05))
+    stride = body.groups.stride
+    assert stride > n_faces
+    xc, vc = np.zeros((3, 5, stride)), np.zeros((3, 5, stride))
+    fc = np.zeros((3, 4, stride))
+    K._corner_major(x, xc)
+    K._corner_major(v, vc)
+    fc[:, :, :n_faces] = r.normal(scale=2.0, size=(3, 4, n_faces)) * body.mass[0]
+    spine = r.normal(size=(n_faces, 3))
+    spine /= np.linalg.norm(spine, axis=1)[:, None]
+    imc = np.zeros((4, stride))
+    imc[:, :n_faces] = body.inv_mass.reshape(-1, 4).T
+    xa, va, xb, vb = xc.copy(), vc.copy(), xc.copy(), vc.copy()
+    acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
+    work, touch = np.zeros((K.N_WORK, 4 * stride)), np.zeros(4 * stride, dtype=np.int64)
+    code = np.zeros((4, stride), dtype=np.int64)
+    got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, body.phys, acc_a,
+                                work, touch, code)
+    ref = K._nodes_general(xb, vb, fc, body.inv_mass, spine, False, np.zeros(n_faces - 1, dtype=np.bool_),
+                           body.fric_model, body.fric, body.terr_kind, body.terr, body.phys, acc_b)
+    assert got == ref and got[0] == np.sum(x[:, 1] < contact)
+    assert np.array_equal(xa.view(np.int64), xb.view(np.int64)) and np.array_equal(va.view(np.int64), vb.view(np.int64))
+    assert np.array_equal(acc_a.view(np.int64), acc_b.view(np.int64))
+    lifted = (x[:, 1] >= contact).reshape(-1, 4).T  # (4, n_faces): off the ground, no friction
+    dt, g = body.phys[K.DT], body.phys[K.GRAVITY]
+    free_fall = vc[1, :4, :n_faces] + dt * (fc[1, :, :n_faces] * imc[:, :n_faces] - g)
+    assert np.array_equal(va[1, :4, :n_faces][lifted], free_fall[lifted])

@@ -37,10 +37,13 @@ spring forces are summed differs (by family, not by spring index), so results ag
 references (and serve the energy and the legged chain).
 
 The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
-on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` runs it instead: the
-touching nodes' friction is gathered and computed in one vectorised loop
-(``coulomb_friction_batch``), bitwise the same results (the friction was 45 % of the snake's step
-called node by node); its element-wise passes run over the four corner rows as one flat row.
+on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` (``_node_rows`` in the step
+loop) runs it instead, bitwise the same results: every node's velocity, signed distance and normal
+impulse in one vectorised loop over the four corner rows taken as one flat row, then the friction
+(``coulomb_friction_batch``'s arithmetic) over whole corner rows that hold a touching node (a node
+without an impulse keeps its velocity exactly, so the touching nodes need no gather), then positions,
+collisions and checks (``_positions_flat``).  Called node by node the friction was 45 % of the snake's
+step; gathering the touching nodes cost about 21 ns per segment and 0.35 us per step on a short body.
 """
 from __future__ import annotations
 
@@ -345,23 +348,47 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
     negative to numba, whose wrap-around select turns the loads into gathers, and views per loop cost
     a reference count each (measured: about 0.15 us per group loop with views on a 6-segment snake).
     """
-    n_seg = act.shape[0]
-    n_faces = n_seg + 1
     stride = xc.shape[2]
-    face_scales(act, volume_conserving, face_scale)
-    for c in range(4):
-        for t in range(n_seg):
-            st[c * stride + t] = fibre_stretch(act, t, c)
-        for t in range(n_faces):
-            fs[c * stride + t] = face_scale[t]
-    xf = xc.reshape(xc.size)
-    vf = vc.reshape(vc.size)
-    gff = gf.reshape(gf.size)
-    gp = gpar.reshape(gpar.size)
-    dim = np.uint64(xc.shape[1] * stride)
+    act_buf = act.reshape((1, act.shape[0], act.shape[1]))
+    _group_forces_flat(act_buf, np.int64(0), volume_conserving, xc.reshape(xc.size), vc.reshape(vc.size),
+                       np.uint64(xc.shape[1] * stride), stride, grp, gpar.reshape(gpar.size), gpar.shape[2], plan,
+                       face_scale, st, fs, gf.reshape(gf.size), gf.shape[1], fc.reshape(fc.size))
+
+
+@njit(cache=True, error_model="numpy")
+def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp, gp, plen, plan, face_scale, st, fs,
+                       gff, glen, fcf):
+    """``group_spring_forces`` on flat arrays, made once per ``advance`` call (a view costs a reference
+    count): xf, vf the (3, 5, stride) positions and velocities taken flat (axis stride ``dim``, uint64); gp
+    the groups' params taken flat (row length plen); gff the groups' forces taken flat (row length glen);
+    fcf the (3, 4, stride) forces taken flat.  The step's muscle strains are row ``row`` of act_buf
+    (n_rows, n_seg, 3), read in place.  The fibre stretches and face scales (``fibre_stretch``,
+    ``face_scales``: the same operations) are computed in one loop over the faces."""
+    n_seg = act_buf.shape[1]
+    n_faces = n_seg + 1
+    for t in range(n_faces):
+        if volume_conserving:  # face_scales: Miller Sec. 4
+            tot = 0.0
+            cnt = 0
+            if t > 0:
+                tot += max(1.0 + act_buf[row, t - 1, 0], MIN_STRETCH)
+                cnt += 1
+            if t < n_seg:
+                tot += max(1.0 + act_buf[row, t, 0], MIN_STRETCH)
+                cnt += 1
+            scale = 1.0 / math.sqrt(tot / cnt)
+        else:
+            scale = 1.0
+        face_scale[t] = scale
+        for c in range(4):
+            fs[c * stride + t] = scale
+        if t < n_seg:  # fibre_stretch of the four corners' fibres of segment t
+            a0, a1, a2 = act_buf[row, t, 0], act_buf[row, t, 1], act_buf[row, t, 2]
+            st[t] = max(1.0 + a0 + a1 * -1.0 + a2 * -1.0, MIN_STRETCH)
+            st[stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * -1.0, MIN_STRETCH)
+            st[2 * stride + t] = max(1.0 + a0 + a1 * -1.0 + a2 * 1.0, MIN_STRETCH)
+            st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
     n_groups = grp.shape[0]
-    glen = gf.shape[1]
-    plen = gpar.shape[2]
     one = np.uint64(1)
     for g in range(n_groups):
         s = grp[g, GRP_SHIFT]
@@ -399,9 +426,9 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
         if s != 0:  # the springs past the last face: +0.0 read by its a end, -0.0 read by the next row's first b end
             for r in range(grp[g, GRP_LO], grp[g, GRP_HI]):
                 for e in range(3):
-                    gf[3 * g + e, 1 + r * stride + n_faces - 1] = 0.0
-                    gf[3 * g + e, 1 + r * stride + stride - 1] = -0.0
-    fcf = fc.reshape(fc.size)
+                    o = np.uint64((3 * g + e) * glen + 1 + r * stride)
+                    gff[o + np.uint64(n_faces - 1)] = 0.0
+                    gff[o + np.uint64(stride - 1)] = -0.0
     for c in range(4):
         b = 1 + c * stride
         for e in range(3):
@@ -432,9 +459,56 @@ def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_sc
                 fcf[out + u] = a + s8 * gff[r8 + u]
 
 
+
+
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
 W_VX, W_VY, W_VZ, W_PHI, W_PEN, B_VX, B_VY, B_VZ, B_SX, B_SY, B_SZ, B_JN = range(12)
 N_WORK = 12
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _coulomb_lane(mus_f, mus_b, mus_t, mu_f, mu_b, mu_t, nx, ny, nz, ax, ay, az, sx, sy, sz, j):
+    """One mass of ``coulomb_friction_batch``: velocity (ax, ay, az) [m/s] after friction, spine s, normal
+    impulse per unit mass j [m/s] (j <= 0: unchanged); the batch's arithmetic, operation by operation (inlined
+    into both of its loops, so they give the same bits)."""
+    vn = ax * nx + ay * ny + az * nz
+    tx, ty, tz = ax - vn * nx, ay - vn * ny, az - vn * nz
+    # tangent frame: f = spine projected on the tangent plane, q = n x f
+    sn = sx * nx + sy * ny + sz * nz
+    fx, fy, fz = sx - sn * nx, sy - sn * ny, sz - sn * nz
+    fl = math.sqrt(fx * fx + fy * fy + fz * fz)
+    small = fl < 1e-12  # spine along the normal: isotropic transverse friction
+    fx = 0.0 if small else fx / fl
+    fy = 0.0 if small else fy / fl
+    fz = 0.0 if small else fz / fl
+    qx, qy, qz = ny * fz - nz * fy, nz * fx - nx * fz, nx * fy - ny * fx
+    va = tx * fx + ty * fy + tz * fz
+    vq = tx * qx + ty * qy + tz * qz
+    vq = math.sqrt(tx * tx + ty * ty + tz * tz) if small else vq
+    va = 0.0 if small else va
+    speed = math.sqrt(va * va + vq * vq)
+    ua, uq = va / speed, vq / speed
+    fwd = va > 0.0
+    mus_a = mus_f if fwd else mus_b
+    mus = math.sqrt((mus_a * ua) ** 2 + (mus_t * uq) ** 2)
+    mu_a = mu_f if fwd else mu_b
+    da = mu_a * j * abs(ua)
+    dq = mu_t * j * abs(uq)
+    wa = 0.0 if abs(va) <= da else va - math.copysign(da, va)
+    wq = 0.0 if abs(vq) <= dq else vq - math.copysign(dq, vq)
+    stuck = speed <= mus * j  # static friction holds the mass
+    wa = 0.0 if stuck else wa
+    wq = 0.0 if stuck else wq
+    scale = wq / speed if speed > 0 else 0.0
+    rx = vn * nx + tx * scale if small else vn * nx + wa * fx + wq * qx
+    ry = vn * ny + ty * scale if small else vn * ny + wa * fy + wq * qy
+    rz = vn * nz + tz * scale if small else vn * nz + wa * fz + wq * qz
+    at_rest = speed <= 0.0
+    rx = vn * nx if at_rest else rx
+    ry = vn * ny if at_rest else ry
+    rz = vn * nz if at_rest else rz
+    loose = j <= 0.0  # not pressed into the surface: no friction
+    return (ax if loose else rx), (ay if loose else ry), (az if loose else rz)
 
 
 @njit(cache=True, error_model="numpy")
@@ -454,48 +528,8 @@ def coulomb_friction_batch(p, nx, ny, nz, vx, vy, vz, sx, sy, sz, jn, count):
     mus_f, mus_b, mus_t = p[MUS_F], p[MUS_B], p[MUS_T]
     mu_f, mu_b, mu_t = p[MU_F], p[MU_B], p[MU_T]
     for k in range(count):
-        ax, ay, az = vx[k], vy[k], vz[k]
-        j = jn[k]
-        vn = ax * nx + ay * ny + az * nz
-        tx, ty, tz = ax - vn * nx, ay - vn * ny, az - vn * nz
-        # tangent frame: f = spine projected on the tangent plane, q = n x f
-        sn = sx[k] * nx + sy[k] * ny + sz[k] * nz
-        fx, fy, fz = sx[k] - sn * nx, sy[k] - sn * ny, sz[k] - sn * nz
-        fl = math.sqrt(fx * fx + fy * fy + fz * fz)
-        small = fl < 1e-12  # spine along the normal: isotropic transverse friction
-        fx = 0.0 if small else fx / fl
-        fy = 0.0 if small else fy / fl
-        fz = 0.0 if small else fz / fl
-        qx, qy, qz = ny * fz - nz * fy, nz * fx - nx * fz, nx * fy - ny * fx
-        va = tx * fx + ty * fy + tz * fz
-        vq = tx * qx + ty * qy + tz * qz
-        vq = math.sqrt(tx * tx + ty * ty + tz * tz) if small else vq
-        va = 0.0 if small else va
-        speed = math.sqrt(va * va + vq * vq)
-        ua, uq = va / speed, vq / speed
-        fwd = va > 0.0
-        mus_a = mus_f if fwd else mus_b
-        mus = math.sqrt((mus_a * ua) ** 2 + (mus_t * uq) ** 2)
-        mu_a = mu_f if fwd else mu_b
-        da = mu_a * j * abs(ua)
-        dq = mu_t * j * abs(uq)
-        wa = 0.0 if abs(va) <= da else va - math.copysign(da, va)
-        wq = 0.0 if abs(vq) <= dq else vq - math.copysign(dq, vq)
-        stuck = speed <= mus * j  # static friction holds the mass
-        wa = 0.0 if stuck else wa
-        wq = 0.0 if stuck else wq
-        scale = wq / speed if speed > 0 else 0.0
-        rx = vn * nx + tx * scale if small else vn * nx + wa * fx + wq * qx
-        ry = vn * ny + ty * scale if small else vn * ny + wa * fy + wq * qy
-        rz = vn * nz + tz * scale if small else vn * nz + wa * fz + wq * qz
-        at_rest = speed <= 0.0
-        rx = vn * nx if at_rest else rx
-        ry = vn * ny if at_rest else ry
-        rz = vn * nz if at_rest else rz
-        loose = j <= 0.0  # not pressed into the surface: no friction
-        vx[k] = ax if loose else rx
-        vy[k] = ay if loose else ry
-        vz[k] = az if loose else rz
+        vx[k], vy[k], vz[k] = _coulomb_lane(mus_f, mus_b, mus_t, mu_f, mu_b, mu_t, nx, ny, nz, vx[k], vy[k], vz[k],
+                                            sx[k], sy[k], sz[k], jn[k])
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -575,11 +609,11 @@ def _flat_phi(plane, h, ms, cs, x, y):
 @njit(cache=True, error_model="numpy")
 def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, dt, euler, plane, h, ms, cs, nx, ny, nz, r_n, r_t,
                     max_pen, max_speed2):
-    """Pass (4) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
+    """Pass (3) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
     n_flat nodes of the flat corner-major arrays xf, vf (axis stride xd), velocities and signed distances
     from the work array wf (row length wl), written as selects so that the loop vectorises (its own
-    function: in the node pass's body numba joined its variables with those of the gather pass, and
-    LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
+    function: in the node pass's body numba joined its variables with those of the (since removed) gather
+    pass, and LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
     Writes each node's penetration (NaN: none) to wf's W_PEN row and status to cd; returns (nodes whose
     penetration exceeds pen0, nodes with a status other than OK)."""
     xd2 = xd + xd
@@ -641,25 +675,33 @@ def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, dt, euler, plane, 
 
 
 @njit(cache=True, error_model="numpy")
-def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
-    """One step of every free node under COULOMB friction on a plane or slope without obstacles.
+def spine_rows(xc, n_faces, wf, osx, wl):
+    """``spine_vectors_c`` written to three rows of the flat work array wf: the unit spine vector of face f
+    at wf[osx + f], wf[osx + wl + f], wf[osx + 2 wl + f] (uint64 osx, wl: rows B_SX, B_SY, B_SZ of
+    ``_node_rows``' work array); the same sums in the same order, so the same bits.  xc (3, >= 4, >= n_faces)."""
+    osy = osx + wl
+    osz = osy + wl
+    for j in range(n_faces):
+        a = j - 1 if j > 0 else 0
+        b = j + 1 if j < n_faces - 1 else n_faces - 1
+        sx = sy = sz = 0.0
+        for c in range(4):
+            sx += xc[0, c, a] - xc[0, c, b]
+            sy += xc[1, c, a] - xc[1, c, b]
+            sz += xc[2, c, a] - xc[2, c, b]
+        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+        u = np.uint64(j)
+        if nrm > 0.0:
+            wf[osx + u], wf[osy + u], wf[osz + u] = sx / nrm, sy / nrm, sz / nrm
+        else:
+            wf[osx + u], wf[osy + u], wf[osz + u] = 1.0, 0.0, 0.0
 
-    ``_nodes_general``'s arithmetic, operation by operation, in four passes that vectorise along
-    the corner-major rows: (1) each node's velocity after forces and signed distance; (2) the
-    touching nodes' friction inputs gathered into ``work``'s B_ rows and (3) their friction
-    (``coulomb_friction_batch``; the surface normal is the same for every node here); (4) position
-    update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
-    fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects.
-    Passes (1) and (4) are element-wise, so each is one loop over the four corner rows taken as one
-    flat row (rows of a short body's few faces are too short to vectorise one by one).
-    The step's status is that of the last node in node order with a problem, as in the node loop.
-    xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
-    imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
-    work (N_WORK, 4 stride); touch (4 stride,) int64 and code (4, stride) int64 scratch.
-    Returns (nodes within the contact distance, status).
-    """
-    n_faces = spine.shape[0]
-    stride = xc.shape[2]
+
+@njit(cache=True, error_model="numpy")
+def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_kind, terr, phys, acc):
+    """``_nodes_coulomb_flat`` on flat arrays: xf, vf (axis stride xd), ff (axis stride fd), im (4 stride,),
+    wf the work array taken flat (row length wl; the spine vectors of the faces already in rows B_SX, B_SY,
+    B_SZ), cd (4 stride,) int64.  Returns (nodes within the contact distance, status)."""
     n_flat = 4 * stride
     g = phys[GRAVITY]
     dt = phys[DT]
@@ -674,64 +716,93 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     h = terr[0]
     ms = -math.sin(terr[1])
     cs = math.cos(terr[1])
-    # flat views indexed with uint64 offsets: one view per array (a view costs a reference count)
-    xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
-    im, wf, cd = imc.reshape(imc.size), work.reshape(work.size), code.reshape(code.size)
-    xd = np.uint64(xc.shape[1] * stride)  # axis stride of xc, vc (rows 0..3 of a (3, 5, stride) array)
-    fd = np.uint64(fc.shape[1] * stride)
-    wl = np.uint64(work.shape[1])
     xd2, fd2 = xd + xd, fd + fd
     ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl
-    # (1) velocities after forces and signed distances (a held node's are computed and never used)
+    ojn, open_ = np.uint64(B_JN) * wl, np.uint64(W_PEN) * wl
+    # (1) velocities after forces, signed distances, and the touching free nodes' normal impulse
+    # (contact_kernels.contact_friction; 0 for the others, which friction then leaves unchanged)
+    count = 0
+    lo = n_flat
+    hi = -1
     for t in range(n_flat):
         n = np.uint64(t)
         imn = im[n]
-        wf[ovx + n] = vf[n] + dt * ff[n] * imn
-        wf[ovy + n] = vf[xd + n] + dt * (ff[fd + n] * imn - g)
-        wf[ovz + n] = vf[xd2 + n] + dt * ff[fd2 + n] * imn
-        wf[ophi + n] = _flat_phi(plane, h, ms, cs, xf[n], xf[xd + n])
-    wvx, wvy, wvz = work[W_VX].reshape((4, stride)), work[W_VY].reshape((4, stride)), work[W_VZ].reshape((4, stride))
-    wphi, wpen = work[W_PHI].reshape((4, stride)), work[W_PEN].reshape((4, stride))
-    bvx, bvy, bvz, bjn = work[B_VX], work[B_VY], work[B_VZ], work[B_JN]
-    bsx, bsy, bsz = work[B_SX], work[B_SY], work[B_SZ]
-    # (2) the touching free nodes' normal impulse (contact_kernels.contact_friction) and friction inputs
-    count = np.int64(0)  # not the literal 0: a Literal[int] argument compiles a second signature of coulomb_friction_batch
-    for c in range(4):
-        for f in range(n_faces):
-            cphi = wphi[c, f]
-            if cphi < contact_dist and imc[c, f] != 0.0:
-                cvx, cvy, cvz = wvx[c, f], wvy[c, f], wvz[c, f]
-                if euler:
-                    cdx, cdy, cdz = 0.5 * dt * (vc[0, c, f] + cvx), 0.5 * dt * (vc[1, c, f] + cvy), 0.5 * dt * (vc[2, c, f] + cvz)
-                else:
-                    cdx, cdy, cdz = dt * cvx, dt * cvy, dt * cvz
-                cvn = cvx * nx + cvy * ny + cvz * nz
-                reaches = cphi + cdx * nx + cdy * ny + cdz * nz < 0.0
-                bjn[count] = -(1.0 + r_n) * cvn if (cvn < 0.0 and reaches) else 0.0
-                bvx[count], bvy[count], bvz[count] = cvx, cvy, cvz
-                bsx[count], bsy[count], bsz[count] = spine[f, 0], spine[f, 1], spine[f, 2]
-                touch[count] = c * stride + f
-                count += 1
-    # (3) friction, vectorised, and back to the nodes
-    coulomb_friction_batch(fric, nx, ny, nz, bvx, bvy, bvz, bsx, bsy, bsz, bjn, count)
-    for k in range(count):
-        i = np.uint64(touch[k])
-        wf[ovx + i], wf[ovy + i], wf[ovz + i] = bvx[k], bvy[k], bvz[k]
-    # (4) positions, collisions, checks
+        ox, oy, oz = vf[n], vf[xd + n], vf[xd2 + n]
+        cvx = ox + dt * ff[n] * imn
+        cvy = oy + dt * (ff[fd + n] * imn - g)
+        cvz = oz + dt * ff[fd2 + n] * imn
+        cphi = _flat_phi(plane, h, ms, cs, xf[n], xf[xd + n])
+        wf[ovx + n], wf[ovy + n], wf[ovz + n], wf[ophi + n] = cvx, cvy, cvz, cphi
+        cdx = 0.5 * dt * (ox + cvx) if euler else dt * cvx
+        cdy = 0.5 * dt * (oy + cvy) if euler else dt * cvy
+        cdz = 0.5 * dt * (oz + cvz) if euler else dt * cvz
+        cvn = cvx * nx + cvy * ny + cvz * nz
+        reaches = cphi + cdx * nx + cdy * ny + cdz * nz < 0.0
+        touching = (cphi < contact_dist) & (imn != 0.0)  # & rather than and: no short-circuit branch
+        wf[ojn + n] = -(1.0 + r_n) * cvn if (touching & (cvn < 0.0) & reaches) else 0.0
+        count += 1 if touching else 0
+        lo = min(lo, t if touching else n_flat)
+        hi = max(hi, t if touching else -1)
+    # (2) friction of the corner rows that hold a touching node, every column (coulomb_friction_batch's lanes)
+    if count > 0:
+        mus_f, mus_b, mus_t = fric[MUS_F], fric[MUS_B], fric[MUS_T]
+        mu_f, mu_b, mu_t = fric[MU_F], fric[MU_B], fric[MU_T]
+        osx, osy, osz = np.uint64(B_SX) * wl, np.uint64(B_SY) * wl, np.uint64(B_SZ) * wl
+        for c in range(lo // stride, hi // stride + 1):
+            base = np.uint64(c * stride)
+            for f in range(stride):
+                u = np.uint64(f)
+                n = base + u
+                wf[ovx + n], wf[ovy + n], wf[ovz + n] = _coulomb_lane(
+                    mus_f, mus_b, mus_t, mu_f, mu_b, mu_t, nx, ny, nz, wf[ovx + n], wf[ovy + n], wf[ovz + n],
+                    wf[osx + u], wf[osy + u], wf[osz + u], wf[ojn + n])
+    # (3) positions, collisions, checks
     n_pen, n_bad = _positions_flat(xf, vf, wf, im, cd, acc[ACC_MAX_PEN], n_flat, xd, wl, dt, euler, plane, h, ms, cs,
                                    nx, ny, nz, r_n, r_t, max_pen, max_speed2)
     if n_pen > 0:  # a collision left a penetration above the maximum so far: raise it in node order
         for f in range(n_faces):
             for c in range(4):
-                if wpen[c, f] > acc[ACC_MAX_PEN]:
-                    acc[ACC_MAX_PEN] = wpen[c, f]
+                pen = wf[open_ + np.uint64(c * stride + f)]
+                if pen > acc[ACC_MAX_PEN]:
+                    acc[ACC_MAX_PEN] = pen
     status = OK
     if n_bad > 0:  # the node loop's status: the last node (node order 4 f + c) that set one
         for f in range(n_faces):
             for c in range(4):
-                if code[c, f] != OK:
-                    status = code[c, f]
+                if cd[c * stride + f] != OK:
+                    status = cd[c * stride + f]
     return count, status
+
+
+@njit(cache=True, error_model="numpy")
+def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
+    """One step of every free node under COULOMB friction on a plane or slope without obstacles.
+
+    ``_nodes_general``'s arithmetic, operation by operation, in three passes that vectorise along
+    the corner-major rows: (1) each node's velocity after forces, signed distance and, for the nodes
+    within the contact distance, the normal impulse of ``contact_kernels.contact_friction`` (0 for the
+    others); (2) the friction (``coulomb_friction_batch``'s lanes; the surface normal is the same for
+    every node here) of every node of the corner rows that hold a touching node: a lane without an
+    impulse keeps its velocity exactly, so no gather of the touching nodes is needed; (3) position
+    update, Miller's collision (``contact_kernels.collide_path`` with the plane's exact crossing
+    fraction of ``path_surface_fraction``) and the blow-up checks, branches written as selects
+    (``_positions_flat``).  Passes (1) and (3) are one loop over the four corner rows taken as one
+    flat row (rows of a short body's few faces are too short to vectorise one by one).
+    The step's status is that of the last node in node order with a problem, as in the node loop.
+    xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
+    imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
+    work (N_WORK, >= 4 stride); touch: unused (kept for the callers); code (4, stride) int64 scratch.
+    Returns (nodes within the contact distance, status).
+    """
+    n_faces = spine.shape[0]
+    stride = xc.shape[2]
+    wl = work.shape[1]
+    for f in range(n_faces):
+        work[B_SX, f], work[B_SY, f], work[B_SZ, f] = spine[f, 0], spine[f, 1], spine[f, 2]
+    return _node_rows(xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size), imc.reshape(imc.size),
+                      work.reshape(work.size), code.reshape(code.size), n_faces, stride,
+                      np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl),
+                      fric, terr_kind, terr, phys, acc)
 
 
 @njit(cache=True, error_model="numpy")
@@ -768,16 +839,23 @@ def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
     # Anisotropic Coulomb friction on a plane or slope without obstacles (the snake's scene): the
     # node block runs batched (``_nodes_coulomb_flat``), bitwise the same as ``_nodes_general``.
     batched = fric_model == COULOMB and (terr_kind == PLANE or terr_kind == SLOPE) and terr[H_NOBST] <= 0.0
-    work = np.empty((N_WORK, 4 * stride if batched else 0))
-    touch = np.empty(4 * stride if batched else 0, dtype=np.int64)
-    code = np.empty((4, stride if batched else 0), dtype=np.int64)
-    imc = np.zeros((4, stride))  # the padding columns are held nodes
+    wl = 4 * stride if batched else 0
+    work = np.zeros(N_WORK * wl)  # ``_node_rows``' work rows, flat
+    code = np.zeros(wl, dtype=np.int64)
+    imc = np.zeros(4 * stride)  # corner-major; the padding columns are held nodes
     for f in range(n_faces):
         for c in range(4):
-            imc[c, f] = inv_mass[4 * f + c]
+            imc[c * stride + f] = inv_mass[4 * f + c]
+    # flat views for the spring groups and the batched node pass, made once per call (a view costs a reference count)
+    xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
+    xd, fd, wlu = np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl)
+    osx = np.uint64(B_SX) * wlu
+    gp, plen, gff, glen = gpar.reshape(gpar.size), gpar.shape[2], gf.reshape(gf.size), gf.shape[1]
     for step in range(n_steps):
-        group_spring_forces(act_buf[min(step, n_rows - 1)], volume, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc)
-        spine_vectors_c(xc, spine)
+        _group_forces_flat(act_buf, min(step, n_rows - 1), volume, xf, vf, xd, stride, grp, gp, plen, plan, face_scale,
+                           st, fs, gff, glen, ff)
+        if not batched:
+            spine_vectors_c(xc, spine)
         if stick:
             # Miller's caterpillar rule (Sec. 4, Image 4) holds the *segments* in contact with the
             # surface: segment i is in contact when the centre of one of its four side faces is
@@ -797,8 +875,9 @@ def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
                     if signed_distance(terr_kind, terr, mx, my, mz) < contact_dist:
                         seg_held[i] = True
         if batched:
-            n_contact, status = _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc,
-                                                    work, touch, code)
+            spine_rows(xc, n_faces, work, osx, wlu)
+            n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, terr_kind,
+                                           terr, phys, acc)
         else:
             n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
                                                terr_kind, terr, phys, acc)
