@@ -106,20 +106,35 @@ def place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pr
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _place_node(a, i, p, att_local, c, vr, w, Rb, x, v, x_pred, residual):
-    """Attached node a (node id p) onto box i: ``place_attached_nodes`` for one node."""
+def place_on_box(a, i, p, att_local, c, vr, w, Rb, x, v):
+    """Attached node a (node id p) onto box i; returns its new position (px, py, pz) [m].
+
+    OVERWRITES x[p] with c_i + R_i local_a and v[p] with v_c + w x r (r = R_i local_a), for
+    att_local (n_fixed, 3) [m], c (n_rigid, 3) [m], vr (n_rigid, 3) [m/s], w (n_rigid, 3) [rad/s]
+    and Rb (n_rigid, 3, 3) the boxes' rotation matrices.  The placement arithmetic shared by
+    ``place_attached_nodes`` (with the coupling residual, ``_place_node``) and the fused legged
+    support (``fused.legged_walk._place_attached``, without it); inlined, so both compile the
+    same operations in the same order.
+    """
     lx, ly, lz = att_local[a, 0], att_local[a, 1], att_local[a, 2]
     rx = Rb[i, 0, 0] * lx + Rb[i, 0, 1] * ly + Rb[i, 0, 2] * lz
     ry = Rb[i, 1, 0] * lx + Rb[i, 1, 1] * ly + Rb[i, 1, 2] * lz
     rz = Rb[i, 2, 0] * lx + Rb[i, 2, 1] * ly + Rb[i, 2, 2] * lz
     px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-    dx, dy, dz = px - x_pred[a, 0], py - x_pred[a, 1], pz - x_pred[a, 2]
-    residual[a] = math.sqrt(dx * dx + dy * dy + dz * dz)
     x[p, 0], x[p, 1], x[p, 2] = px, py, pz
     # v_c + w x r (Baraff 1997 I, Sec. 2.5)
     v[p, 0] = vr[i, 0] + w[i, 1] * rz - w[i, 2] * ry
     v[p, 1] = vr[i, 1] + w[i, 2] * rx - w[i, 0] * rz
     v[p, 2] = vr[i, 2] + w[i, 0] * ry - w[i, 1] * rx
+    return px, py, pz
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _place_node(a, i, p, att_local, c, vr, w, Rb, x, v, x_pred, residual):
+    """Attached node a (node id p) onto box i: ``place_attached_nodes`` for one node."""
+    px, py, pz = place_on_box(a, i, p, att_local, c, vr, w, Rb, x, v)
+    dx, dy, dz = px - x_pred[a, 0], py - x_pred[a, 1], pz - x_pred[a, 2]
+    residual[a] = math.sqrt(dx * dx + dy * dy + dz * dz)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
