@@ -59,7 +59,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain_kernels import flat_ground, signed_distance
 from .. import rigid_kernels as rk
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
@@ -246,7 +246,9 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
     acc[ACC_RES_COUNT] += n_fixed
 
     # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
-    # corner depth (after the position projection) and contact count.
+    # corner depth (after the position projection) and contact count; on the plane without obstacles
+    # a corner's distance is y - ground (``flat_ground``)
+    flat, ground = flat_ground(terr_kind, terr)
     deepest = acc[ACC_MAX_PEN]
     for i in range(n_rigid):
         hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
@@ -266,7 +268,7 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
             px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
             py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
             pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
-            phi = signed_distance(terr_kind, terr, px, py, pz)
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1
             if -phi > deepest:
@@ -345,6 +347,9 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_pt
     muscles_on = phys[MUSCLES_ON] != 0.0
     act_buf = muscle[7]
     n_rows = act_buf.shape[0]
+    # on the plane without obstacles the free nodes' distances are y - ground (``flat_ground``: what
+    # ``signed_distance`` computes there, without its reference-count updates per call)
+    flat, ground = flat_ground(terr_kind, terr)
     for step in range(n_steps):
         status = OK
         if muscles_on:
@@ -411,9 +416,11 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_pt
             u = np.uint64(i)
             px, py, pz = x[u, 0], x[u, 1], x[u, 2]
             vx, vy, vz = v[u, 0], v[u, 1], v[u, 2]
-            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
+            if phi >= contact_dist:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi >= 0.0:
                     x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz
                     if not math.isfinite(qx + qy + qz + vx + vy + vz):
                         status = NONFINITE
