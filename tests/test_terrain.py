@@ -535,6 +535,22 @@ def test_plane_slope_slab_unchanged_and_short_vectors_still_work():
     assert k == TK.SLAB and len(f) == TK.N_TERRAIN_PARAMS and f[TK.H_NOBST] == 0
 
 
+def test_flat_ground_is_the_plane_without_obstacles_and_its_height_gives_signed_distance_bit_for_bit(obst, hf):
+    # flat_ground lets a hot loop compute a point's distance itself (y - h) where the terrain is the plane
+    # without obstacles: there it must be signed_distance's value to the last bit; every other terrain
+    # (slope, slab, height field, the plane with obstacles) must say not flat, so the loop asks signed_distance.
+    rng = np.random.default_rng(13)
+    p = rng.uniform(-2, 2, size=(500, 3))
+    for height in (0.0, 0.37, -1.25):
+        f = TK.header(height)
+        flat, h = TK.flat_ground(TK.PLANE, f)
+        assert flat and h == height
+        assert np.array_equal(p[:, 1] - h, phis(TK.PLANE, f, p))
+    for kind, f in ((TK.SLOPE, np.array([0.0, 0.5] + [0.0] * 6)), (TK.SLAB, np.array([0.0, 0.3, 0.2, 0.05, 0, 0, 0, 0])),
+                    (TK.HEIGHTFIELD, hf), (TK.PLANE, obst)):
+        assert not TK.flat_ground(kind, f)[0], kind
+
+
 def test_rigid_box_rests_on_a_cylinder_obstacle_through_the_full_parameter_vector():
     """RigidBoxes.advance takes a full vector (header + obstacle block), not just an 8-value header."""
     from bench_myriapoda.bodies.rigid import ContactSettings, RigidBoxes

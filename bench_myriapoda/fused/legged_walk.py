@@ -11,8 +11,8 @@ with the same kernels in the same order on the same arrays:
 2. the controller's step (``controllers.myriapod.compiled.controller_step``);
 3. the support (the bodies' ``set_support``): kinematic = supported | held, the supported
    boxes driven to their targets (``kinematic_targets.drive_to_targets``, paper Sec. 4.1),
-   the attached link nodes put back on the boxes (``_place_attached``: the arithmetic of
-   ``hybrid.kernels.place_attached_nodes`` without the coupling residual, which the body's
+   the attached link nodes put back on the boxes (``_place_attached``: ``hybrid.kernels.place_on_box``,
+   the arithmetic of ``hybrid.kernels.place_attached_nodes`` without the coupling residual, which the body's
    step overwrites before reading it);
 4. a timeline sample every ``record_every`` steps: the controller's record (states, tips,
    brain mode, antenna contact, segment centres before the support) and the monitor's
@@ -95,17 +95,7 @@ def _place_attached(fixed, att_body, att_local, c, q, vr, w, Rb, x, v):
     fused support skips it and the copy of the positions it is measured from."""
     rk.quat_to_matrix(q, Rb)
     for a in range(fixed.shape[0]):
-        i = att_body[a]
-        p = fixed[a]
-        lx, ly, lz = att_local[a, 0], att_local[a, 1], att_local[a, 2]
-        rx = Rb[i, 0, 0] * lx + Rb[i, 0, 1] * ly + Rb[i, 0, 2] * lz
-        ry = Rb[i, 1, 0] * lx + Rb[i, 1, 1] * ly + Rb[i, 1, 2] * lz
-        rz = Rb[i, 2, 0] * lx + Rb[i, 2, 1] * ly + Rb[i, 2, 2] * lz
-        x[p, 0], x[p, 1], x[p, 2] = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-        # v_c + w x r (Baraff 1997 I, Sec. 2.5)
-        v[p, 0] = vr[i, 0] + w[i, 1] * rz - w[i, 2] * ry
-        v[p, 1] = vr[i, 1] + w[i, 2] * rx - w[i, 0] * rz
-        v[p, 2] = vr[i, 2] + w[i, 0] * ry - w[i, 1] * rx
+        K.place_on_box(a, att_body[a], fixed[a], att_local, c, vr, w, Rb, x, v)
 
 
 # _control and _control_and_support are inlined into the chunks (numba IR inlining): as kernels of their own, numba

@@ -906,6 +906,20 @@ def signed_distance(kind, f, x, y, z):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def flat_ground(kind, f):
+    """(flat, h): flat = the terrain is the plane without obstacles, where ``signed_distance`` is
+    exactly y - h, h = f[0] [m] (the same operation).
+
+    For a hot loop of point queries: it computes y - h itself where flat and calls ``signed_distance``
+    only otherwise.  Why: ``signed_distance`` is inlined, and each inlined call takes and drops a
+    reference to f (two atomic reference-count updates) that numba's reference-count pruning leaves
+    in place because the function's branches hold calls; in a loop over hundreds of points per step
+    those updates cost more than the query.
+    """
+    return (kind == PLANE) and not (f[H_NOBST] > 0.0), f[0]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def surface_normal(kind, f, x, y, z):
     """Unit outward normal (nx, ny, nz) of the terrain surface nearest to p."""
     if f[H_NOBST] > 0.0:

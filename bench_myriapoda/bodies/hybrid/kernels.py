@@ -59,7 +59,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain_kernels import flat_ground, signed_distance
 from .. import rigid_kernels as rk
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
@@ -106,20 +106,35 @@ def place_attached_nodes(fixed, att_body, att_local, c, q, vr, w, Rb, x, v, x_pr
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _place_node(a, i, p, att_local, c, vr, w, Rb, x, v, x_pred, residual):
-    """Attached node a (node id p) onto box i: ``place_attached_nodes`` for one node."""
+def place_on_box(a, i, p, att_local, c, vr, w, Rb, x, v):
+    """Attached node a (node id p) onto box i; returns its new position (px, py, pz) [m].
+
+    OVERWRITES x[p] with c_i + R_i local_a and v[p] with v_c + w x r (r = R_i local_a), for
+    att_local (n_fixed, 3) [m], c (n_rigid, 3) [m], vr (n_rigid, 3) [m/s], w (n_rigid, 3) [rad/s]
+    and Rb (n_rigid, 3, 3) the boxes' rotation matrices.  The placement arithmetic shared by
+    ``place_attached_nodes`` (with the coupling residual, ``_place_node``) and the fused legged
+    support (``fused.legged_walk._place_attached``, without it); inlined, so both compile the
+    same operations in the same order.
+    """
     lx, ly, lz = att_local[a, 0], att_local[a, 1], att_local[a, 2]
     rx = Rb[i, 0, 0] * lx + Rb[i, 0, 1] * ly + Rb[i, 0, 2] * lz
     ry = Rb[i, 1, 0] * lx + Rb[i, 1, 1] * ly + Rb[i, 1, 2] * lz
     rz = Rb[i, 2, 0] * lx + Rb[i, 2, 1] * ly + Rb[i, 2, 2] * lz
     px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-    dx, dy, dz = px - x_pred[a, 0], py - x_pred[a, 1], pz - x_pred[a, 2]
-    residual[a] = math.sqrt(dx * dx + dy * dy + dz * dz)
     x[p, 0], x[p, 1], x[p, 2] = px, py, pz
     # v_c + w x r (Baraff 1997 I, Sec. 2.5)
     v[p, 0] = vr[i, 0] + w[i, 1] * rz - w[i, 2] * ry
     v[p, 1] = vr[i, 1] + w[i, 2] * rx - w[i, 0] * rz
     v[p, 2] = vr[i, 2] + w[i, 0] * ry - w[i, 1] * rx
+    return px, py, pz
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _place_node(a, i, p, att_local, c, vr, w, Rb, x, v, x_pred, residual):
+    """Attached node a (node id p) onto box i: ``place_attached_nodes`` for one node."""
+    px, py, pz = place_on_box(a, i, p, att_local, c, vr, w, Rb, x, v)
+    dx, dy, dz = px - x_pred[a, 0], py - x_pred[a, 1], pz - x_pred[a, 2]
+    residual[a] = math.sqrt(dx * dx + dy * dy + dz * dz)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -231,7 +246,9 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
     acc[ACC_RES_COUNT] += n_fixed
 
     # Rigid checks: finite state, speed bound |v| + |w| r of any box point,
-    # corner depth (after the position projection) and contact count.
+    # corner depth (after the position projection) and contact count; on the plane without obstacles
+    # a corner's distance is y - ground (``flat_ground``)
+    flat, ground = flat_ground(terr_kind, terr)
     deepest = acc[ACC_MAX_PEN]
     for i in range(n_rigid):
         hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
@@ -251,7 +268,7 @@ def rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, 
             px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
             py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
             pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
-            phi = signed_distance(terr_kind, terr, px, py, pz)
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1
             if -phi > deepest:
@@ -330,6 +347,9 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_pt
     muscles_on = phys[MUSCLES_ON] != 0.0
     act_buf = muscle[7]
     n_rows = act_buf.shape[0]
+    # on the plane without obstacles the free nodes' distances are y - ground (``flat_ground``: what
+    # ``signed_distance`` computes there, without its reference-count updates per call)
+    flat, ground = flat_ground(terr_kind, terr)
     for step in range(n_steps):
         status = OK
         if muscles_on:
@@ -396,9 +416,11 @@ def advance(x, v, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_pt
             u = np.uint64(i)
             px, py, pz = x[u, 0], x[u, 1], x[u, 2]
             vx, vy, vz = v[u, 0], v[u, 1], v[u, 2]
-            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
+            if phi >= contact_dist:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi >= 0.0:
                     x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz
                     if not math.isfinite(qx + qy + qz + vx + vy + vz):
                         status = NONFINITE

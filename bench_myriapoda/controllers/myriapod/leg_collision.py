@@ -39,7 +39,7 @@ from numba import njit
 from bench_myriapoda.kinematics.legs import ALPHA, BETA, FEMUR, GAMMA, ROOT_X, ROOT_Y, ROOT_Z, THETA, TIBIA, \
     leg_plane_points, side_sign
 from bench_myriapoda.kinematics.rotations import matvec as _matvec
-from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import flat_ground, signed_distance, surface_normal
 
 from .switcher import STANCE
 
@@ -165,11 +165,14 @@ def knees_inside_and_penetration(states, knees, tips, kind, f, check_knees, ik_f
     overwritten: the tips' signed distances, for a caller that tests the same tips again before they move
     (the next controller step's ``legs.tips_touching``)."""
     deepest = 0.0
+    # on the plane without obstacles phi = y - ground (``flat_ground``: the same doubles as
+    # ``signed_distance``, without its two atomic reference-count updates per call)
+    flat, ground = flat_ground(kind, f)
     for k in range(tips.shape[0]):
-        pk = signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2])
+        pk = knees[k, 1] - ground if flat else signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2])
         if check_knees and states[k] == STANCE and pk < 0.0:
             ik_failed[k] = True
-        pt = signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
+        pt = tips[k, 1] - ground if flat else signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
         tip_phi[k] = pt
         deepest = max(deepest, -pk, -pt)
     return deepest
