@@ -22,7 +22,7 @@ import math
 
 from numba import njit
 
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain_kernels import flat_ground, signed_distance
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, NONFINITE, OK, RUNAWAY_SPEED
@@ -122,6 +122,9 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     contact_dist = fric[CONTACT_DISTANCE]
     n_free = perm.shape[0]
     n_rows = act_buf.shape[0]
+    # on the plane without obstacles the free nodes' distances are y - ground (``flat_ground``: what
+    # ``signed_distance`` computes there, without its reference-count updates per call)
+    flat, ground = flat_ground(terr_kind, terr)
     for step in range(n_steps):
         if muscles:
             row = act_buf[min(step, n_rows - 1)]
@@ -146,9 +149,11 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
             # `fem-worm` and -9 % on `fem-centipede` (regress, 4 alternating rounds, 2026-11-24)
             px, py, pz = x[i, 0], x[i, 1], x[i, 2]
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
+            if phi >= contact_dist:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi >= 0.0:
                     x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
                     if not math.isfinite(qx + qy + qz + vx + vy + vz):
                         status = NONFINITE

@@ -96,7 +96,7 @@ import math
 import numpy as np
 from numba import njit
 
-from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import flat_ground, signed_distance, surface_normal
 
 # Tets per block of the structure-of-arrays layout (a multiple of the SIMD width).
 LANES = 16
@@ -1446,9 +1446,12 @@ def ground_contact_coulomb(x, v, nodes, terrain_kind, terrain_params, mu_frictio
     x, v: (n_nodes, 3) [m], [m/s], OVERWRITTEN in place for contacting nodes.
     Separate from the step so a body can substitute its own friction model.
     """
+    # on the plane without obstacles phi is y - ground (``flat_ground``: what ``signed_distance``
+    # computes there, without its reference-count updates per call)
+    flat, ground = flat_ground(terrain_kind, terrain_params)
     for a in range(nodes.shape[0]):
         i = nodes[a]
-        phi = signed_distance(terrain_kind, terrain_params, x[i, 0], x[i, 1], x[i, 2])
+        phi = x[i, 1] - ground if flat else signed_distance(terrain_kind, terrain_params, x[i, 0], x[i, 1], x[i, 2])
         if phi < 0.0:
             nx, ny, nz = surface_normal(terrain_kind, terrain_params, x[i, 0], x[i, 1], x[i, 2])
             x[i, 0] -= phi * nx

@@ -50,7 +50,7 @@ import numpy as np
 from numba import njit
 
 from ...world.terrain import terrain_from_scenario
-from ...world.terrain_kernels import signed_distance
+from ...world.terrain_kernels import flat_ground, signed_distance
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params
@@ -166,6 +166,9 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
     kp = phys[K_SUPPORT]
     contact_dist = fric[CONTACT_DISTANCE]
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
+    # on the plane without obstacles the free nodes' distances are y - ground (``flat_ground``: what
+    # ``signed_distance`` computes there, without its reference-count updates per call)
+    flat, ground = flat_ground(terr_kind, terr)
     for step in range(n_steps):
         status = S.OK
         f_work[:, :] = 0.0
@@ -207,9 +210,11 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
             # `fem-centipede` and -4 % on `fem-worm` (regress, 4 alternating rounds, 2026-11-24).
             px, py, pz = x[i, 0], x[i, 1], x[i, 2]
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            if signed_distance(terr_kind, terr, px, py, pz) >= contact_dist:
+            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
+            if phi >= contact_dist:
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                if signed_distance(terr_kind, terr, qx, qy, qz) >= 0.0:
+                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
+                if phi >= 0.0:
                     x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
                     if not math.isfinite(qx + qy + qz + vx + vy + vz):
                         status = S.NONFINITE
