@@ -180,24 +180,30 @@ def spine_vectors(x, n_faces, out):
             out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _face_spine_c(xc, j, n_faces):
+    """The unit spine vector (x, y, z) of face j of n_faces from corner-major positions xc (3, >= 4,
+    >= n_faces): ``spine_vectors``' sums in the same order, (1, 0, 0) where they vanish."""
+    a = j - 1 if j > 0 else 0
+    b = j + 1 if j < n_faces - 1 else n_faces - 1
+    sx = sy = sz = 0.0
+    for c in range(4):
+        sx += xc[0, c, a] - xc[0, c, b]
+        sy += xc[1, c, a] - xc[1, c, b]
+        sz += xc[2, c, a] - xc[2, c, b]
+    nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
+    if nrm > 0.0:
+        return sx / nrm, sy / nrm, sz / nrm
+    return 1.0, 0.0, 0.0
+
+
 @njit(cache=True)
 def spine_vectors_c(xc, out):
     """``spine_vectors`` from corner-major positions xc (3, 4, >= n_faces) into out (n_faces, 3): the same
     sums in the same order."""
     n_faces = out.shape[0]
     for j in range(n_faces):
-        a = j - 1 if j > 0 else 0
-        b = j + 1 if j < n_faces - 1 else n_faces - 1
-        sx = sy = sz = 0.0
-        for c in range(4):
-            sx += xc[0, c, a] - xc[0, c, b]
-            sy += xc[1, c, a] - xc[1, c, b]
-            sz += xc[2, c, a] - xc[2, c, b]
-        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
-        if nrm > 0.0:
-            out[j, 0], out[j, 1], out[j, 2] = sx / nrm, sy / nrm, sz / nrm
-        else:
-            out[j, 0], out[j, 1], out[j, 2] = 1.0, 0.0, 0.0
+        out[j, 0], out[j, 1], out[j, 2] = _face_spine_c(xc, j, n_faces)
 
 
 @njit(cache=True)
@@ -682,19 +688,8 @@ def spine_rows(xc, n_faces, wf, osx, wl):
     osy = osx + wl
     osz = osy + wl
     for j in range(n_faces):
-        a = j - 1 if j > 0 else 0
-        b = j + 1 if j < n_faces - 1 else n_faces - 1
-        sx = sy = sz = 0.0
-        for c in range(4):
-            sx += xc[0, c, a] - xc[0, c, b]
-            sy += xc[1, c, a] - xc[1, c, b]
-            sz += xc[2, c, a] - xc[2, c, b]
-        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
         u = np.uint64(j)
-        if nrm > 0.0:
-            wf[osx + u], wf[osy + u], wf[osz + u] = sx / nrm, sy / nrm, sz / nrm
-        else:
-            wf[osx + u], wf[osy + u], wf[osz + u] = 1.0, 0.0, 0.0
+        wf[osx + u], wf[osy + u], wf[osz + u] = _face_spine_c(xc, j, n_faces)
 
 
 @njit(cache=True, error_model="numpy")
