@@ -270,12 +270,10 @@ def test_wrap_equals_the_general_formula_bit_for_bit():
         assert np.float64(got).tobytes() == np.float64(want).tobytes(), a
 
 
-def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
-    """The one-pass kernel gives the doubles of the controller's separate sequence (STANCE legs' IK,
-    the theta_min test, FK of all legs, planted tips restored), failures and non-STANCE legs included."""
-    from bench_myriapoda.controllers.myriapod import switcher as SW
-    rng = np.random.default_rng(11)
-    n_seg = 6
+def _moved_segments_with_planted_tips(rng, n_seg):
+    """(geom, seg_c, seg_R, angles, tips, roots): n_seg random segment poses and convex leg angles, the
+    tips where those angles put them, then the segments moved a little (the Targeter's new poses) with
+    the tips left planted; roots (2 n_seg, 3) of the moved segments."""
     n_legs = 2 * n_seg
     geom = geometry(n_seg)
     seg_c = rng.normal(size=(n_seg, 3))
@@ -283,11 +281,22 @@ def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
     angles = np.array([random_convex_angles(rng) for _ in range(n_legs)])
     O0, M0, tips = (np.empty((n_legs, 3)) for _ in range(3))
     L.legs_forward_kinematics(seg_c, seg_R, geom, angles, O0, M0, tips)
-    # the segments move a little (the Targeter's new poses); some tips out of reach, one on the root
     seg_c += 0.05 * rng.normal(size=seg_c.shape)
-    tips[3] += 10.0 * seg_R[1][:, 2]
     roots = np.empty((n_legs, 3))
     L.legs_roots(seg_c, seg_R, geom, roots)
+    return geom, seg_c, seg_R, angles, tips, roots
+
+
+def test_stance_ik_and_fk_equals_ik_then_fk_bit_for_bit():
+    """The one-pass kernel gives the doubles of the controller's separate sequence (STANCE legs' IK,
+    the theta_min test, FK of all legs, planted tips restored), failures and non-STANCE legs included."""
+    from bench_myriapoda.controllers.myriapod import switcher as SW
+    rng = np.random.default_rng(11)
+    n_seg = 6
+    n_legs = 2 * n_seg
+    geom, seg_c, seg_R, angles, tips, roots = _moved_segments_with_planted_tips(rng, n_seg)
+    # some tips out of reach, one on the root
+    tips[3] += 10.0 * seg_R[1][:, 2]
     tips[6] = roots[6]
     states = np.where(rng.random(n_legs) < 0.7, SW.STANCE, SW.SF1).astype(np.int64)
     states[[3, 6]] = SW.STANCE
@@ -337,15 +346,7 @@ def test_stance_ik_and_fk_pairs_equal_ik_then_fk_bit_for_bit(seed):
     rng = np.random.default_rng(seed)
     n_seg = 8
     n_legs = 2 * n_seg
-    geom = geometry(n_seg)
-    seg_c = rng.normal(size=(n_seg, 3))
-    seg_R = np.stack([Rotation.random(random_state=rng).as_matrix() for _ in range(n_seg)])
-    angles = np.array([random_convex_angles(rng) for _ in range(n_legs)])
-    O0, M0, tips = (np.empty((n_legs, 3)) for _ in range(3))
-    L.legs_forward_kinematics(seg_c, seg_R, geom, angles, O0, M0, tips)
-    seg_c += 0.05 * rng.normal(size=seg_c.shape)
-    roots = np.empty((n_legs, 3))
-    L.legs_roots(seg_c, seg_R, geom, roots)
+    geom, seg_c, seg_R, angles, tips, roots = _moved_segments_with_planted_tips(rng, n_seg)
     tips[2] += 10.0 * seg_R[1][:, 2]          # out of reach, left leg of a pair
     tips[5] = roots[5]                        # on the root, right leg of a pair
     # only a non-convex knee: the tip nearly straight out from the root (beta <= 0), left leg of segment 4

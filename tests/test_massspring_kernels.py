@@ -440,11 +440,11 @@ def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integ
     acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
     xa, va, xb, vb = xc.copy(), vc.copy(), xc.copy(), vc.copy()
     seg_held = np.zeros(n_nodes // 4 - 1, dtype=np.bool_)
-    work, touch = np.zeros((K.N_WORK, n_nodes)), np.zeros(n_nodes, dtype=np.int64)
+    work = np.zeros((K.N_WORK, n_nodes))
     imc = np.ascontiguousarray(inv_mass.reshape(-1, 4).T)
     code = np.zeros((4, n_nodes // 4), dtype=np.int64)
     got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, phys, acc_a,
-                                work, touch, code)
+                                work, code)
     ref = K._nodes_general(xb, vb, fc, inv_mass, spine, False, seg_held, body.fric_model, body.fric, body.terr_kind,
                            body.terr, phys, acc_b)
     assert got == ref and 0 < got[0] < n_nodes
@@ -489,10 +489,10 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
     imc[:, :n_faces] = body.inv_mass.reshape(-1, 4).T
     xa, va, xb, vb = xc.copy(), vc.copy(), xc.copy(), vc.copy()
     acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
-    work, touch = np.zeros((K.N_WORK, 4 * stride)), np.zeros(4 * stride, dtype=np.int64)
+    work = np.zeros((K.N_WORK, 4 * stride))
     code = np.zeros((4, stride), dtype=np.int64)
     got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, body.phys, acc_a,
-                                work, touch, code)
+                                work, code)
     ref = K._nodes_general(xb, vb, fc, body.inv_mass, spine, False, np.zeros(n_faces - 1, dtype=np.bool_),
                            body.fric_model, body.fric, body.terr_kind, body.terr, body.phys, acc_b)
     assert got == ref and got[0] == np.sum(x[:, 1] < contact)

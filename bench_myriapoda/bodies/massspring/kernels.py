@@ -770,7 +770,7 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_k
 
 
 @njit(cache=True, error_model="numpy")
-def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, touch, code):
+def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, code):
     """One step of every free node under COULOMB friction on a plane or slope without obstacles.
 
     ``_nodes_general``'s arithmetic, operation by operation, in three passes that vectorise along
@@ -786,7 +786,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     The step's status is that of the last node in node order with a problem, as in the node loop.
     xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
     imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
-    work (N_WORK, >= 4 stride); touch: unused (kept for the callers); code (4, stride) int64 scratch.
+    work (N_WORK, >= 4 stride); code (4, stride) int64 scratch.
     Returns (nodes within the contact distance, status).
     """
     n_faces = spine.shape[0]
