@@ -544,11 +544,14 @@ def cmd_matrix(args) -> int:
         bar.close()
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(labels)]
+    axes_of = {}
+    for mc in exp.cases:  # the first case of a hash, as a search in order would find it
+        axes_of.setdefault(mc.case.case_hash(), mc.axes)
     table = []
     for _, r in rows.iterrows():
         m = json.loads(r.metrics_json)
         case = json.loads(r.case_json)
-        axes = next(mc.axes for mc in exp.cases if mc.case.case_hash() == r.case_hash)
+        axes = axes_of[r.case_hash]
         table.append({"case_hash": r.case_hash, **{k: v for k, v in axes.items()}, "dt": case["dt"],
                       "duration": case["duration"], "status": r.status, "message": r.message or "",
                       **{k: m.get(k) for k in TABLE_METRICS}, "steps_per_s": r.steps_per_s, "wall_s": r.wall_s,
