@@ -16,6 +16,7 @@ import matplotlib
 matplotlib.use("Agg")  # files only; never needs a display
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 from ..metrics.gait import (  # noqa: E402
@@ -79,14 +80,22 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
     # a row pitch of at least 0.2 in keeps the 9 pt leg labels apart (taller than 16 in: every other label)
     fig_h = min(max(2.6, ROW_PITCH_IN * y_max + 1.4), MAX_HEIGHT_IN)
     fig, ax = plt.subplots(figsize=(WIDE_IN * 0.85, fig_h))
+    # Every bar in one collection (one artist, not one per leg and state: a 36-legged diagram had 100 or
+    # more), in the order, corners and colours broken_barh per leg and state would draw them.
+    verts, colors = [], []
     for leg, y in rows:
         runs = run_lengths(t, states[:, leg])
+        y0 = y - ROW_HEIGHT / 2
+        y1 = y0 + ROW_HEIGHT
         for code in range(N_STATES):
             sel = runs.codes == code
-            if sel.any():
-                # antialiasing off: bar interiors keep their exact state colour, edges do not blend
-                ax.broken_barh(list(zip(runs.t_start[sel], runs.duration[sel])), (y - ROW_HEIGHT / 2, ROW_HEIGHT),
-                               facecolors=STATE_COLORS[code], edgecolors="none", antialiased=False)
+            for x0, dx in zip(runs.t_start[sel], runs.duration[sel]):
+                x1 = x0 + dx
+                verts.append([(x0, y0), (x0, y1), (x1, y1), (x1, y0)])
+                colors.append(STATE_COLORS[code])
+    if verts:
+        # antialiasing off: bar interiors keep their exact state colour, edges do not blend
+        ax.add_collection(PolyCollection(np.array(verts), facecolors=colors, edgecolors="none", antialiased=False))
     every = 1 if (fig_h - 1.4) / y_max >= ROW_PITCH_IN * 0.99 else 2
     ax.set_yticks([y for _, y in rows][::every])
     ax.set_yticklabels([leg_label(leg) for leg, _ in rows][::every], fontsize=LABEL_PT)
