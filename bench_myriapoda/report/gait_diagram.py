@@ -9,6 +9,7 @@ down each side; a direct wave as onsets moving earlier.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import matplotlib
@@ -118,13 +119,34 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
     (-0.5, 0.5]; positive = retrograde (head-to-tail) wave.  Left and right
     legs are separate series with error bars showing the RMS spread of each
     leg's lag events; the dashed line is ``phase_lag_mean``.  Writes a PNG to
-    ``path`` and returns it.
+    ``path`` and returns it.  ``phase_lag_data`` then ``draw_phase_lags``.
     """
+    return draw_phase_lags(phase_lag_data(t, states, warmup_s), path, title)
+
+
+@dataclass(frozen=True)
+class PhaseLags:
+    """What ``draw_phase_lags`` plots: per-leg mean lag and RMS spread [cycles] (n_legs,), and the wave's
+    mean lag and its label (``metrics.gait.wave_metrics``)."""
+
+    mean: np.ndarray
+    spread: np.ndarray
+    lag_mean: float
+    wave_direction: str
+    n_legs: int
+
+
+def phase_lag_data(t, states, warmup_s: float = 0.0) -> PhaseLags:
+    """The lags of a leg timeline t (T,) [s], states (T, n_legs); ValueError for a timeline that has none."""
     t, states = check_timeline(t, states)
     mean, spread = phase_lags_per_leg(t, states, warmup_s)
     wave, labels = wave_metrics(stride_stats(t, states, warmup_s).onset_times)
-    n_legs = states.shape[1]
+    return PhaseLags(mean, spread, wave["phase_lag_mean"], labels["wave_direction"], states.shape[1])
 
+
+def draw_phase_lags(lags: PhaseLags, path, title: str | None = None) -> Path:
+    """The figure of ``plot_phase_lags`` from measured lags; writes a PNG to ``path`` and returns it."""
+    mean, spread, n_legs = lags.mean, lags.spread, lags.n_legs
     fig, ax = plt.subplots(figsize=(WIDE_IN * 0.8, 4.4))
     for side, marker, name in ((LEFT, "o", "left"), (RIGHT, "s", "right")):
         legs = np.arange(side, n_legs, 2)
@@ -132,9 +154,9 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
         ax.errorbar(seg + (0.08 if side == RIGHT else -0.08), mean[legs], yerr=spread[legs], fmt=marker,
                     ms=4, capsize=2, lw=0.8, label=f"{name} legs")
     ax.axhline(0.0, color="0.5", lw=0.8)
-    lag = wave["phase_lag_mean"]
+    lag = lags.lag_mean
     if math.isfinite(lag):
-        ax.axhline(lag, color="k", ls="--", lw=0.8, label=f"mean {lag:+.3f} ({labels['wave_direction']})")
+        ax.axhline(lag, color="k", ls="--", lw=0.8, label=f"mean {lag:+.3f} ({lags.wave_direction})")
     ax.set_ylim(-0.5, 0.5)
     ax.text(0.01, 0.97, "retrograde (head to tail)", transform=ax.transAxes, va="top", fontsize=LABEL_PT, color="0.4")
     ax.text(0.01, 0.03, "direct (tail to head)", transform=ax.transAxes, va="bottom", fontsize=LABEL_PT, color="0.4")
