@@ -121,6 +121,8 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--history-store", metavar="PATH", default=None,
                     help="results store with the regress history to plot (default reports/results.sqlite)")
     rp.add_argument("--strict", action="store_true", help="exit 1 when the baseline comparison finds a regression")
+    rp.add_argument("--workers", type=int, metavar="N", default=None,
+                    help="processes drawing the figures (default: CPU count; the page is the same for any N)")
 
     rg = sub.add_parser("regress", help="time the fixed throughput suite, store it, compare with a baseline run")
     rg.add_argument("--baseline", metavar="COMMIT_OR_RUN", default=None,
@@ -474,12 +476,15 @@ def cmd_report(args) -> int:
 
     if not 0 < args.threshold < 10:
         raise InputError("--threshold", None, f"{args.threshold} is out of range; must be in (0, 10)")
+    if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
+        raise InputError("--workers", None, f"{args.workers} is out of range; must be 1 to {MAX_WORKERS}")
     _check_path_flags(args, "--history-store", "--baseline")
     if args.history_store:
         from .harness.store import check_store
         check_store(args.history_store, "--history-store", write=False)
     history = Path(args.history_store) if args.history_store else DEFAULT_STORE
-    summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold)
+    summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold,
+                           workers=args.workers or os.cpu_count() or 1)
     print(f"report written to {summary.index} and {summary.summary} ({len(summary.figures)} figures)")
     if args.baseline:
         print(f"{summary.regressions} regression(s) against {args.baseline}")
@@ -544,11 +549,14 @@ def cmd_matrix(args) -> int:
         bar.close()
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(labels)]
+    axes_of = {}
+    for mc in exp.cases:  # the first case of a hash, as a search in order would find it
+        axes_of.setdefault(mc.case.case_hash(), mc.axes)
     table = []
     for _, r in rows.iterrows():
         m = json.loads(r.metrics_json)
         case = json.loads(r.case_json)
-        axes = next(mc.axes for mc in exp.cases if mc.case.case_hash() == r.case_hash)
+        axes = axes_of[r.case_hash]
         table.append({"case_hash": r.case_hash, **{k: v for k, v in axes.items()}, "dt": case["dt"],
                       "duration": case["duration"], "status": r.status, "message": r.message or "",
                       **{k: m.get(k) for k in TABLE_METRICS}, "steps_per_s": r.steps_per_s, "wall_s": r.wall_s,
@@ -571,7 +579,9 @@ def cmd_matrix(args) -> int:
     if args.report:
         from .harness.store import DEFAULT_STORE
         from .report.build import build_report
-        summary = build_report(out, history_store=DEFAULT_STORE)
+        # the matrix's cores are free now: its --workers draw the figures (figure_pool; dask: this machine's)
+        workers = args.workers or os.cpu_count() or 1
+        summary = build_report(out, history_store=DEFAULT_STORE, workers=workers)
         print(f"report written to {summary.index} ({len(summary.figures)} figures)")
     return EXIT_FAIL if bad or missing else EXIT_OK
 

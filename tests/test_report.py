@@ -362,3 +362,26 @@ def test_report_history_lists_the_peer_speedups(matrix_dir, tmp_path):
     section = (matrix_dir / "index.html").read_text().split('<section id="history">', 1)[1].split("</section>", 1)[0]
     assert "ours:fem-chain-816 vs peer:mujoco-flex-816" in section
     assert "<td>20</td>" in section and "<td>30</td>" in section
+
+
+def test_report_is_the_same_drawn_in_worker_processes(matrix_dir, tmp_path):
+    """Figures drawn by forked workers (figure_pool) are the files one process draws, byte for byte; the page
+    is the same apart from its build time."""
+    from bench_myriapoda.report.build import build_report
+    from bench_myriapoda.report.figure_pool import fork_context
+
+    pages = {}
+    for workers in (1, 2):
+        d = tmp_path / f"w{workers}"
+        shutil.copytree(matrix_dir, d, ignore=shutil.ignore_patterns("figures", "index.html", "summary.md"))
+        summary = build_report(d, workers=workers)
+        pages[workers] = (re.sub(r"Built [^.]*UTC", "Built", (d / "index.html").read_text()),
+                          re.sub(r"Built [^.]*UTC", "Built", (d / "summary.md").read_text()),
+                          {p.name: p.read_bytes() for p in summary.figures})
+    one, two = pages[1], pages[2]
+    assert len(one[2]) >= 8 and sorted(one[2]) == sorted(two[2])
+    for name in one[2]:
+        assert one[2][name] == two[2][name], f"{name} differs when drawn in a worker process"
+    assert one[:2] == two[:2]
+    if fork_context() is None:
+        pytest.skip("no fork on this platform: both reports were drawn in this process")

@@ -67,13 +67,38 @@ class Case:
         return d
 
     def case_hash(self) -> str:
-        """sha256 of the canonical JSON of the resolved configuration (first 16 hex digits)."""
-        blob = json.dumps(self.to_dict(), sort_keys=True, separators=(",", ":"))
-        return hashlib.sha256(blob.encode()).hexdigest()[:16]
+        """sha256 of the canonical JSON of the resolved configuration (first 16 hex digits).
+
+        Computed once per object: a matrix asks for the hash of each of its cases thousands of times
+        (labels, resume, the results table), and each computation walks the whole case
+        (``dataclasses.asdict``, about 3 ms).  The cached value cannot go stale: a Case and its sections
+        are frozen dataclasses whose lists are tuples (``schema.coerce_value``), and ``dataclasses.replace``
+        builds a new object.  A body config that is not frozen (a user's body model) is hashed afresh
+        on every call.  The value is ``uncached_case_hash(self)``, unchanged (results are keyed by it).
+        """
+        h = self.__dict__.get("_case_hash")
+        if h is None:
+            h = uncached_case_hash(self)
+            if _frozen(self.body):
+                object.__setattr__(self, "_case_hash", h)  # frozen: __setattr__ refuses, __dict__ accepts
+        return h
 
     @property
     def steps(self) -> int:
         return int(round(self.duration / self.dt))
+
+
+def uncached_case_hash(case: Case) -> str:
+    """``Case.case_hash`` computed from scratch: sha256 of ``json.dumps(case.to_dict(), sort_keys=True,
+    separators=(",", ":"))``, first 16 hex digits."""
+    blob = json.dumps(case.to_dict(), sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(blob.encode()).hexdigest()[:16]
+
+
+def _frozen(obj: Any) -> bool:
+    """True for an instance of a frozen dataclass (which nothing may change after it is built)."""
+    params = getattr(type(obj), "__dataclass_params__", None)
+    return bool(params is not None and params.frozen)
 
 
 # --------------------------------------------------------------------------- files

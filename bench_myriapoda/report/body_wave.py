@@ -71,6 +71,7 @@ def plot_speed_per_stride_vs_offset(df: pd.DataFrame, path: Path) -> Path:
 def report_section(page, res) -> None:
     """The report's body-wave section (``report.build``): the plot and a line on what it shows."""
     page.section("body-wave", "Body wave: speed per stride against the phase offset")
-    path = plot_speed_per_stride_vs_offset(res.df, page.fig_dir / "body_wave_speed_per_stride.png")
+    path = page.fig_dir / "body_wave_speed_per_stride.png"
+    page.draw(path, plot_speed_per_stride_vs_offset, res.df, path)
     page.figure(path, "Speed per stride (net COM speed / stride frequency / body length) against the offset of "
                       "the lateral body wave from the head legs' phase; dashed: the same creature without a wave.")

@@ -44,6 +44,7 @@ from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
 from .figure_files import report_style
+from .figure_pool import FigurePainter
 from .tables import comparison_tables, footnote_marks, html_table, md_table
 from .validation import figure_verdict, load_validation, section as validation_section
 
@@ -87,11 +88,16 @@ class ReportSummary:
 class _Page:
     """Collects the HTML and Markdown of the report, and the figures it references."""
 
-    def __init__(self, fig_dir: Path):
+    def __init__(self, fig_dir: Path, painter: FigurePainter | None = None):
         self.fig_dir = fig_dir
+        self.painter = painter or FigurePainter(1)
         self.html: list[str] = []
         self.md: list[str] = []
         self.figures: list[Path] = []
+
+    def draw(self, path: Path, fn, *args, **kwargs) -> Path:
+        """Have ``fn(*args, **kwargs)`` write the figure file ``path`` (perhaps in a worker: ``figure_pool``)."""
+        return self.painter.draw(path, fn, *args, **kwargs)
 
     def section(self, sid: str, title: str) -> None:
         if self.html:
@@ -143,8 +149,12 @@ def _slug(*parts) -> str:
 
 
 def build_report(directory: Path | str, baseline: Path | str | None = None, history_store: Path | str | None = None,
-                 threshold: float = 0.10) -> ReportSummary:
-    """Write ``DIR/index.html``, ``DIR/summary.md`` and ``DIR/figures/``; see the module docstring."""
+                 threshold: float = 0.10, workers: int = 1) -> ReportSummary:
+    """Write ``DIR/index.html``, ``DIR/summary.md`` and ``DIR/figures/``; see the module docstring.
+
+    workers: processes drawing the figures (``figure_pool.FigurePainter``); 1 = all in this process.
+    The page and its images are the same for any number.
+    """
     # equal-aspect top views over an inverted axis make matplotlib log "Ignoring fixed limits" for every
     # panel: expected here (the data limits adjust), so not shown
     logging.getLogger("matplotlib.axes._base").setLevel(logging.ERROR)
@@ -155,16 +165,16 @@ def build_report(directory: Path | str, baseline: Path | str | None = None, hist
     clean_stale_temporaries(d)
     tmp = Path(tempfile.mkdtemp(prefix=f"{TMP_PREFIX}{os.getpid()}-", dir=d))
     try:
-        with report_style():
-            return _build(res, base, history_store, threshold, d, tmp)
+        with report_style(), FigurePainter(workers) as painter:
+            return _build(res, base, history_store, threshold, d, tmp, painter)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
 
 def _build(res: MatrixResults, base: MatrixResults | None, history_store, threshold: float, d: Path,
-           tmp: Path) -> ReportSummary:
+           tmp: Path, painter: FigurePainter) -> ReportSummary:
     """The body of ``build_report``: every section into ``tmp``, then moved into ``d``."""
-    page = _Page(tmp / "figures")
+    page = _Page(tmp / "figures", painter)
     page.fig_dir.mkdir()
     _overview(page, res)
     sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
@@ -182,6 +192,7 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     validation_section(page, vdata, Path(history_store) if history_store else None)
     _history(page, Path(history_store) if history_store else None)
     regressions = _baseline(page, res, base, threshold)
+    painter.finish()  # every figure file written before the page that shows it
     page.html.append("</section>")
     nav = "".join(f'<a href="#{sid}">{html.escape(t)}</a>' for sid, t in SECTIONS)
     title = f"bench-myriapoda report: matrix {res.name}"
@@ -298,8 +309,8 @@ def _comparison(page: _Page, res: MatrixResults) -> None:
         sub = res.df[res.df["creature"] == creature]
         sub = sub[~sweeps.sweep_mask(sub, res.grid_keys)]
         if has_several_seeds(sub):
-            path = plot_seed_spread(sub, page.fig_dir / f"seeds_{_slug(creature)}.png",
-                                    f"{creature}: spread over seeds")
+            path = page.fig_dir / f"seeds_{_slug(creature)}.png"
+            page.draw(path, plot_seed_spread, sub, path, f"{creature}: spread over seeds")
             page.figure(path, f"{creature}: each case's mean over its seeds with an error bar of one standard "
                               "deviation (sample, n - 1), and every seed's value as a grey dot.")
 
@@ -314,7 +325,7 @@ def _legged(res: MatrixResults, df: pd.DataFrame):
 
 
 def _gait(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
-    from .gait_diagram import plot_gait_diagram, plot_phase_lags
+    from .gait_diagram import draw_phase_lags, phase_lag_data, plot_gait_diagram
 
     page.section("gait", "Gait diagrams and phase lags")
     shown = 0
@@ -324,15 +335,17 @@ def _gait(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
             break
         page.h3(r.label)
         t, states = rec["leg_t"], rec["leg_states"]
-        p1 = plot_gait_diagram(t, states, page.fig_dir / f"gait_{_slug(r.case_hash)}.png", last_seconds=1.0,
-                               title=f"{r.label}: leg states, last second")
+        p1 = page.fig_dir / f"gait_{_slug(r.case_hash)}.png"
+        page.draw(p1, plot_gait_diagram, t, states, p1, last_seconds=1.0, title=f"{r.label}: leg states, last second")
         page.figure(p1, "Leg states over the last second (rows: legs, head at the top), as the paper's Fig. 10.")
-        try:
-            p2 = plot_phase_lags(t, states, page.fig_dir / f"lag_{_slug(r.case_hash)}.png",
-                                 warmup_s=min(1.0, 0.3 * float(t[-1])), title=f"{r.label}: phase lags")
-            page.figure(p2, "Phase lag of each leg behind the same-side leg ahead; positive = retrograde wave.")
+        try:  # the lags are measured here, so that a timeline without them is a note, not a failed figure
+            lags = phase_lag_data(t, states, warmup_s=min(1.0, 0.3 * float(t[-1])))
         except ValueError as exc:  # too few stance onsets to measure a lag
             page.p(f"No phase lags: {exc}", "note")
+        else:
+            p2 = page.fig_dir / f"lag_{_slug(r.case_hash)}.png"
+            page.draw(p2, draw_phase_lags, lags, p2, title=f"{r.label}: phase lags")
+            page.figure(p2, "Phase lag of each leg behind the same-side leg ahead; positive = retrograde wave.")
         shown += 1
     if shown == 0:
         page.p("No legged creature in this matrix (or none left a leg timeline).", "note")
@@ -356,8 +369,8 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
             foods.append(res.case(r.case_hash).get("food"))
         if not runs:
             continue
-        path = plot_top_views(runs[:6], page.fig_dir / f"top_{_slug(creature, scenario, body)}.png",
-                              scenarios=scen[:6], foods=foods[:6])
+        path = page.fig_dir / f"top_{_slug(creature, scenario, body)}.png"
+        page.draw(path, plot_top_views, runs[:6], path, scenarios=scen[:6], foods=foods[:6])
         page.figure(path, f"{creature} on {scenario}, {body} body, seen from above, one row per run. Left: the "
                           "body's centre line at six times (head: dot) and the centre-of-mass path (dashed). "
                           "Right: the centre-of-mass path, zoomed, dots at the six times. Coloured by "
@@ -379,8 +392,9 @@ def _stability(page: _Page, res: MatrixResults) -> None:
     page.p("Every heatmap has the same dt columns (all dt values of any sweep in this matrix), so the bodies' "
            "stable ranges line up; a body not run at a dt shows a blank cell.", "note")
     for creature, body, key, sub in groups:
-        path = sweeps.plot_stability_heatmap(sub, key, page.fig_dir / f"stability_{_slug(creature, body)}.png",
-                                             f"{creature} / {body}: stable or time of blow-up", dts)
+        path = page.fig_dir / f"stability_{_slug(creature, body)}.png"
+        page.draw(path, sweeps.plot_stability_heatmap, sub, key, path, f"{creature} / {body}: stable or time of blow-up",
+                  dts)
         page.figure(path, f"{creature} on the {body} body: each cell a run of {sub['duration'].max():g} s at that "
                           f"dt and {sweeps.key_label(key)}; green = stable throughout; red = blew up, darker = "
                           "earlier (colour bar: t_fail / duration; t_fail in the cell); grey = error or timeout.")
@@ -396,7 +410,9 @@ def _scaling(page: _Page, res: MatrixResults) -> None:
     for key in sweeps.SIZE_KEYS:
         if not any(s[0] == key for s in series):
             continue
-        path, fits = sweeps.plot_throughput_scaling(series, page.fig_dir / f"scaling_{_slug(key)}.png", key)
+        path = page.fig_dir / f"scaling_{_slug(key)}.png"
+        page.draw(path, sweeps.plot_throughput_scaling, series, path, key)
+        fits = sweeps.throughput_fits(series, key)  # the exponents the figure's legend shows
         page.figure(path, f"Steps per second against {key} (log-log); p is the fitted exponent of steps/s ~ N^p "
                           "(p = -1: cost linear in size).")
         for name, p in fits.items():
@@ -419,7 +435,8 @@ def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
                 runs.append((f"{r.body} / {r.gait} / {r.scenario}"
                              + ("" if pd.isna(r.get("seed")) else f" / seed {int(r.seed)}"), series_from_recording(rec)))
         if runs:
-            path = plot_energy(runs[:9], page.fig_dir / f"energy_{_slug(creature)}.png")
+            path = page.fig_dir / f"energy_{_slug(creature)}.png"
+            page.draw(path, plot_energy, runs[:9], path)
             page.figure(path, f"{creature}: kinetic, elastic, gravitational and total energy relative to t = 0 [J].")
             drawn += 1
     if not drawn:
@@ -450,7 +467,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
         food = res.case(r.case_hash).get("food")
         slug = _slug(r.case_hash)
         if "side" in fig.images:
-            page.figure(plot_side_strip(f"{r.label}: side view", s, scen, page.fig_dir / f"paper_side_{slug}.png"),
+            side_png = page.fig_dir / f"paper_side_{slug}.png"
+            page.figure(page.draw(side_png, plot_side_strip, f"{r.label}: side view", s, scen, side_png),
                         "Side view at six times spaced by the body's motion, coloured from dark purple (first) "
                         "to yellow (last) as the legend's times show, over the terrain.")
         # The gait and trajectory sections have drawn these already (each figure is drawn once): link to them.
@@ -459,16 +477,17 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
             if gait_png in page.figures:
                 page.link(gait_png, "Leg states during the last second (the right panel of Fig. 10)", "gait")
             else:  # the gait section stopped at MAX_GAIT_CASES before this case
-                plot_gait_diagram(rec["leg_t"], rec["leg_states"], gait_png, last_seconds=1.0,
-                                  title=f"{r.label}: leg states, last second")
+                page.draw(gait_png, plot_gait_diagram, rec["leg_t"], rec["leg_states"], gait_png, last_seconds=1.0,
+                          title=f"{r.label}: leg states, last second")
                 page.figure(gait_png, "Leg states during the last second (the right panel of Fig. 10).")
         if "top" in fig.images:
             top_png = page.fig_dir / f"top_{_slug(r.creature, r.scenario, r.body)}.png"
             if top_png in page.figures:
                 page.link(top_png, "Seen from above", "trajectories")
             else:
-                page.figure(plot_top_views([(r.label, s)], page.fig_dir / f"paper_top_{slug}.png",
-                                           scenarios=[scen], foods=[food]), "Seen from above.")
+                top_png = page.fig_dir / f"paper_top_{slug}.png"
+                page.figure(page.draw(top_png, plot_top_views, [(r.label, s)], top_png, scenarios=[scen], foods=[food]),
+                            "Seen from above.")
     walks = main[(main.get("scenario") == "walk") & (main.get("creature") == "centipede")] if not main.empty else main
     if not walks.empty:
         page.h3("Throughput headline (Sec. 6)")
@@ -506,7 +525,8 @@ def _history(page: _Page, store: Path | None) -> None:
     if hist.empty:
         page.p(f"No regress runs in {store} yet; run `bench-myriapoda regress`.", "note")
         return
-    path = plot_regress_history(hist, page.fig_dir / "regress_history.png")
+    path = page.fig_dir / "regress_history.png"
+    page.draw(path, plot_regress_history, hist, path)
     page.figure(path, "Normalized throughput (steps/s divided by the reference kernel's rate, timed in the same run) "
                       "per suite entry and regress run.")
     from .regress_history import peer_ratio_history

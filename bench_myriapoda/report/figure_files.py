@@ -42,6 +42,30 @@ def save_figure(fig, path, dpi: int = DPI) -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     width_in = fig.get_size_inches()[0]
-    fig.savefig(path, dpi=max(dpi, MIN_WIDTH_PX / width_in + 0.5))
+    dpi = max(dpi, MIN_WIDTH_PX / width_in + 0.5)
+    layout_once(fig, path, dpi)
+    fig.savefig(path, dpi=dpi)
     plt.close(fig)
     return path
+
+
+def layout_once(fig, path, dpi: float) -> None:
+    """Run ``fig``'s layout engine now, at the saving ``dpi``, and detach it, so that ``savefig`` draws once.
+
+    With any layout engine attached (``layout="constrained"``, or the placeholder ``tight_layout()``
+    leaves behind), ``savefig`` draws the whole figure twice: once with rendering switched off, only to
+    run the engine, then for the pixels.  The first pass costs as much Python as the second (every
+    tick and text laid out again), a third of a report figure's time.  Running the engine here with
+    the renderer ``savefig`` would use (same dpi) gives the same positions, and the saved image is the
+    same byte for byte (tests/test_report.py compares).  ``path``: the file it will be saved to (only a
+    ``.png`` is laid out here: a vector format measures text with its own renderer); ``dpi``: its dpi.
+    """
+    engine = fig.get_layout_engine()
+    if engine is None or Path(path).suffix.lower() != ".png":
+        return
+    fig.dpi = dpi  # the layout measures text in pixels: measure it as savefig would
+    engine.execute(fig)  # a no-op for tight_layout()'s placeholder: that layout is done already
+    # None (not "none", which leaves a placeholder that savefig still draws for); with these rc values
+    # off, set_layout_engine(None) detaches the engine instead of making a new one
+    with plt.rc_context({"figure.autolayout": False, "figure.constrained_layout.use": False}):
+        fig.set_layout_engine(None)

@@ -9,6 +9,7 @@ down each side; a direct wave as onsets moving earlier.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import matplotlib
@@ -16,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")  # files only; never needs a display
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 from ..metrics.gait import (  # noqa: E402
@@ -79,14 +81,22 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
     # a row pitch of at least 0.2 in keeps the 9 pt leg labels apart (taller than 16 in: every other label)
     fig_h = min(max(2.6, ROW_PITCH_IN * y_max + 1.4), MAX_HEIGHT_IN)
     fig, ax = plt.subplots(figsize=(WIDE_IN * 0.85, fig_h))
+    # Every bar in one collection (one artist, not one per leg and state: a 36-legged diagram had 100 or
+    # more), in the order, corners and colours broken_barh per leg and state would draw them.
+    verts, colors = [], []
     for leg, y in rows:
         runs = run_lengths(t, states[:, leg])
+        y0 = y - ROW_HEIGHT / 2
+        y1 = y0 + ROW_HEIGHT
         for code in range(N_STATES):
             sel = runs.codes == code
-            if sel.any():
-                # antialiasing off: bar interiors keep their exact state colour, edges do not blend
-                ax.broken_barh(list(zip(runs.t_start[sel], runs.duration[sel])), (y - ROW_HEIGHT / 2, ROW_HEIGHT),
-                               facecolors=STATE_COLORS[code], edgecolors="none", antialiased=False)
+            for x0, dx in zip(runs.t_start[sel], runs.duration[sel]):
+                x1 = x0 + dx
+                verts.append([(x0, y0), (x0, y1), (x1, y1), (x1, y0)])
+                colors.append(STATE_COLORS[code])
+    if verts:
+        # antialiasing off: bar interiors keep their exact state colour, edges do not blend
+        ax.add_collection(PolyCollection(np.array(verts), facecolors=colors, edgecolors="none", antialiased=False))
     every = 1 if (fig_h - 1.4) / y_max >= ROW_PITCH_IN * 0.99 else 2
     ax.set_yticks([y for _, y in rows][::every])
     ax.set_yticklabels([leg_label(leg) for leg, _ in rows][::every], fontsize=LABEL_PT)
@@ -109,13 +119,34 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
     (-0.5, 0.5]; positive = retrograde (head-to-tail) wave.  Left and right
     legs are separate series with error bars showing the RMS spread of each
     leg's lag events; the dashed line is ``phase_lag_mean``.  Writes a PNG to
-    ``path`` and returns it.
+    ``path`` and returns it.  ``phase_lag_data`` then ``draw_phase_lags``.
     """
+    return draw_phase_lags(phase_lag_data(t, states, warmup_s), path, title)
+
+
+@dataclass(frozen=True)
+class PhaseLags:
+    """What ``draw_phase_lags`` plots: per-leg mean lag and RMS spread [cycles] (n_legs,), and the wave's
+    mean lag and its label (``metrics.gait.wave_metrics``)."""
+
+    mean: np.ndarray
+    spread: np.ndarray
+    lag_mean: float
+    wave_direction: str
+    n_legs: int
+
+
+def phase_lag_data(t, states, warmup_s: float = 0.0) -> PhaseLags:
+    """The lags of a leg timeline t (T,) [s], states (T, n_legs); ValueError for a timeline that has none."""
     t, states = check_timeline(t, states)
     mean, spread = phase_lags_per_leg(t, states, warmup_s)
     wave, labels = wave_metrics(stride_stats(t, states, warmup_s).onset_times)
-    n_legs = states.shape[1]
+    return PhaseLags(mean, spread, wave["phase_lag_mean"], labels["wave_direction"], states.shape[1])
 
+
+def draw_phase_lags(lags: PhaseLags, path, title: str | None = None) -> Path:
+    """The figure of ``plot_phase_lags`` from measured lags; writes a PNG to ``path`` and returns it."""
+    mean, spread, n_legs = lags.mean, lags.spread, lags.n_legs
     fig, ax = plt.subplots(figsize=(WIDE_IN * 0.8, 4.4))
     for side, marker, name in ((LEFT, "o", "left"), (RIGHT, "s", "right")):
         legs = np.arange(side, n_legs, 2)
@@ -123,9 +154,9 @@ def plot_phase_lags(t, states, path, warmup_s: float = 0.0, title: str | None = 
         ax.errorbar(seg + (0.08 if side == RIGHT else -0.08), mean[legs], yerr=spread[legs], fmt=marker,
                     ms=4, capsize=2, lw=0.8, label=f"{name} legs")
     ax.axhline(0.0, color="0.5", lw=0.8)
-    lag = wave["phase_lag_mean"]
+    lag = lags.lag_mean
     if math.isfinite(lag):
-        ax.axhline(lag, color="k", ls="--", lw=0.8, label=f"mean {lag:+.3f} ({labels['wave_direction']})")
+        ax.axhline(lag, color="k", ls="--", lw=0.8, label=f"mean {lag:+.3f} ({lags.wave_direction})")
     ax.set_ylim(-0.5, 0.5)
     ax.text(0.01, 0.97, "retrograde (head to tail)", transform=ax.transAxes, va="top", fontsize=LABEL_PT, color="0.4")
     ax.text(0.01, 0.03, "direct (tail to head)", transform=ax.transAxes, va="bottom", fontsize=LABEL_PT, color="0.4")

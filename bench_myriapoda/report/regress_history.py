@@ -17,6 +17,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from .figure_files import layout_once
+
 
 def plot_regress_history(df, path: Path | str, title: str | None = None) -> Path:
     """Write the history figure to ``path`` (PNG, SVG or PDF by suffix); return the path.
@@ -63,6 +65,7 @@ def plot_regress_history(df, path: Path | str, title: str | None = None) -> Path
         bottom.set_xlim(-0.5, len(runs) - 0.5)
     top.set_title(title or "Normalized throughput per regress run")
     fig.tight_layout()
+    layout_once(fig, path, 110)  # savefig draws once, not twice (figure_files.layout_once)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

@@ -188,6 +188,12 @@ def scaling_series(df: pd.DataFrame, grid_keys) -> list[tuple[str, str, str, np.
     return out
 
 
+def throughput_fits(series, key: str) -> dict[str, float]:
+    """The fitted exponent p of each (creature, body) of one size key (``fit_exponent``), as
+    ``plot_throughput_scaling`` returns them; named ``creature/body``."""
+    return {f"{creature}/{body}": fit_exponent(n, sps)[0] for k, creature, body, n, sps in series if k == key}
+
+
 def plot_throughput_scaling(series, path: Path, key: str) -> tuple[Path, dict[str, float]]:
     """Log-log steps/s against size for each (creature, body) of one size key; returns the fitted exponents."""
     fig, ax = plt.subplots(figsize=(9.0, 5.5), layout="constrained")
