@@ -367,9 +367,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     s.conn.send((*s.job, s.compile_only))
             # stored only now: a result's SQLite commit and recording (tens of ms, most of it waiting for the
             # disk) no longer keep the worker that sent it waiting for its next case
-            for result in ready:
-                emit(result)
-            ready.clear()
+            while ready:
+                emit(ready.pop(0))
             busy = [s for s in slots if s.job]
             if not busy:
                 continue
@@ -418,6 +417,10 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     slots[i].job = None
                     ready.append(result)
     finally:
+        # results received but not stored yet (an interrupt or error between receiving and storing them):
+        # stored now, so nothing computed is lost
+        while ready:
+            emit(ready.pop(0))
         # every idle worker is told to stop before any is waited for: their exits (about a second each, most
         # of it the interpreter tearing down) overlap instead of adding up
         live = [s for s in slots if not s.retired]
