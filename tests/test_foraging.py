@@ -107,3 +107,23 @@ def test_among_random_cylinders_the_body_stays_out_of_them(seed):
     assert m["obstacle_penetration_max_m"] <= 0.6 + 1e-9                           # no deeper than a radius
     assert m["terrain_clearance_min_m"] > 0.3                                      # centres above the ground
     assert m["path_length_m"] > 15.0                                               # and it kept walking
+
+
+@pytest.mark.parametrize("body", ["hybrid", "massspring", "fem"])
+def test_a_carried_body_walking_blind_into_a_wall_slides_past_it(body):
+    """No antennae and no turns: the 6-segment centipede walks straight along +x past a tall cylinder (radius 0.6 m,
+    3 m high) whose edge reaches 0.2 m into the path of its right side.  Nothing turns it away, so its carried
+    segments meet the wall; the Targeter moves them out along the wall's normal (``targeter.keep_clear_of_walls``)
+    and the body slides past.  Before that, carried segments had no collision with obstacles: the hybrid and
+    mass-spring bodies ended ``unstable`` (a box corner 5 cm deep) at 4.0-4.2 s, and the FEM body ended 0.36 m
+    inside the cylinder.  Measured with the push-outs: body depth 3e-16 m (hybrid), 1e-5 m (mass-spring), 1.2 cm
+    (FEM: its segments are deformable blocks, only their targets are moved)."""
+    case = resolve_case("centipede", body, "walk", duration=8.0,
+                        overrides=["creature.segments=6", "antennae.enabled=false", "controller.random_turn_max_deg=0",
+                                   "scenario.obstacle_cylinder_list=[4.0, 0.9, 0.6, 3.0]"])
+    r = run_case(case)
+    assert r.status == "ok", r.message
+    m = r.metrics
+    assert m["wall_pushes"] > 100                                                   # it met the wall
+    assert m["obstacle_penetration_body_max_m"] <= BODY_PENETRATION_LIMIT_M / 2, m["obstacle_penetration_body_max_m"]
+    assert r.series.head[-1][0] > 5.0                                               # and walked on past it
