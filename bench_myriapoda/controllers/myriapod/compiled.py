@@ -410,7 +410,8 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     kinematic[0] = brain != ADJUSTMENT
     TG.targeter_step(c, R, kinematic, kind, terr_walk, tg_params, link_rest, height_target, speed, rate, turn_dir,
                      dt, c_T, R_T)
-    ints[I_WALL_PUSHES] += TG.keep_clear_of_walls(c_T, R_T, kinematic, terr_walls, seg_half)
+    if terr_walls[TG.H_NOBST] > 0.0:  # no call (and no reference counts) on a terrain without walls
+        ints[I_WALL_PUSHES] += TG.keep_clear_of_walls(c_T, R_T, kinematic, terr_walls, seg_half)
     # 4. legs
     collide = ints[I_COLLIDE] != 0
     if collide:
