@@ -87,12 +87,12 @@ def test_among_random_cylinders_the_body_stays_out_of_them(seed):
     them; a 6-segment centipede (8.5 m) forages for 25 s.
 
     Stated depth: the body -- segment centres and the rigid boxes' corners -- never gets deeper than 5 cm into an
-    obstacle (measured: 0 for seeds 0-5).  5 cm is the hybrid body's own deep-penetration limit
-    (``stability.max_penetration_m``) and a tenth of the boxes' half width: the Targeter carries supported
-    segments kinematically, with no collision against obstacles, so the body stays out only because the
+    obstacle (measured: 0 for seeds 1-9, 1.4e-5 m for seed 0).  5 cm is the hybrid body's own deep-penetration
+    limit (``stability.max_penetration_m``) and a tenth of the boxes' half width.  The body stays out because the
     antennae (3.6 m long, sweeping -10..60 degrees from the axis: 3.4 m to the side and 3.9 m ahead of the
-    head's front) make the head turn away before it gets there; the body follows the head's path (its
-    Followers cut the turns toward their inside, away from what the head avoided).
+    head's front) make the head turn away before it gets there, the body following the head's path, and,
+    where a Follower's cut of a turn brings a carried segment against a cylinder all the same, because the
+    Targeter moves it out (``targeter.keep_clear_of_walls``; seed 0 brushes one with 1,348 push-outs).
     The leg tips are not bounded: legs are kinematic, and a leg that brushes a cylinder the antennae happened
     not to touch (its surface within the legs' 2.6 m reach from the midline) swings into it up to the
     cylinder's radius (measured: up to 0.45 m); ``obstacle_penetration_max_m`` reports them with the body.
@@ -107,3 +107,23 @@ def test_among_random_cylinders_the_body_stays_out_of_them(seed):
     assert m["obstacle_penetration_max_m"] <= 0.6 + 1e-9                           # no deeper than a radius
     assert m["terrain_clearance_min_m"] > 0.3                                      # centres above the ground
     assert m["path_length_m"] > 15.0                                               # and it kept walking
+
+
+@pytest.mark.parametrize("body", ["hybrid", "massspring", "fem"])
+def test_a_carried_body_walking_blind_into_a_wall_slides_past_it(body):
+    """No antennae and no turns: the 6-segment centipede walks straight along +x past a tall cylinder (radius 0.6 m,
+    3 m high) whose edge reaches 0.2 m into the path of its right side.  Nothing turns it away, so its carried
+    segments meet the wall; the Targeter moves them out along the wall's normal (``targeter.keep_clear_of_walls``)
+    and the body slides past.  Before that, carried segments had no collision with obstacles: the hybrid and
+    mass-spring bodies ended ``unstable`` (a box corner 5 cm deep) at 4.0-4.2 s, and the FEM body ended 0.36 m
+    inside the cylinder.  Measured with the push-outs: body depth 3e-16 m (hybrid), 1e-5 m (mass-spring), 1.2 cm
+    (FEM: its segments are deformable blocks, only their targets are moved)."""
+    case = resolve_case("centipede", body, "walk", duration=8.0,
+                        overrides=["creature.segments=6", "antennae.enabled=false", "controller.random_turn_max_deg=0",
+                                   "scenario.obstacle_cylinder_list=[4.0, 0.9, 0.6, 3.0]"])
+    r = run_case(case)
+    assert r.status == "ok", r.message
+    m = r.metrics
+    assert m["wall_pushes"] > 100                                                   # it met the wall
+    assert m["obstacle_penetration_body_max_m"] <= BODY_PENETRATION_LIMIT_M / 2, m["obstacle_penetration_body_max_m"]
+    assert r.series.head[-1][0] > 5.0                                               # and walked on past it

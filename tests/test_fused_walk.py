@@ -33,7 +33,8 @@ def state(cr):
            "c_T": c.c_T, "R_T": c.R_T, "brain_steps": c.brain_steps,
            "scalars": np.array([c.brain, c._step, c._turn_left, c._turn_memory, c._avoid_dir, c._avoid_until,
                                 c.tracking_sq_sum, c.tracking_n, c.heading_cmd, c.heading_err_sum, c.heading_err_n,
-                                c.leg_penetration_max, c.leg_stops, c.leg_stuck, c.t_walk, c.recorded], float),
+                                c.leg_penetration_max, c.leg_stops, c.leg_stuck, c.t_walk, c.recorded,
+                                c.wall_pushes], float),
            "rng": c.rng.bit_generator.state["state"]["state"],
            "act_R": cr.stepper.act.support_R, "act_c": cr.stepper.act.support_c,
            "act_kin": cr.stepper.act.support_kinematic}
@@ -128,6 +129,16 @@ def test_fused_equals_python_without_antennae_and_leg_collisions():
     case, fused, ref = pair("walk", 6, "antennae.enabled=false", "legs.collide=false")
     assert fused.controller.antennae is None
     walk_both(case, fused, ref, [50] * 40)
+    assert_same_record(fused, ref)
+
+
+def test_fused_equals_python_while_carried_segments_are_pushed_out_of_a_wall():
+    # test_foraging's blind walk past a tall cylinder: from about 3.5 s the carried segments meet it
+    # (targeter.keep_clear_of_walls); 4.5 s in chunks of the runner's 50 steps and odd ones
+    case, fused, ref = pair("walk", 6, "antennae.enabled=false", "controller.random_turn_max_deg=0",
+                            "scenario.obstacle_cylinder_list=[4.0, 0.9, 0.6, 3.0]")
+    walk_both(case, fused, ref, [50] * 200 + [7, 13, 993, 1, 2486])
+    assert fused.controller.wall_pushes > 100
     assert_same_record(fused, ref)
 
 

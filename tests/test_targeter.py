@@ -366,3 +366,92 @@ def test_targeter_step_equals_one_pass_of_the_kernels_bit_for_bit(kind, f):
     assert not np.array_equal(R_T[kinematic], R[kinematic])
     np.testing.assert_array_equal(got_c, c_T)
     np.testing.assert_array_equal(got_R, R_T)
+
+
+# --------------------------------------------------------------------------- walls (keep_clear_of_walls)
+
+HALF = np.array([0.5, 0.25, 0.5])  # [m] a segment's box: 1 m long, 0.5 m high, 1 m wide
+WALL_TOL = 1e-12  # [m] a probe pushed out of a wall ends on its surface, up to round-off
+
+
+def walls_of(*cylinders):
+    """A wall-only terrain array of tall cylinders (x, z, radius) from y = -1 to y = 5 m."""
+    from bench_myriapoda.world import terrain_kernels as TK
+    return TK.with_obstacles(TK.header(), [TK.cylinder_record(x, z, r, -1.0, 5.0) for x, z, r in cylinders])
+
+
+def probes_world(c, R, half):
+    return np.array([c + R @ (np.array(p) * half) for p in T.WALL_PROBES])
+
+
+def min_wall_phi(walls, c, R, half):
+    from bench_myriapoda.world.terrain_kernels import obstacles_phi
+    return min(obstacles_phi(walls, *p)[0] for p in probes_world(c, R, half))
+
+
+def test_a_carried_box_reaching_into_a_wall_is_moved_out_along_its_normal():
+    # a cylinder of radius 0.6 m centred 0.9 m to the right (+z) of the centre: the box's right side (z = 0.5)
+    # is 0.2 m inside it at x = 0
+    walls = walls_of((0.0, 0.9, 0.6))
+    R = rot(1, 0.0)
+    c_T = np.array([[0.0, 0.3, 0.0]])
+    R_T = R[None].copy()
+    assert min_wall_phi(walls, c_T[0], R, HALF) == pytest.approx(-0.2)
+    pushes = T.keep_clear_of_walls(c_T, R_T, np.array([True]), walls, HALF[None])
+    assert pushes >= 1
+    assert min_wall_phi(walls, c_T[0], R, HALF) >= -WALL_TOL
+    # straight away from the axis at the deepest probe (z = 0.5 at x = 0): along -z, height unchanged
+    np.testing.assert_allclose(c_T[0], [0.0, 0.3, -0.2], atol=1e-12)
+    np.testing.assert_array_equal(R_T[0], R)  # the turn is left alone
+
+
+def test_a_thin_wall_against_the_middle_of_the_box_side_is_caught():
+    # radius 0.1 m touching the right side's middle 5 cm deep: no corner inside, the side's edge midpoints are
+    walls = walls_of((0.0, 0.55, 0.1))
+    c_T = np.array([[0.0, 0.3, 0.0]])
+    R_T = np.eye(3)[None].copy()
+    corners = probes_world(c_T[0], np.eye(3), HALF)[:8]
+    from bench_myriapoda.world.terrain_kernels import obstacles_phi
+    assert min(obstacles_phi(walls, *p)[0] for p in corners) > 0.0
+    assert T.keep_clear_of_walls(c_T, R_T, np.array([True]), walls, HALF[None]) >= 1
+    assert min_wall_phi(walls, c_T[0], np.eye(3), HALF) >= -WALL_TOL
+    assert c_T[0, 2] == pytest.approx(-0.05, abs=1e-12)
+
+
+def test_a_box_between_two_walls_is_pushed_out_of_both():
+    walls = walls_of((0.0, 0.9, 0.6), (0.9, -0.8, 0.4))  # right of its middle, and left of its front corner
+    yaw = rot(1, 0.2)
+    c_T = np.array([[0.0, 0.3, 0.0]])
+    R_T = yaw[None].copy()
+    assert min_wall_phi(walls, c_T[0], yaw, HALF) < -0.1
+    T.keep_clear_of_walls(c_T, R_T, np.array([True]), walls, HALF[None])
+    assert min_wall_phi(walls, c_T[0], yaw, HALF) >= -WALL_TOL
+
+
+def test_segments_not_carried_or_clear_of_the_walls_and_terrains_without_walls_are_left_alone():
+    walls = walls_of((0.0, 0.9, 0.6), (10.0, 0.0, 0.5))
+    c_T = np.array([[0.0, 0.3, 0.0], [10.0, 0.3, 1.2], [20.0, 0.3, 0.0]])  # inside (not carried), beside, far
+    R_T = np.tile(np.eye(3), (3, 1, 1))
+    half = np.tile(HALF, (3, 1))
+    before = c_T.copy()
+    assert T.keep_clear_of_walls(c_T, R_T, np.array([False, True, True]), walls, half) == 0
+    np.testing.assert_array_equal(c_T, before)
+    assert T.keep_clear_of_walls(c_T, R_T, np.ones(3, bool), FLAT, half) == 0  # no obstacle block
+    np.testing.assert_array_equal(c_T, before)
+
+
+def test_wall_terrain_holds_the_tall_obstacles_walkable_terrain_leaves_out():
+    from bench_myriapoda.controllers.myriapod.controller import walkable_terrain, wall_terrain
+    from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.world import terrain_kernels as TK
+    from bench_myriapoda.world.terrain import terrain_from_scenario
+    # a low cylinder (0.3 m, walked over) and a tall one (3 m, a wall); standing height 1 m
+    case = resolve_case("centipede", "hybrid", "walk",
+                        overrides=["scenario.obstacle_cylinder_list=[4.0, 0.0, 0.5, 0.3, 8.0, 2.0, 0.6, 3.0]"])
+    kind, f = terrain_from_scenario(case.scenario)
+    walk, walls = walkable_terrain(case.scenario, kind, f, 1.0), wall_terrain(case.scenario, kind, f, 1.0)
+    np.testing.assert_array_equal(TK.obstacle_records(walk)[:, 1:4], [[4.0, 0.0, 0.5]])
+    np.testing.assert_array_equal(TK.obstacle_records(walls)[:, 1:4], [[8.0, 2.0, 0.6]])
+    flat = resolve_case("centipede", "hybrid", "walk")
+    kind, f = terrain_from_scenario(flat.scenario)
+    assert wall_terrain(flat.scenario, kind, f, 1.0) is f  # no obstacles: nothing to build

@@ -178,10 +178,14 @@ class OpenLoopController(Controller, Protocol):
 
 
 def body_info(body: Body, dt: float) -> dict[str, Any]:
-    """What a controller's ``reset`` learns of the body: sizes, arc positions and the time step."""
-    return {"n_segments": body.n_segments, "muscle_s": np.asarray(body.muscle_s, float),
+    """What a controller's ``reset`` learns of the body: sizes, arc positions and the time step, and for a body
+    with rigid segments their boxes' half extents (``segment_half_extents``)."""
+    info = {"n_segments": body.n_segments, "muscle_s": np.asarray(body.muscle_s, float),
             "body_length_m": float(body.body_length_m), "dt": float(dt), "capabilities": body.capabilities,
             "segment_pitch_m": float(body.segment_pitch_m)}
+    if SEGMENTS in body.capabilities:  # (n_segments, 3) [m]: the rigid segments' boxes
+        info["segment_half_extents"] = np.array(body.segment_half_extents, dtype=float)
+    return info
 
 
 def controller_settings(ctrl) -> tuple[frozenset, bool, float]:

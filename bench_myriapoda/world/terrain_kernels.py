@@ -332,6 +332,12 @@ def _obstacle_normal(f, j, x, y, z):
 
 
 @njit(cache=True, error_model="numpy")
+def obstacle_normal(f, j, x, y, z):
+    """Unit outward normal of obstacle record j (the f-index ``obstacles_below`` returns) at p."""
+    return _obstacle_normal(f, j, x, y, z)
+
+
+@njit(cache=True, error_model="numpy")
 def obstacles_phi(f, x, y, z):
     """(phi, record index) of the nearest obstacle; (inf, -1) without obstacles."""
     return obstacles_below(f, x, y, z, np.inf)

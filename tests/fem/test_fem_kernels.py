@@ -167,6 +167,45 @@ def test_newton_rotation_matches_svd(warm):
         assert n_fallback < len(Fs) // 3
 
 
+def test_one_newton_step_is_accepted_exactly_when_the_error_it_leaves_is_below_newton_err():
+    # The element pass accepts a tet after one Newton step when twice the error it estimates is below
+    # NEWTON_ERR (``_newton_step_h``: the leading term -2 (h.H h) H^-1 h of the error left).  From the SVD's
+    # rotation turned by 1e-6 to 3e-3 rad (the step leaves 1e-19 to 1e-8 rad): every accepted step's
+    # rotation is within NEWTON_ERR of the SVD's, and every step that left less than NEWTON_ERR / 4 is
+    # accepted (the estimate is within a factor 2 of the error, not a loose bound that sends good steps
+    # to a second one), on stretched, sheared and near-rest F.
+    rng = np.random.default_rng(11)
+    n_acc = n_rej = 0
+    for i in range(400):
+        kind = i % 3
+        Q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        if kind == 0:
+            F = np.eye(3) + 1e-3 * rng.normal(size=(3, 3))
+        elif kind == 1:
+            F = Q @ np.diag(rng.uniform(0.5, 2.0, 3)) @ Q.T @ _rodrigues(rng.normal(size=3), 1.0)
+        else:
+            F = np.eye(3) + 0.2 * rng.normal(size=(3, 3))
+        Ur, sr, Vr = signed_svd_np(F)
+        if sr[1] + sr[2] < 0.3 * sr[0]:
+            continue
+        Rr = Ur @ Vr.T
+        theta = 10.0 ** rng.uniform(-6.0, np.log10(3e-3))
+        R0 = Rr @ _rodrigues(rng.normal(size=3), theta)
+        q = K._rot_to_quat(*R0.ravel())
+        nw, nx, ny, nz, _hh, ok, _hx, _hy, _hz, small = K._newton_step_h(*F.ravel(), *q)
+        assert ok
+        R1 = np.array(K._quat_to_rot(nw, nx, ny, nz)).reshape(3, 3)
+        E = R1.T @ Rr
+        err = 0.5 * np.linalg.norm([E[2, 1] - E[1, 2], E[0, 2] - E[2, 0], E[1, 0] - E[0, 1]])
+        if small:
+            n_acc += 1
+            assert err < K.NEWTON_ERR
+        else:
+            n_rej += 1
+            assert err >= 0.25 * K.NEWTON_ERR
+    assert n_acc > 100 and n_rej > 50
+
+
 def test_first_piola_cofactor_form_matches_eq8_and_is_finite_when_flat():
     rng = np.random.default_rng(2)
     mu, lam = 3.0, 7.0

@@ -52,13 +52,13 @@ N_FS = 23
 # int scalars (``ints``)
 (I_TERR_KIND, I_MIN_STANCE, I_WALK_MODE, I_RECORD_EVERY, I_COLLIDE, I_HAS_ANTENNAE, I_PRIORITY_LEFT,
  I_BRAIN, I_STEP, I_TRACKING_N, I_HEADING_ERR_N, I_LEG_STOPS, I_LEG_STUCK, I_CONTACT_EVENTS, I_TARGETS_DRAWN,
- I_RECORDED, I_RND_USED, I_ANT_RND_USED, I_ANT_DEFER, I_ANT_PENDING, I_TIP_PHI_OK) = range(21)
-N_INTS = 21
+ I_RECORDED, I_RND_USED, I_ANT_RND_USED, I_ANT_DEFER, I_ANT_PENDING, I_TIP_PHI_OK, I_WALL_PUSHES) = range(22)
+N_INTS = 22
 # I_ANT_DEFER = 1: on a terrain without obstacles the antennae's links (wave angles, frames, points beyond
 # the roots) are computed only once per chunk, by ``finish_chunk`` after its last step, for that step's time
 # F_ANT_T (``antennae.antennae_step``'s ``links``): within a chunk nothing reads them, so the state after the
 # chunk is the same doubles.  I_ANT_PENDING: a step left them to ``finish_chunk``.  I_TIP_PHI_OK: the tips'
-# signed distances in ``tip_phi`` (the last entry of ``A``) are those of the tips as they stand (measured at the
+# signed distances in ``tip_phi`` (``A``'s third entry from the end) are those of the tips as they stand (measured at the
 # end of the last step; the tips move only in the controller's step), so the next step's contact test reuses them.
 # positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
 A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 33
@@ -78,7 +78,7 @@ _STATE_FLOATS = _FLOATS[12:]   # written back after a chunk
 _INTS = (("terr_kind", I_TERR_KIND), ("min_stance", I_MIN_STANCE), ("walk_mode", I_WALK_MODE),
          ("record_every", I_RECORD_EVERY), ("collide", I_COLLIDE), ("brain", I_BRAIN), ("_step", I_STEP),
          ("tracking_n", I_TRACKING_N), ("heading_err_n", I_HEADING_ERR_N), ("leg_stops", I_LEG_STOPS),
-         ("leg_stuck", I_LEG_STUCK))
+         ("leg_stuck", I_LEG_STUCK), ("wall_pushes", I_WALL_PUSHES))
 _STATE_INTS = _INTS[5:]
 
 
@@ -147,7 +147,7 @@ class ControllerState:
         return (c.states, c.angles, c.tips, c._O, c._M, c.touching, c.airborne, c.ik_failed, c.entered, c.supported,
                 c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, c.brain_steps,
                 c.geom, c.sw_params, c.tg_params, c.terr, c.terr_walk, c.link_rest, c.height_target) \
-            + self._schedule + a + (self.tip_phi,)
+            + self._schedule + a + (self.tip_phi, c.terr_walls, c.seg_half)
 
     def draws(self, n_steps: int) -> None:
         """Pre-draw the doubles a chunk of ``n_steps`` steps may use (at most one random-walk turn and two
@@ -291,7 +291,7 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
      prev_angles, stopped, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
      height_target, sched_t, sched_speed, sched_rate, ant_params, ant_f, nominal, offsets, root_target,
      root_omega, retracting, contact, rising, contact_point, contact_normal, contact_depth, arrived, points,
-     frames, tip_phi) = A
+     frames, tip_phi, terr_walls, seg_half) = A
     dt = fs[F_DT]
     kind = ints[I_TERR_KIND]
     n_seg = c.shape[0]
@@ -410,6 +410,8 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     kinematic[0] = brain != ADJUSTMENT
     TG.targeter_step(c, R, kinematic, kind, terr_walk, tg_params, link_rest, height_target, speed, rate, turn_dir,
                      dt, c_T, R_T)
+    if terr_walls[TG.H_NOBST] > 0.0:  # no call (and no reference counts) on a terrain without walls
+        ints[I_WALL_PUSHES] += TG.keep_clear_of_walls(c_T, R_T, kinematic, terr_walls, seg_half)
     # 4. legs
     collide = ints[I_COLLIDE] != 0
     if collide:

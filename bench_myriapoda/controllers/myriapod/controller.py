@@ -74,6 +74,26 @@ def avoidance_turn(left: bool, right: bool, priority: str) -> float:
     return 0.0
 
 
+def _obstacles_by_height(sc, kind: int, f: np.ndarray, max_height_m: float) -> tuple[list, list]:
+    """f's obstacle records split into (those rising at most ``max_height_m`` above the base surface, the others)."""
+    low, tall = [], []
+    for r in TK.obstacle_records(f):
+        if r[0] == TK.OBST_CYLINDER:
+            top = r[5] - float(base_height(sc, kind, f, r[1], r[2]))
+        else:  # box: the highest corner above the base at its centre
+            top = r[2] + r[5] - float(base_height(sc, kind, f, r[1], r[3]))
+        (low if top <= max_height_m else tall).append(r)
+    return low, tall
+
+
+def _base_only(f: np.ndarray) -> np.ndarray:
+    """f's base surface without its obstacle block."""
+    base = np.array(f[:int(f[TK.H_OBST])])
+    base[TK.H_OBST] = 0.0
+    base[TK.H_NOBST] = 0.0
+    return base
+
+
 def walkable_terrain(sc, kind: int, f: np.ndarray, max_height_m: float) -> np.ndarray:
     """f without the obstacles that rise more than ``max_height_m`` above the base surface.
 
@@ -87,20 +107,21 @@ def walkable_terrain(sc, kind: int, f: np.ndarray, max_height_m: float) -> np.nd
     """
     if f[TK.H_NOBST] <= 0:
         return f
-    keep = []
-    for r in TK.obstacle_records(f):
-        if r[0] == TK.OBST_CYLINDER:
-            top = r[5] - float(base_height(sc, kind, f, r[1], r[2]))
-        else:  # box: the highest corner above the base at its centre
-            top = r[2] + r[5] - float(base_height(sc, kind, f, r[1], r[3]))
-        if top <= max_height_m:
-            keep.append(r)
+    keep, _ = _obstacles_by_height(sc, kind, f, max_height_m)
     if len(keep) == f[TK.H_NOBST]:
         return f
-    base = np.array(f[:int(f[TK.H_OBST])])
-    base[TK.H_OBST] = 0.0
-    base[TK.H_NOBST] = 0.0
+    base = _base_only(f)
     return TK.with_obstacles(base, keep) if keep else base
+
+
+def wall_terrain(sc, kind: int, f: np.ndarray, max_height_m: float) -> np.ndarray:
+    """A terrain array holding only f's walls: the obstacles ``walkable_terrain`` leaves out (none: no obstacle
+    block: f itself when it has no obstacles).  The Targeter keeps the carried segments' boxes out of them (``targeter.keep_clear_of_walls``)."""
+    if f[TK.H_NOBST] <= 0:
+        return f
+    _, tall = _obstacles_by_height(sc, kind, f, max_height_m)
+    base = _base_only(f)
+    return TK.with_obstacles(base, tall) if tall else base
 
 
 def standing_height(geom_row: np.ndarray, params: np.ndarray) -> float:
@@ -125,20 +146,22 @@ class MyriapodController:
     rate_hz = 0.0  # every time step, as the paper (Sec. 6)
 
     def __init__(self, case, n_segments: int | None = None, segment_pitch_m: float | None = None,
-                 record_every: int = 10):
+                 record_every: int = 10, segment_half_extents: np.ndarray | None = None):
         self.case = case
         self.record_every = record_every
         if n_segments is not None:
-            self._setup(case, n_segments, segment_pitch_m)
+            self._setup(case, n_segments, segment_pitch_m, segment_half_extents)
 
     def reset(self, case, body_info, rng=None) -> None:
-        """Build the legs for the body's segments (``body_info``: n_segments, segment_pitch_m).
+        """Build the legs for the body's segments (``body_info``: n_segments, segment_pitch_m, and the boxes'
+        segment_half_extents, which keep the carried segments out of walls; without them they are not kept out).
 
         The controller draws from its own generators seeded by ``case.seed`` (not ``rng``), so a
         run is the same whichever way it is started."""
-        self._setup(case, int(body_info["n_segments"]), float(body_info["segment_pitch_m"]))
+        self._setup(case, int(body_info["n_segments"]), float(body_info["segment_pitch_m"]),
+                    body_info.get("segment_half_extents"))
 
-    def _setup(self, case, n_segments: int, segment_pitch_m: float) -> None:
+    def _setup(self, case, n_segments: int, segment_pitch_m: float, segment_half_extents=None) -> None:
         record_every = self.record_every
         lg, ct, sc = case.legs, case.controller, case.scenario
         self.n_seg = n_segments
@@ -162,6 +185,11 @@ class MyriapodController:
         h = ct.target_height_m if ct.target_height_m >= 0 else standing_height(self.geom[1], self.sw_params)
         self.height_target = np.full(n_segments, h)
         self.terr_walk = walkable_terrain(sc, self.terr_kind, self.terr, h)  # what the Balancer stands on
+        # what the carried segments' boxes are kept out of (targeter.keep_clear_of_walls); no walls without the boxes
+        self.seg_half = (np.zeros((n_segments, 3)) if segment_half_extents is None
+                         else np.ascontiguousarray(segment_half_extents, dtype=float).reshape(n_segments, 3))
+        self.terr_walls = (wall_terrain(sc, self.terr_kind, self.terr, h) if segment_half_extents is not None
+                           else TK.header())
         self.link_rest = np.full(n_segments, segment_pitch_m)
         self.min_stance = ct.min_stance_legs
         self.majority = ct.adjustment_majority
@@ -233,6 +261,7 @@ class MyriapodController:
         self._stopped = np.zeros(self.n_legs, dtype=bool)
         self.leg_stops = 0              # swing moves cut at a surface, summed over legs and steps
         self.leg_stuck = 0              # leg-steps left inside with no way out (see stop_swinging_legs)
+        self.wall_pushes = 0            # carried segments moved out of a wall (targeter.keep_clear_of_walls)
         self.leg_penetration_max = 0.0  # deepest knee or tip inside the terrain over the run [m]
         # lateral body wave phase-locked to the leg wave (beyond the paper; see _apply_body_wave)
         self.wave_amp = ct.body_wave_amplitude
@@ -347,6 +376,7 @@ class MyriapodController:
         TG.targeter_step(c, self._without_body_wave(R), self.kinematic, self.terr_kind, self.terr_walk,
                          self.tg_params, self.link_rest, self.height_target, speed, rate, turn_dir, dt, self.c_T,
                          self.R_T)
+        self.wall_pushes += TG.keep_clear_of_walls(self.c_T, self.R_T, self.kinematic, self.terr_walls, self.seg_half)
         if self.wave_amp > 0.0:
             self._apply_body_wave(R)
         act.support_kinematic[:] = self.kinematic
@@ -454,9 +484,10 @@ class MyriapodController:
                                        LC.legs_penetration(self.terr_kind, self.terr, self._M, self.tips))
 
     def leg_metrics(self) -> dict[str, float]:
-        """``leg_penetration_max_m`` [m], ``leg_stops`` and ``leg_stuck`` (leg-steps) of the run so far."""
+        """``leg_penetration_max_m`` [m], ``leg_stops`` and ``leg_stuck`` (leg-steps), and ``wall_pushes``
+        (segment-steps a carried segment was moved out of a wall) of the run so far."""
         return {"leg_penetration_max_m": self.leg_penetration_max, "leg_stops": float(self.leg_stops),
-                "leg_stuck": float(self.leg_stuck)}
+                "leg_stuck": float(self.leg_stuck), "wall_pushes": float(self.wall_pushes)}
 
     def record_tracking(self, c: np.ndarray) -> None:
         """Accumulate the squared distance of supported segments from their targets after the body's step."""

@@ -44,6 +44,14 @@ OMEGA_BALANCE  [rad/s]      Balancer turn rate
 ALIGN_TOL      [rad]        an axis this close to its goal is not turned
 =============  ===========  ========================================
 
+Walls (``keep_clear_of_walls``).  A supported segment is carried by its legs and has no collision of its
+own, and the Targeter's Follower pulls it toward the segment ahead, cutting the head's turns toward their
+inside: past a tall obstacle (a wall the Balancer does not stand on, ``controller.walkable_terrain``) the
+cut can carry a box into it, which a rigid box integrated by the body would never enter (its corner
+contact holds it at the surface).  So after the poses are set, a carried segment whose box reaches into a
+wall is moved out of it along the wall's outward normal, the kinematic counterpart of that contact.  A
+segment clear of every wall is left exactly as it was.
+
 Per-segment arrays: ``link_rest`` (n_segments,) [m], rest length l0 of the link
 from segment i to segment i - 1 (entry 0 unused); ``height_target``
 (n_segments,) [m], target height h_T of the centre above the terrain.
@@ -56,7 +64,7 @@ import numpy as np
 from numba import njit
 
 from bench_myriapoda.controllers.myriapod.switcher import STANCE
-from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import H_NOBST, obstacle_normal, obstacles_below, signed_distance, surface_normal
 
 K1, K2, OMEGA_FOLLOW, OMEGA_BALANCE, ALIGN_TOL = 0, 1, 2, 3, 4
 N_TARGETER_PARAMS = 5
@@ -282,3 +290,50 @@ def segments_supported(states, min_stance_legs, out):
         if states[2 * i + 1] == STANCE:
             n += 1
         out[i] = n >= min_stance_legs
+
+
+# the points of a segment's box tested against the walls, in half extents: the 8 corners and the midpoints
+# of the 4 edges along the segment's length (x), so a wall thinner than the box's length is caught too
+WALL_PROBES = ((-1.0, -1.0, -1.0), (1.0, -1.0, -1.0), (-1.0, 1.0, -1.0), (1.0, 1.0, -1.0),
+               (-1.0, -1.0, 1.0), (1.0, -1.0, 1.0), (-1.0, 1.0, 1.0), (1.0, 1.0, 1.0),
+               (0.0, -1.0, -1.0), (0.0, 1.0, -1.0), (0.0, -1.0, 1.0), (0.0, 1.0, 1.0))
+WALL_PASSES = 4  # push-outs per segment and step: a box against two walls at once, or a corner after a push
+
+
+@njit(cache=True, error_model="numpy")
+def keep_clear_of_walls(c_T, R_T, kinematic, walls, half):
+    """Move every carried segment's target centre out of the walls (module docstring); return the pushes made.
+
+    c_T: (n_segments, 3) [m], R_T: (n_segments, 3, 3): the targets, c_T UPDATED in place (R_T read); kinematic:
+    (n_segments,) bool, the carried segments; walls: a terrain array holding only the wall obstacles (its
+    base surface is not used; ``controller.wall_terrain``); half: (n_segments, 3) [m] the boxes' half extents.
+    A pass finds the deepest of the box's ``WALL_PROBES`` inside a wall (signed distance phi < 0) and moves the
+    centre by -phi along that wall's outward normal there; up to ``WALL_PASSES`` passes, ending at the first
+    with no probe inside.  A segment with no probe inside is not touched (the same doubles as without walls).
+    """
+    if walls[H_NOBST] <= 0.0:
+        return 0
+    pushes = 0
+    for i in range(c_T.shape[0]):
+        if not kinematic[i]:
+            continue
+        for _ in range(WALL_PASSES):
+            deepest = 0.0
+            jw = -1
+            qx = qy = qz = 0.0
+            for sx, sy, sz in WALL_PROBES:
+                ax, ay, az = sx * half[i, 0], sy * half[i, 1], sz * half[i, 2]
+                px = c_T[i, 0] + R_T[i, 0, 0] * ax + R_T[i, 0, 1] * ay + R_T[i, 0, 2] * az
+                py = c_T[i, 1] + R_T[i, 1, 0] * ax + R_T[i, 1, 1] * ay + R_T[i, 1, 2] * az
+                pz = c_T[i, 2] + R_T[i, 2, 0] * ax + R_T[i, 2, 1] * ay + R_T[i, 2, 2] * az
+                phi, j = obstacles_below(walls, px, py, pz, deepest)
+                if j >= 0 and phi < deepest:
+                    deepest, jw, qx, qy, qz = phi, j, px, py, pz
+            if jw < 0:
+                break
+            nx, ny, nz = obstacle_normal(walls, jw, qx, qy, qz)
+            c_T[i, 0] -= deepest * nx
+            c_T[i, 1] -= deepest * ny
+            c_T[i, 2] -= deepest * nz
+            pushes += 1
+    return pushes
