@@ -202,9 +202,18 @@ class Creature:
         return getattr(self.body, name)
 
     def compile(self) -> None:
-        # the controller first: its kernels need only the terrain's, so on a cold start (issue 13) a matrix worker
-        # compiles them while another worker compiles the body kernels this case then waits for (compile_lock);
-        # both compiles leave the body's and the controller's state as they were, so the order changes no result
+        # A fused run (``Stepper.fused``) steps only through its chunk kernel, so only the chunk is compiled
+        # here: the Python path's top-level kernels that the chunk never calls, or only inlines (the body's
+        # ``sense`` and ``set_support`` kernels, the controller's Python-side checks), each cost their own
+        # compile, LLVM optimisation, machine code and cache entry on a cold start (issue 13, README
+        # Development notes).  The chunk's callees compile as it is typed, the controller's first (they need
+        # only the terrain's kernels, so on a cold start one matrix worker compiles them while another compiles
+        # the body's: compile_lock); per-sample kernels (``observe``, the monitor's) compile at their first call.
+        if self.stepper.fused is not None:
+            self.stepper.start()
+            return
+        # the controller first, for the reason above; both compiles leave the body's and the controller's state
+        # as they were, so the order changes no result
         if self.own_controller:
             compile_controller(self.body, self.controller, self.open_loop)
         self.body.compile()
