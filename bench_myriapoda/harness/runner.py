@@ -185,7 +185,8 @@ class Creature:
 
     ``advance(t0, n) -> (steps done, status)`` runs the controller and the body together
     (``Stepper``); ``scene()`` draws the legs too; every other attribute is the body's.
-    ``compile()`` compiles both and sets the actuation of t = 0.
+    ``compile()`` compiles both (a fused run: its chunk kernel, which holds both) and sets the actuation
+    of t = 0.
     """
 
     def __init__(self, case: Case, controller=None, fused: bool = True):
