@@ -204,12 +204,13 @@ class Creature:
 
     def compile(self) -> None:
         # A fused run (``Stepper.fused``) steps only through its chunk kernel, so only the chunk is compiled
-        # here: the Python path's top-level kernels that the chunk never calls, or only inlines (the body's
-        # ``sense`` and ``set_support`` kernels, the controller's Python-side checks), each cost their own
-        # compile, LLVM optimisation, machine code and cache entry on a cold start (issue 13, README
-        # Development notes).  The chunk's callees compile as it is typed, the controller's first (they need
-        # only the terrain's kernels, so on a cold start one matrix worker compiles them while another compiles
-        # the body's: compile_lock); per-sample kernels (``observe``, the monitor's) compile at their first call.
+        # here: the kernels it shares with the Python path are compiled once either way, but those only the
+        # Python path calls (the controller's Python-side checks: ``legs_penetration``, ``stance_knees_inside``,
+        # its stance IK) each cost their own compile, LLVM optimisation, machine code and cache entry on a
+        # cold start (issue 13, README Development notes).  The chunk's callees compile as it is typed, the
+        # controller's first (they need only the terrain's kernels, so on a cold start one matrix worker compiles
+        # them while another compiles the body's: compile_lock); per-sample kernels (``observe``, the monitor's)
+        # compile at their first call.
         if self.stepper.fused is not None:
             self.stepper.start()
             return
