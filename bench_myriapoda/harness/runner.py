@@ -185,7 +185,8 @@ class Creature:
 
     ``advance(t0, n) -> (steps done, status)`` runs the controller and the body together
     (``Stepper``); ``scene()`` draws the legs too; every other attribute is the body's.
-    ``compile()`` compiles both and sets the actuation of t = 0.
+    ``compile()`` compiles both (a fused run: its chunk kernel, which holds both) and sets the actuation
+    of t = 0.
     """
 
     def __init__(self, case: Case, controller=None, fused: bool = True):
@@ -202,9 +203,19 @@ class Creature:
         return getattr(self.body, name)
 
     def compile(self) -> None:
-        # the controller first: its kernels need only the terrain's, so on a cold start (issue 13) a matrix worker
-        # compiles them while another worker compiles the body kernels this case then waits for (compile_lock);
-        # both compiles leave the body's and the controller's state as they were, so the order changes no result
+        # A fused run (``Stepper.fused``) steps only through its chunk kernel, so only the chunk is compiled
+        # here: the kernels it shares with the Python path are compiled once either way, but those only the
+        # Python path calls (the controller's Python-side checks: ``legs_penetration``, ``stance_knees_inside``,
+        # its stance IK) each cost their own compile, LLVM optimisation, machine code and cache entry on a
+        # cold start (issue 13, README Development notes).  The chunk's callees compile as it is typed, the
+        # controller's first (they need only the terrain's kernels, so on a cold start one matrix worker compiles
+        # them while another compiles the body's: compile_lock); per-sample kernels (``observe``, the monitor's)
+        # compile at their first call.
+        if self.stepper.fused is not None:
+            self.stepper.start()
+            return
+        # the controller first, for the reason above; both compiles leave the body's and the controller's state
+        # as they were, so the order changes no result
         if self.own_controller:
             compile_controller(self.body, self.controller, self.open_loop)
         self.body.compile()
