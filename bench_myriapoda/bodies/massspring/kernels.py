@@ -888,10 +888,21 @@ def spine_rows(xc, n_faces, wf, osx, wl):
 
 
 @njit(cache=True, error_model="numpy")
-def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_kind, terr, phys, acc):
+def _flat_ground(terr_kind, terr):
+    """The constants of a plane or slope without obstacles that ``_node_rows`` uses: (plane, h, ms, cs, nx, ny,
+    nz), ``_flat_phi``'s plane flag, height [m], -sin and cos of the slope angle, and the unit surface normal
+    (``surface_normal``: the same for every point; the caller checks that there are no obstacles)."""
+    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)
+    return terr_kind == PLANE, terr[0], -math.sin(terr[1]), math.cos(terr[1]), nx, ny, nz
+
+
+@njit(cache=True, error_model="numpy")
+def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground, phys, acc):
     """``_nodes_coulomb_flat`` on flat arrays: xf, vf (axis stride xd), ff (axis stride fd), im (4 stride,),
     wf the work array taken flat (row length wl; the spine vectors of the faces already in rows B_SX, B_SY,
-    B_SZ), cd (4 stride,) int64.  Returns (nodes within the contact distance, status)."""
+    B_SZ), cd (4 stride,) int64; ground: ``_flat_ground``'s constants of the plane or slope, computed once per
+    ``advance`` call (a sine, a cosine and the normal's call per step were a fixed cost of the step).
+    Returns (nodes within the contact distance, status)."""
     n_flat = 4 * stride
     g = phys[GRAVITY]
     dt = phys[DT]
@@ -901,11 +912,7 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_k
     contact_dist = fric[CONTACT_DISTANCE]
     max_pen = phys[MAX_PEN]
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
-    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)  # one normal: no obstacles (caller checks)
-    plane = terr_kind == PLANE
-    h = terr[0]
-    ms = -math.sin(terr[1])
-    cs = math.cos(terr[1])
+    plane, h, ms, cs, nx, ny, nz = ground
     xd2, fd2 = xd + xd, fd + fd
     ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl
     ojn, open_ = np.uint64(B_JN) * wl, np.uint64(W_PEN) * wl
@@ -992,7 +999,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     return _node_rows(xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size), imc.reshape(imc.size),
                       work.reshape(work.size), code.reshape(code.size), n_faces, stride,
                       np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl),
-                      fric, terr_kind, terr, phys, acc)
+                      fric, _flat_ground(terr_kind, terr), phys, acc)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1040,6 +1047,8 @@ def advance(x, v, inv_mass, fparams, act_buf,
     xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
     xd, fd, wlu = np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl)
     osx = np.uint64(B_SX) * wlu
+    # per call, not per step: the terrain does not change within one (only the batched pass uses it)
+    ground = _flat_ground(terr_kind, terr) if batched else (False, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0)
     pf = fparams.reshape(fparams.size)
     for step in range(n_steps):
         _column_forces_flat(act_buf, min(step, n_rows - 1), volume, xf, vf, xd, stride, pf, face_scale, st, fs, ff)
@@ -1065,8 +1074,8 @@ def advance(x, v, inv_mass, fparams, act_buf,
                         seg_held[i] = True
         if batched:
             spine_rows(xc, n_faces, work, osx, wlu)
-            n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, terr_kind,
-                                           terr, phys, acc)
+            n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, ground,
+                                           phys, acc)
         else:
             n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
                                                terr_kind, terr, phys, acc)
