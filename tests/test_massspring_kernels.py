@@ -313,14 +313,10 @@ def test_family_spring_forces_bitwise_equal_numpys_three_pass_order(segments):
     assert np.array_equal(fc, ref)
 
 
-@pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 200])
-@pytest.mark.parametrize("state", ["random", "collapsed"])
-def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
-    """The step's spring groups (one loop per group over padded corner rows, then each node's ordered
-    sum) give every node the bits of ``family_rest_lengths`` + ``family_spring_forces`` run family by
-    family on unpadded rows, signed zeros included: random states with zero-length springs, and a
-    lattice collapsed to one point (every spring pulls nothing: every force must be +0.0)."""
-    from bench_myriapoda.bodies.massspring.lattice import face_stride
+def _family_reference(segments, state):
+    """A snake body of ``segments`` segments, a state (x, v) and muscle strains act, and the reference spring
+    forces fu (3, 4, n_faces): the per-family kernels on rows of exactly n_faces columns.  ``random``: random
+    positions with zero-length axial springs; ``collapsed``: every node at one point (every force +0.0)."""
     case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
     body = BodyMassSpring(case)
     r = np.random.default_rng(100 + segments)
@@ -333,9 +329,7 @@ def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
         x = np.zeros_like(body.x) + 0.25
         v = np.zeros_like(body.x)
     act = r.normal(scale=0.1, size=(segments, 3))
-    fam, grp = body.families, body.groups
-    assert grp.stride == face_stride(n_faces) and grp.stride >= n_faces + 1 and grp.stride % 8 == 0
-    # the reference: the per-family kernels on rows of exactly n_faces columns
+    fam = body.families
     xu, vu, fu = (np.zeros((3, 4, n_faces)) for _ in range(3))
     K._corner_major(x, xu)
     K._corner_major(v, vu)
@@ -343,6 +337,21 @@ def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
     rest = np.zeros((fam.index.shape[0], n_faces))
     K.family_rest_lengths(act, True, fam.index, params, np.ones((4, segments)), np.ones(n_faces), rest)
     K.family_spring_forces(xu, vu, fam.index, params, rest, np.zeros((3, n_faces)), fu)
+    return body, x, v, act, fu
+
+
+@pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 200])
+@pytest.mark.parametrize("state", ["random", "collapsed"])
+def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
+    """The step's spring groups (one loop per group over padded corner rows, then each node's ordered
+    sum) give every node the bits of ``family_rest_lengths`` + ``family_spring_forces`` run family by
+    family on unpadded rows, signed zeros included: random states with zero-length springs, and a
+    lattice collapsed to one point (every spring pulls nothing: every force must be +0.0)."""
+    from bench_myriapoda.bodies.massspring.lattice import face_stride
+    body, x, v, act, fu = _family_reference(segments, state)
+    n_faces = segments + 1
+    grp = body.groups
+    assert grp.stride == face_stride(n_faces) and grp.stride >= n_faces + 1 and grp.stride % 8 == 0
     xc, vc, fc = body._xc, body._vc, body._fc
     K._corner_major(x, xc)
     K._corner_major(v, vc)
@@ -357,6 +366,52 @@ def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
     K.group_spring_forces(act, True, xc, vc, grp.index, grp.params, grp.plan, body._face_scale, body._st, body._fs,
                           body._gf, fc)
     assert np.array_equal(np.ascontiguousarray(fc[:, :, :n_faces]).view(np.int64), fu.view(np.int64))
+
+
+# 63 and 64 segments: the last face's springs at the last column of the first chunk of 64 faces, and at the
+# first of the second; 200: four chunks
+@pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 62, 63, 64, 127, 128, 200])
+@pytest.mark.parametrize("state", ["random", "collapsed"])
+def test_column_spring_forces_bitwise_equal_the_family_kernels(segments, state):
+    """The step's column loops (all 18 families of a face in one loop, then all 12 sums of a face, chunk by
+    chunk of ``K.CHUNK_FACES`` faces) give every node the bits of the per-family kernels, signed zeros
+    included; a second call from the state the first left gives the same (no scratch carried over)."""
+    body, x, v, act, fu = _family_reference(segments, state)
+    n_faces = segments + 1
+    xc, vc, fc = body._xc, body._vc, body._fc
+    K._corner_major(x, xc)
+    K._corner_major(v, vc)
+    for _ in range(2):
+        fc[:] = np.nan  # every real column is overwritten
+        K.column_spring_forces(act, True, xc, vc, body.families.params, body._face_scale, body._st, body._fs, fc)
+        got = np.ascontiguousarray(fc[:, :, :n_faces])
+        assert np.array_equal(got.view(np.int64), fu.view(np.int64))
+    if state == "collapsed":
+        assert np.all(got.view(np.int64) == 0)  # +0.0, not -0.0
+
+
+def test_cube_lattice_constants():
+    """The kernels' compile-time tables are those of the lattice code: ``CUBE_FAMILIES`` is ``spring_families``'
+    index of every length, ``CUBE_PLAN`` the families' summation order (``cube_plan``), term for term the
+    plan of ``spring_groups`` (group and read-back offset mapped to family and shift), and the shifted
+    families the kernel fixes up are the families with shift 1."""
+    from bench_myriapoda.bodies.massspring.lattice import (CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_KIND,
+                                                           FAM_SHIFT, PLAN_BACK, PLAN_GROUP, PLAN_SIGN, cube_plan,
+                                                           spring_families, spring_groups)
+    for n_seg in (1, 5, 64):
+        lat = build_lattice(n_seg, 0.1, 0.05, 0.04)
+        fam = spring_families(lat, np.ones(lat.n_springs), np.zeros(lat.n_springs))
+        assert tuple(tuple(int(c) for c in row) for row in fam.index) == CUBE_FAMILIES
+        grp = spring_groups(fam, n_seg + 1)
+        for c in range(4):
+            for k, (q, sign, shift) in enumerate(CUBE_PLAN[c]):
+                g, gsign, back = grp.plan[c, k, PLAN_GROUP], grp.plan[c, k, PLAN_SIGN], grp.plan[c, k, PLAN_BACK]
+                row = fam.index[q]
+                assert gsign == sign and c == (row[FAM_A] if sign < 0 else row[FAM_B])
+                assert tuple(grp.index[g, :3]) == (row[FAM_SHIFT], row[FAM_B] - row[FAM_A], row[FAM_KIND])
+                assert back == (0 if sign < 0 else (row[FAM_B] - row[FAM_A]) * grp.stride + shift)
+    assert cube_plan() == CUBE_PLAN
+    assert list(K.SHIFTED_FAMILIES) == [q for q, row in enumerate(CUBE_FAMILIES) if row[FAM_SHIFT] == 1]
 
 
 def test_spring_groups_of_a_cube_lattice():

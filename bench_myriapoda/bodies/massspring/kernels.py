@@ -26,15 +26,22 @@ in a corner-major layout (3, 4, stride) (positions and velocities with a fifth, 
 = ``lattice.face_stride``: the faces and at least one padding column, a multiple of 8), copied in at
 the start of the call and back at its end or on a blow-up.  A spring family (``lattice.spring_families``:
 all springs joining corner a of face t to corner b of face t + shift) then joins flat index i of a
-row to i + (b - a) stride + shift, and families with the same offset and kind run as one loop over
-whole rows (``lattice.spring_groups``, ``group_spring_forces``): 8 loops per step that vectorise
-(sqrt and divisions in SIMD lanes) also on short bodies; indexed gathers of the (n_nodes, 3) state
-cost more than the arithmetic.  Each node then sums its spring forces in the order of the
-per-family reference kernels ``family_rest_lengths`` and ``family_spring_forces`` (bitwise the same
-forces).  Per spring the arithmetic is that of ``spring_forces``; only the order in which a node's
-spring forces are summed differs (by family, not by spring index), so results agree to round-off
-(~1e-16 relative), not bitwise.  ``spring_forces`` and ``lattice_rest_lengths`` stay the per-spring
-references (and serve the energy and the legged chain).
+row to i + (b - a) stride + shift.  The cube lattice has the same 18 families for every length
+(``lattice.CUBE_FAMILIES``), so the step (``_column_forces_flat``) takes the family table and each
+corner's summation order (``lattice.CUBE_PLAN``) as compile-time constants and runs two loops over the
+faces: one computes the rest length and force of all 18 families' springs of a face, one forms the 12
+force sums (4 corners x 3 axes) of a face.  Both vectorise across faces (sqrt and divisions in SIMD
+lanes, 8 faces per 512-bit vector; the divider bounds the first at about 45 ns per segment), and they
+replace the 8 spring-group loops and 12 sum loops of the previous layout (``lattice.spring_groups``,
+``group_spring_forces``, kept as a tested reference), whose loop starts made most of the fixed cost per
+step (about 50 ns each).  The forces pass through a stack buffer (``_chunk_buffer``, chunks of
+``CHUNK_FACES`` faces), so that LLVM needs no run-time alias checks between the 54 force rows and the
+arrays the loop reads: with the forces in an argument array it stayed scalar ("too many memory checks").
+Each node sums its spring forces in the order of the per-family reference kernels ``family_rest_lengths``
+and ``family_spring_forces`` (bitwise the same forces).  Per spring the arithmetic is that of
+``spring_forces``; only the order in which a node's spring forces are summed differs (by family, not by
+spring index), so results agree to round-off (~1e-16 relative), not bitwise.  ``spring_forces`` and
+``lattice_rest_lengths`` stay the per-spring references (and serve the energy and the legged chain).
 
 The node block (steps 4-7) is ``_nodes_general``, node by node.  Under anisotropic Coulomb friction
 on a plane or slope without obstacles (Miller's snake) ``_nodes_coulomb_flat`` (``_node_rows`` in the step
@@ -51,15 +58,19 @@ import math
 
 import numpy as np
 
-from numba import njit
+from llvmlite import ir as llvm_ir
+from numba import njit, types
+from numba.extending import intrinsic
+from numba.np.numpy_support import carray
 
 from ...world.terrain_kernels import H_NOBST, PLANE, SLOPE, signed_distance, surface_normal
 from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
-from .lattice import (AXIAL, CROSS, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT, GRP_DROW, GRP_HI, GRP_KIND,
-                      GRP_LO, GRP_SHIFT, PAR_D, PAR_K, PAR_L0, PAR_LC, PLAN_BACK, PLAN_GROUP, PLAN_SIGN, SIDE_FACES)
+from .lattice import (AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT,
+                      GRP_DROW, GRP_HI, GRP_KIND, GRP_LO, GRP_SHIFT, PAR_D, PAR_K, PAR_L0, PAR_LC, PLAN_BACK, PLAN_GROUP,
+                      PLAN_SIGN, SIDE_FACES)
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
@@ -334,6 +345,7 @@ def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
 def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc):
     """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
     ``family_spring_forces`` (fc zeroed first) in ``lattice.SpringGroups`` loops, bitwise the same forces.
+    The step's previous layout (``advance`` runs ``column_spring_forces`` since), kept as a tested reference.
 
     act (n_seg, 3): the step's muscle strains; xc, vc (3, 5, stride) corner-major positions [m] and
     velocities [m/s] (stride = ``SpringGroups.stride``: node (c, t) at flat index c * stride + t of an
@@ -370,30 +382,8 @@ def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp
     fcf the (3, 4, stride) forces taken flat.  The step's muscle strains are row ``row`` of act_buf
     (n_rows, n_seg, 3), read in place.  The fibre stretches and face scales (``fibre_stretch``,
     ``face_scales``: the same operations) are computed in one loop over the faces."""
-    n_seg = act_buf.shape[1]
-    n_faces = n_seg + 1
-    for t in range(n_faces):
-        if volume_conserving:  # face_scales: Miller Sec. 4
-            tot = 0.0
-            cnt = 0
-            if t > 0:
-                tot += max(1.0 + act_buf[row, t - 1, 0], MIN_STRETCH)
-                cnt += 1
-            if t < n_seg:
-                tot += max(1.0 + act_buf[row, t, 0], MIN_STRETCH)
-                cnt += 1
-            scale = 1.0 / math.sqrt(tot / cnt)
-        else:
-            scale = 1.0
-        face_scale[t] = scale
-        for c in range(4):
-            fs[c * stride + t] = scale
-        if t < n_seg:  # fibre_stretch of the four corners' fibres of segment t
-            a0, a1, a2 = act_buf[row, t, 0], act_buf[row, t, 1], act_buf[row, t, 2]
-            st[t] = max(1.0 + a0 + a1 * -1.0 + a2 * -1.0, MIN_STRETCH)
-            st[stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * -1.0, MIN_STRETCH)
-            st[2 * stride + t] = max(1.0 + a0 + a1 * -1.0 + a2 * 1.0, MIN_STRETCH)
-            st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
+    n_faces = act_buf.shape[1] + 1
+    _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, 4)
     n_groups = grp.shape[0]
     one = np.uint64(1)
     for g in range(n_groups):
@@ -465,6 +455,211 @@ def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp
                 fcf[out + u] = a + s8 * gff[r8 + u]
 
 
+
+N_FAMILIES = len(CUBE_FAMILIES)  # 18
+# Faces per chunk of the column loops (``_column_forces_flat``): the families' forces of one chunk live in a
+# stack buffer of N_FAMILIES * 3 rows of CHUNK_ROW doubles (28 kB), column 0 holding the springs of the face
+# before the chunk.
+CHUNK_FACES = 64
+CHUNK_ROW = CHUNK_FACES + 1
+CHUNK_ROWS = 3 * N_FAMILIES
+# the families with shift 1 (12 of 18); an array, which numba reads as a constant (a tuple iterated at run time
+# compiles to a switch)
+SHIFTED_FAMILIES = np.array([q for q, fam in enumerate(CUBE_FAMILIES) if fam[FAM_SHIFT]], dtype=np.int64)
+
+
+@intrinsic
+def _chunk_buffer(typingctx):
+    """A pointer to CHUNK_ROWS * CHUNK_ROW float64 on the stack (a fixed-size alloca in the function's entry
+    block, 64-byte aligned; its contents undefined: the caller writes before it reads).
+
+    Why the stack: LLVM then knows that the column loop's stores cannot alias any array it reads (positions,
+    velocities, params, stretches), and its rows lie a compile-time distance apart, so the loop of all 18
+    families vectorises without run-time alias checks; with the forces in an argument array it needed some
+    1,500 checks and stayed scalar ("too many memory checks needed")."""
+    sig = types.CPointer(types.float64)()
+
+    def codegen(context, builder, signature, args):
+        # in the entry block, as numba's cgutils.alloca_once, but without its zero fill (a 28 kB memset per call)
+        with builder.goto_entry_block():
+            buf = builder.alloca(llvm_ir.ArrayType(llvm_ir.DoubleType(), CHUNK_ROWS * CHUNK_ROW))
+        buf.align = 64
+        return builder.gep(buf, [llvm_ir.Constant(llvm_ir.IntType(32), 0), llvm_ir.Constant(llvm_ir.IntType(32), 0)])
+
+    return sig, codegen
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, copies):
+    """The fibre stretches and face scales of the step's muscle strains (row ``row`` of act_buf (n_rows, n_seg, 3),
+    read in place): ``fibre_stretch`` and ``face_scales``' operations in one loop over the faces.  Writes
+    face_scale[t] (n_faces,), st[c * stride + t] (corner c's fibre of segment t) and ``copies`` copies of the
+    face scale, fs[c * stride + t] for c < copies."""
+    n_seg = act_buf.shape[1]
+    n_faces = n_seg + 1
+    for t in range(n_faces):
+        if volume_conserving:  # face_scales: Miller Sec. 4
+            tot = 0.0
+            cnt = 0
+            if t > 0:
+                tot += max(1.0 + act_buf[row, t - 1, 0], MIN_STRETCH)
+                cnt += 1
+            if t < n_seg:
+                tot += max(1.0 + act_buf[row, t, 0], MIN_STRETCH)
+                cnt += 1
+            scale = 1.0 / math.sqrt(tot / cnt)
+        else:
+            scale = 1.0
+        face_scale[t] = scale
+        for c in range(copies):
+            fs[c * stride + t] = scale
+        if t < n_seg:  # fibre_stretch of the four corners' fibres of segment t
+            a0, a1, a2 = act_buf[row, t, 0], act_buf[row, t, 1], act_buf[row, t, 2]
+            st[t] = max(1.0 + a0 + a1 * -1.0 + a2 * -1.0, MIN_STRETCH)
+            st[stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * -1.0, MIN_STRETCH)
+            st[2 * stride + t] = max(1.0 + a0 + a1 * -1.0 + a2 * 1.0, MIN_STRETCH)
+            st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, q, fam):
+    """Spring u [face] of cube family q: its rest length [m] (``family_rest_lengths``' operations for the
+    family's kind) and its force f u [N] (``_group_spring``), written to gq[(3 q + e) CHUNK_ROW + 1 + w] for
+    the axes e (w: the face's column in the chunk buffer gq).  fam = ``lattice.CUBE_FAMILIES[q]``: q and fam
+    are compile-time constants at every call; the row is passed rather than indexed here because numba
+    indexes a tuple with an argument through a helper call, and in a process that had loaded other cached
+    kernels first that call was still in the loop when LLVM's vectoriser ran (the loop stayed scalar).
+    Springs past the family's last face get what their zero params give (the caller overwrites the one a
+    real node reads).  pf: ``SpringFamilies.params`` (4, 18, stride) taken flat (ps = stride, uint64);
+    st, fs: the fibre stretches by corner row and the face scales (row 0 of fs, read at u + 1 too)."""
+    a, b, s, kind, ca, cb = fam
+    uq = np.uint64(q)
+    k = pf[(np.uint64(PAR_K * N_FAMILIES) + uq) * ps + u]
+    d = pf[(np.uint64(PAR_D * N_FAMILIES) + uq) * ps + u]
+    if kind == AXIAL:
+        rest = pf[(np.uint64(PAR_L0 * N_FAMILIES) + uq) * ps + u] * st[np.uint64(ca) * ps + u]
+    elif kind == CROSS:
+        rest = pf[(np.uint64(PAR_LC * N_FAMILIES) + uq) * ps + u] * fs[u]
+    else:
+        axial = pf[(np.uint64(PAR_L0 * N_FAMILIES) + uq) * ps + u] * 0.5 * (st[np.uint64(ca) * ps + u]
+                                                                          + st[np.uint64(cb) * ps + u])
+        cross = pf[(np.uint64(PAR_LC * N_FAMILIES) + uq) * ps + u] * 0.5 * (fs[u] + fs[u + np.uint64(1)])
+        rest = math.sqrt(axial * axial + cross * cross)
+    gx, gy, gz = _group_spring(xf, vf, dim, np.uint64(a) * ps + u, np.uint64(b) * ps + np.uint64(s) + u, k, d, rest)
+    o = np.uint64(3 * q * CHUNK_ROW + 1) + w
+    gq[o] = gx
+    gq[o + np.uint64(CHUNK_ROW)] = gy
+    gq[o + np.uint64(2 * CHUNK_ROW)] = gz
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _node_sum(gq, e, w, plan):
+    """Axis e of the spring force [N] on the node of corner c at column w of the chunk buffer gq: the 9 terms
+    of plan = ``lattice.CUBE_PLAN[c]`` (compile-time constants, passed as for ``_family_spring``) in their
+    order, starting from 0.0 (x + (-1.0 * y) == x - y exactly: ``family_spring_forces``' sum, term by
+    term).  A b end reads its spring one column back (column 0: the face before the chunk; -0.0 before
+    face 0, an exact no-op)."""
+    (q0, s0, b0), (q1, s1, b1), (q2, s2, b2), (q3, s3, b3), (q4, s4, b4), (q5, s5, b5), (q6, s6, b6), \
+        (q7, s7, b7), (q8, s8, b8) = plan
+    a = 0.0 + float(s0) * gq[np.uint64((3 * q0 + e) * CHUNK_ROW + 1 - b0) + w]
+    a = a + float(s1) * gq[np.uint64((3 * q1 + e) * CHUNK_ROW + 1 - b1) + w]
+    a = a + float(s2) * gq[np.uint64((3 * q2 + e) * CHUNK_ROW + 1 - b2) + w]
+    a = a + float(s3) * gq[np.uint64((3 * q3 + e) * CHUNK_ROW + 1 - b3) + w]
+    a = a + float(s4) * gq[np.uint64((3 * q4 + e) * CHUNK_ROW + 1 - b4) + w]
+    a = a + float(s5) * gq[np.uint64((3 * q5 + e) * CHUNK_ROW + 1 - b5) + w]
+    a = a + float(s6) * gq[np.uint64((3 * q6 + e) * CHUNK_ROW + 1 - b6) + w]
+    a = a + float(s7) * gq[np.uint64((3 * q7 + e) * CHUNK_ROW + 1 - b7) + w]
+    return a + float(s8) * gq[np.uint64((3 * q8 + e) * CHUNK_ROW + 1 - b8) + w]
+
+
+@njit(cache=True, error_model="numpy")
+def column_spring_forces(act, volume_conserving, xc, vc, fparams, face_scale, st, fs, fc):
+    """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
+    ``family_spring_forces`` (fc zeroed first) in two loops over the faces, bitwise the same forces.
+
+    act (n_seg, 3): the step's muscle strains; xc, vc (3, 5, stride) corner-major positions [m] and
+    velocities [m/s] (stride = ``lattice.face_stride``; row 4 is padding, read by the last springs);
+    fparams: ``SpringFamilies.params`` (4, 18, stride) of a cube lattice (``lattice.CUBE_FAMILIES``).
+    Scratch: face_scale (n_faces,); st, fs (4 stride,).  See ``_column_forces_flat``.
+    """
+    stride = xc.shape[2]
+    act_buf = act.reshape((1, act.shape[0], act.shape[1]))
+    _column_forces_flat(act_buf, np.int64(0), volume_conserving, xc.reshape(xc.size), vc.reshape(vc.size),
+                        np.uint64(xc.shape[1] * stride), stride, fparams.reshape(fparams.size), face_scale, st, fs,
+                        fc.reshape(fc.size))
+
+
+@njit(cache=True, error_model="numpy")
+def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf, face_scale, st, fs, fcf):
+    """``column_spring_forces`` on flat arrays made once per ``advance`` call: xf, vf the (3, 5, stride)
+    positions and velocities (axis stride ``dim``, uint64), pf the families' params, fcf the (3, 4, stride)
+    forces; the step's muscle strains are row ``row`` of act_buf (n_rows, n_seg, 3), read in place.
+
+    Why this layout: the cube lattice's family table is the same for every length (``lattice.CUBE_FAMILIES``,
+    compile-time constants here), so one loop over the faces computes all 18 families' springs of a face
+    (pass 1) and one loop forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
+    both vectorised across faces (8 faces per 512-bit vector), chunk by chunk of CHUNK_FACES faces (one chunk
+    up to 63 segments).  The spring groups (``group_spring_forces``) ran 8 spring loops and 12 sum loops per
+    step, each start (set-up, run-time alias checks, the first iterations' latency) about 50 ns.  Pass 1
+    writes the forces to a stack buffer (``_chunk_buffer``): family q's axis e in row 3 q + e, face t0 + j of
+    the chunk starting at face t0 in column 1 + j, column 0 the face before the chunk (-0.0 before face 0),
+    carried over from the last chunk's last column.  The arithmetic per spring and the order of each node's
+    sum are those of the families (module docstring), so the forces are the same bits; a spring that does
+    not exist is an exact no-op, +0.0 where subtracted and -0.0 where added."""
+    n_faces = act_buf.shape[1] + 1
+    _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, 1)
+    gq = carray(_chunk_buffer(), (CHUNK_ROWS * CHUNK_ROW,))
+    for r in range(CHUNK_ROWS):
+        gq[r * CHUNK_ROW] = -0.0
+    ps = np.uint64(stride)
+    for t0 in range(0, stride, CHUNK_FACES):
+        if t0 > 0:  # the b ends on face t0 read the springs of face t0 - 1, the last chunk's last column
+            for r in range(CHUNK_ROWS):
+                gq[r * CHUNK_ROW] = gq[r * CHUNK_ROW + CHUNK_FACES]
+        t1 = min(t0 + CHUNK_FACES, stride)  # range(t0, t1): with t0 + range(m) LLVM left pass 1 scalar
+        for t in range(t0, t1):
+            u = np.uint64(t)
+            w = np.uint64(t - t0)
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 0, CUBE_FAMILIES[0])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 1, CUBE_FAMILIES[1])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 2, CUBE_FAMILIES[2])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 3, CUBE_FAMILIES[3])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 4, CUBE_FAMILIES[4])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 5, CUBE_FAMILIES[5])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 6, CUBE_FAMILIES[6])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 7, CUBE_FAMILIES[7])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 8, CUBE_FAMILIES[8])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 9, CUBE_FAMILIES[9])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 10, CUBE_FAMILIES[10])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 11, CUBE_FAMILIES[11])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 12, CUBE_FAMILIES[12])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 13, CUBE_FAMILIES[13])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 14, CUBE_FAMILIES[14])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 15, CUBE_FAMILIES[15])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 16, CUBE_FAMILIES[16])
+            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 17, CUBE_FAMILIES[17])
+        if t0 <= n_faces - 1 < t1:  # the shifted families have no spring on the last face: its a ends subtract +0.0
+            last = (n_faces - 1 - t0) + 1
+            for i in range(SHIFTED_FAMILIES.shape[0]):
+                q = SHIFTED_FAMILIES[i]
+                gq[3 * q * CHUNK_ROW + last] = 0.0
+                gq[(3 * q + 1) * CHUNK_ROW + last] = 0.0
+                gq[(3 * q + 2) * CHUNK_ROW + last] = 0.0
+        for t in range(t0, t1):
+            u = np.uint64(t)
+            w = np.uint64(t - t0)
+            fcf[u] = _node_sum(gq, 0, w, CUBE_PLAN[0])
+            fcf[ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[1])
+            fcf[np.uint64(2) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[2])
+            fcf[np.uint64(3) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[3])
+            fcf[np.uint64(4) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[0])
+            fcf[np.uint64(5) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[1])
+            fcf[np.uint64(6) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[2])
+            fcf[np.uint64(7) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[3])
+            fcf[np.uint64(8) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[0])
+            fcf[np.uint64(9) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[1])
+            fcf[np.uint64(10) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[2])
+            fcf[np.uint64(11) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[3])
 
 
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
@@ -693,10 +888,21 @@ def spine_rows(xc, n_faces, wf, osx, wl):
 
 
 @njit(cache=True, error_model="numpy")
-def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_kind, terr, phys, acc):
+def _flat_ground(terr_kind, terr):
+    """The constants of a plane or slope without obstacles that ``_node_rows`` uses: (plane, h, ms, cs, nx, ny,
+    nz), ``_flat_phi``'s plane flag, height [m], -sin and cos of the slope angle, and the unit surface normal
+    (``surface_normal``: the same for every point; the caller checks that there are no obstacles)."""
+    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)
+    return terr_kind == PLANE, terr[0], -math.sin(terr[1]), math.cos(terr[1]), nx, ny, nz
+
+
+@njit(cache=True, error_model="numpy")
+def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground, phys, acc):
     """``_nodes_coulomb_flat`` on flat arrays: xf, vf (axis stride xd), ff (axis stride fd), im (4 stride,),
     wf the work array taken flat (row length wl; the spine vectors of the faces already in rows B_SX, B_SY,
-    B_SZ), cd (4 stride,) int64.  Returns (nodes within the contact distance, status)."""
+    B_SZ), cd (4 stride,) int64; ground: ``_flat_ground``'s constants of the plane or slope, computed once per
+    ``advance`` call (a sine, a cosine and the normal's call per step were a fixed cost of the step).
+    Returns (nodes within the contact distance, status)."""
     n_flat = 4 * stride
     g = phys[GRAVITY]
     dt = phys[DT]
@@ -706,11 +912,7 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, terr_k
     contact_dist = fric[CONTACT_DISTANCE]
     max_pen = phys[MAX_PEN]
     max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
-    nx, ny, nz = surface_normal(terr_kind, terr, 0.0, 0.0, 0.0)  # one normal: no obstacles (caller checks)
-    plane = terr_kind == PLANE
-    h = terr[0]
-    ms = -math.sin(terr[1])
-    cs = math.cos(terr[1])
+    plane, h, ms, cs, nx, ny, nz = ground
     xd2, fd2 = xd + xd, fd + fd
     ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl
     ojn, open_ = np.uint64(B_JN) * wl, np.uint64(W_PEN) * wl
@@ -797,22 +999,22 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     return _node_rows(xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size), imc.reshape(imc.size),
                       work.reshape(work.size), code.reshape(code.size), n_faces, stride,
                       np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl),
-                      fric, terr_kind, terr, phys, acc)
+                      fric, _flat_ground(terr_kind, terr), phys, acc)
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
+def advance(x, v, inv_mass, fparams, act_buf,
             fric_model, fric, terr_kind, terr, phys, n_steps,
-            xc, vc, fc, gf, st, fs, act, face_scale, spine, acc):
+            xc, vc, fc, st, fs, act, face_scale, spine, acc):
     """Advance the lattice ``n_steps`` steps; return (steps done, status).
 
-    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  grp, gpar, plan: the lattice's
-    ``SpringGroups`` (index, params, plan).  act_buf (n_rows, n_seg, 3): the muscle strains of
-    step k in row k (rows past the last repeat it).  ``act`` (n_seg, 3) is overwritten with
-    row n_steps (the actuation at the end time, which ``energy`` uses), or the last row.
-    Work arrays: xc, vc, fc (3, 4, stride) with stride = ``SpringGroups.stride`` (padding columns
-    zero); gf (3 n_groups, 4 stride + 1) filled with -0.0 (``group_spring_forces``); st, fs
-    (4 stride,); face_scale (n_faces,); spine (n_faces, 3).
+    State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  fparams: the lattice's
+    ``SpringFamilies.params`` (4, 18, stride), its families those of ``lattice.CUBE_FAMILIES``
+    (the caller checks).  act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k
+    (rows past the last repeat it).  ``act`` (n_seg, 3) is overwritten with row n_steps (the
+    actuation at the end time, which ``energy`` uses), or the last row.  Work arrays: xc, vc
+    (3, 5, stride) and fc (3, 4, stride) with stride = ``lattice.face_stride`` (padding columns
+    and xc, vc's fifth row zero); st, fs (4 stride,); face_scale (n_faces,); spine (n_faces, 3).
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
@@ -845,10 +1047,11 @@ def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
     xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
     xd, fd, wlu = np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl)
     osx = np.uint64(B_SX) * wlu
-    gp, plen, gff, glen = gpar.reshape(gpar.size), gpar.shape[2], gf.reshape(gf.size), gf.shape[1]
+    # per call, not per step: the terrain does not change within one (only the batched pass uses it)
+    ground = _flat_ground(terr_kind, terr) if batched else (False, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+    pf = fparams.reshape(fparams.size)
     for step in range(n_steps):
-        _group_forces_flat(act_buf, min(step, n_rows - 1), volume, xf, vf, xd, stride, grp, gp, plen, plan, face_scale,
-                           st, fs, gff, glen, ff)
+        _column_forces_flat(act_buf, min(step, n_rows - 1), volume, xf, vf, xd, stride, pf, face_scale, st, fs, ff)
         if not batched:
             spine_vectors_c(xc, spine)
         if stick:
@@ -871,8 +1074,8 @@ def advance(x, v, inv_mass, grp, gpar, plan, act_buf,
                         seg_held[i] = True
         if batched:
             spine_rows(xc, n_faces, work, osx, wlu)
-            n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, terr_kind,
-                                           terr, phys, acc)
+            n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, ground,
+                                           phys, acc)
         else:
             n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
                                                terr_kind, terr, phys, acc)

@@ -170,6 +170,43 @@ def spring_families(lat: Lattice, stiffness: np.ndarray, damping: np.ndarray) ->
     return SpringFamilies(index=index, params=params, spring=spring)
 
 
+# Miller's cube lattice's 18 spring families in ``spring_families``' order, one row of its ``index`` each
+# (FAM_A, FAM_B, FAM_SHIFT, FAM_KIND, FAM_CA, FAM_CB): the same table for every body length, so the step
+# kernel's column loop (``kernels.column_spring_forces``) takes it as a compile-time constant and runs every
+# family inside one loop over the faces.  ``spring_families`` of any ``build_lattice`` gives exactly this
+# table (checked by the body and tests/test_massspring_kernels.py).
+CUBE_FAMILIES = (
+    (0, 0, 1, AXIAL, 0, 0), (0, 1, 0, CROSS, 0, 1), (0, 1, 1, SIDE_DIAG, 0, 1), (0, 2, 0, CROSS, 0, 2),
+    (0, 2, 1, SIDE_DIAG, 0, 2), (0, 3, 0, CROSS, 0, 3), (1, 0, 1, SIDE_DIAG, 0, 1), (1, 1, 1, AXIAL, 1, 1),
+    (1, 2, 0, CROSS, 1, 2), (1, 3, 0, CROSS, 1, 3), (1, 3, 1, SIDE_DIAG, 1, 3), (2, 0, 1, SIDE_DIAG, 0, 2),
+    (2, 2, 1, AXIAL, 2, 2), (2, 3, 0, CROSS, 2, 3), (2, 3, 1, SIDE_DIAG, 2, 3), (3, 1, 1, SIDE_DIAG, 1, 3),
+    (3, 2, 1, SIDE_DIAG, 2, 3), (3, 3, 1, AXIAL, 3, 3),
+)
+
+
+def cube_plan(families=CUBE_FAMILIES) -> tuple:
+    """For each corner c = 0..3 the terms of its nodes' spring force sum, in the order in which
+    ``kernels.family_spring_forces`` adds them (families in order; within one, the a end before the b end):
+    (family, sign, shift) with sign -1 at the spring's a end and +1 at its b end, and shift the faces
+    between the node and the spring's a end (the b end of a spring of face t is on face t + shift)."""
+    terms: list[list] = [[] for _ in range(4)]
+    for q, (a, b, shift, _kind, _ca, _cb) in enumerate(families):
+        terms[a].append((q, -1, 0))
+        terms[b].append((q, 1, shift))
+    return tuple(tuple(t) for t in terms)
+
+
+# The cube lattice's force sums (``cube_plan``): every corner sums 9 terms (3 face edges, 2 axial edges,
+# 4 side diagonals).  Written out so that the kernels take them as compile-time constants; the test
+# checks them against ``cube_plan()`` and ``spring_groups``' plan.
+CUBE_PLAN = (
+    ((0, -1, 0), (0, 1, 1), (1, -1, 0), (2, -1, 0), (3, -1, 0), (4, -1, 0), (5, -1, 0), (6, 1, 1), (11, 1, 1)),
+    ((1, 1, 0), (2, 1, 1), (6, -1, 0), (7, -1, 0), (7, 1, 1), (8, -1, 0), (9, -1, 0), (10, -1, 0), (15, 1, 1)),
+    ((3, 1, 0), (4, 1, 1), (8, 1, 0), (11, -1, 0), (12, -1, 0), (12, 1, 1), (13, -1, 0), (14, -1, 0), (16, 1, 1)),
+    ((5, 1, 0), (9, 1, 0), (10, 1, 1), (13, 1, 0), (14, 1, 1), (15, -1, 0), (16, -1, 0), (17, -1, 0), (17, 1, 1)),
+)
+
+
 # Columns of ``SpringGroups.index``.
 GRP_SHIFT, GRP_DROW, GRP_KIND, GRP_LO, GRP_HI = range(5)
 # Columns of ``SpringGroups.plan``.
