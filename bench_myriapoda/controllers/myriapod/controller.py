@@ -376,7 +376,9 @@ class MyriapodController:
         TG.targeter_step(c, self._without_body_wave(R), self.kinematic, self.terr_kind, self.terr_walk,
                          self.tg_params, self.link_rest, self.height_target, speed, rate, turn_dir, dt, self.c_T,
                          self.R_T)
-        self.wall_pushes += TG.keep_clear_of_walls(self.c_T, self.R_T, self.kinematic, self.terr_walls, self.seg_half)
+        if self.terr_walls[TK.H_NOBST] > 0:  # no kernel call (a numba dispatch of five arrays) without walls
+            self.wall_pushes += TG.keep_clear_of_walls(self.c_T, self.R_T, self.kinematic, self.terr_walls,
+                                                       self.seg_half)
         if self.wave_amp > 0.0:
             self._apply_body_wave(R)
         act.support_kinematic[:] = self.kinematic
