@@ -319,7 +319,7 @@ def keep_clear_of_walls(c_T, R_T, kinematic, walls, half):
             continue
         for _ in range(WALL_PASSES):
             deepest = 0.0
-            jw = -1
+            jw = np.int64(-1)  # not a literal -1: numba would compile obstacle_normal for Literal[int](-1) too
             qx = qy = qz = 0.0
             for sx, sy, sz in WALL_PROBES:
                 ax, ay, az = sx * half[i, 0], sy * half[i, 1], sz * half[i, 2]
