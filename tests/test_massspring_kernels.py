@@ -340,34 +340,6 @@ def _family_reference(segments, state):
     return body, x, v, act, fu
 
 
-@pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 200])
-@pytest.mark.parametrize("state", ["random", "collapsed"])
-def test_group_spring_forces_bitwise_equal_the_family_kernels(segments, state):
-    """The step's spring groups (one loop per group over padded corner rows, then each node's ordered
-    sum) give every node the bits of ``family_rest_lengths`` + ``family_spring_forces`` run family by
-    family on unpadded rows, signed zeros included: random states with zero-length springs, and a
-    lattice collapsed to one point (every spring pulls nothing: every force must be +0.0)."""
-    from bench_myriapoda.bodies.massspring.lattice import face_stride
-    body, x, v, act, fu = _family_reference(segments, state)
-    n_faces = segments + 1
-    grp = body.groups
-    assert grp.stride == face_stride(n_faces) and grp.stride >= n_faces + 1 and grp.stride % 8 == 0
-    xc, vc, fc = body._xc, body._vc, body._fc
-    K._corner_major(x, xc)
-    K._corner_major(v, vc)
-    fc[:] = np.nan  # every real column is overwritten
-    K.group_spring_forces(act, True, xc, vc, grp.index, grp.params, grp.plan, body._face_scale, body._st, body._fs,
-                          body._gf, fc)
-    got = np.ascontiguousarray(fc[:, :, :n_faces])
-    assert np.array_equal(got.view(np.int64), fu.view(np.int64))
-    if state == "collapsed":
-        assert np.all(got.view(np.int64) == 0)  # +0.0, not -0.0
-    # a second call from the state the first left gives the same (no scratch carried over)
-    K.group_spring_forces(act, True, xc, vc, grp.index, grp.params, grp.plan, body._face_scale, body._st, body._fs,
-                          body._gf, fc)
-    assert np.array_equal(np.ascontiguousarray(fc[:, :, :n_faces]).view(np.int64), fu.view(np.int64))
-
-
 # 63 and 64 segments: the last face's springs at the last column of the first chunk of 64 faces, and at the
 # first of the second; 200: four chunks
 @pytest.mark.parametrize("segments", [1, 2, 3, 6, 7, 12, 25, 38, 39, 60, 62, 63, 64, 127, 128, 200])
@@ -376,9 +348,12 @@ def test_column_spring_forces_bitwise_equal_the_family_kernels(segments, state):
     """The step's column loops (all 18 families of a face in one loop, then all 12 sums of a face, chunk by
     chunk of ``K.CHUNK_FACES`` faces) give every node the bits of the per-family kernels, signed zeros
     included; a second call from the state the first left gives the same (no scratch carried over)."""
+    from bench_myriapoda.bodies.massspring.lattice import face_stride
     body, x, v, act, fu = _family_reference(segments, state)
     n_faces = segments + 1
     xc, vc, fc = body._xc, body._vc, body._fc
+    stride = xc.shape[2]  # padded corner rows: whole vectors of 8, at least one padding column
+    assert stride == face_stride(n_faces) and stride >= n_faces + 1 and stride % 8 == 0
     K._corner_major(x, xc)
     K._corner_major(v, vc)
     for _ in range(2):
@@ -392,39 +367,44 @@ def test_column_spring_forces_bitwise_equal_the_family_kernels(segments, state):
 
 def test_cube_lattice_constants():
     """The kernels' compile-time tables are those of the lattice code: ``CUBE_FAMILIES`` is ``spring_families``'
-    index of every length, ``CUBE_PLAN`` the families' summation order (``cube_plan``), term for term the
-    plan of ``spring_groups`` (group and read-back offset mapped to family and shift), and the shifted
-    families the kernel fixes up are the families with shift 1."""
-    from bench_myriapoda.bodies.massspring.lattice import (CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_KIND,
-                                                           FAM_SHIFT, PLAN_BACK, PLAN_GROUP, PLAN_SIGN, cube_plan,
-                                                           spring_families, spring_groups)
+    index of every length, ``CUBE_PLAN`` the families' summation order (``cube_plan``), each term naming a
+    family that ends at its corner (a end: no shift; b end: the family's shift), and the shifted families the
+    kernel fixes up are the families with shift 1."""
+    from bench_myriapoda.bodies.massspring.lattice import (CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_SHIFT,
+                                                           cube_plan, spring_families)
     for n_seg in (1, 5, 64):
         lat = build_lattice(n_seg, 0.1, 0.05, 0.04)
         fam = spring_families(lat, np.ones(lat.n_springs), np.zeros(lat.n_springs))
         assert tuple(tuple(int(c) for c in row) for row in fam.index) == CUBE_FAMILIES
-        grp = spring_groups(fam, n_seg + 1)
         for c in range(4):
-            for k, (q, sign, shift) in enumerate(CUBE_PLAN[c]):
-                g, gsign, back = grp.plan[c, k, PLAN_GROUP], grp.plan[c, k, PLAN_SIGN], grp.plan[c, k, PLAN_BACK]
+            for q, sign, shift in CUBE_PLAN[c]:
                 row = fam.index[q]
-                assert gsign == sign and c == (row[FAM_A] if sign < 0 else row[FAM_B])
-                assert tuple(grp.index[g, :3]) == (row[FAM_SHIFT], row[FAM_B] - row[FAM_A], row[FAM_KIND])
-                assert back == (0 if sign < 0 else (row[FAM_B] - row[FAM_A]) * grp.stride + shift)
+                assert sign in (-1, 1) and c == (row[FAM_A] if sign < 0 else row[FAM_B])
+                assert shift == (0 if sign < 0 else row[FAM_SHIFT])
+        # every spring end is one term of one corner's sum: the a and b ends of the 18 families
+        assert sorted((q, sign) for c in range(4) for q, sign, _ in CUBE_PLAN[c]) == sorted(
+            [(q, -1) for q in range(fam.index.shape[0])] + [(q, 1) for q in range(fam.index.shape[0])])
     assert cube_plan() == CUBE_PLAN
     assert list(K.SHIFTED_FAMILIES) == [q for q, row in enumerate(CUBE_FAMILIES) if row[FAM_SHIFT] == 1]
 
 
-def test_spring_groups_of_a_cube_lattice():
-    """Miller's cube lattice runs as 8 group loops (3 cross-section, 1 axial, 4 side-diagonal), and each of
-    the four corners sums 9 spring forces (3 face edges, 2 axial edges, 4 side diagonals)."""
-    from bench_myriapoda.bodies.massspring.lattice import GRP_HI, GRP_LO, spring_families, spring_groups
+def test_spring_families_of_a_cube_lattice():
+    """Miller's cube lattice has 18 spring families (6 cross-section edges and diagonals, 4 axial edges, 8 side
+    diagonals), and each of the four corners sums 9 spring forces (3 face edges, 2 axial edges, 4 side
+    diagonals); a family's params are set exactly on its springs' faces."""
+    from bench_myriapoda.bodies.massspring.lattice import (AXIAL, CROSS, CUBE_PLAN, FAM_KIND, FAM_SHIFT, PAR_K,
+                                                           SIDE_DIAG, spring_families)
     lat = build_lattice(5, 0.1, 0.05, 0.04)
     fam = spring_families(lat, np.ones(lat.n_springs), np.zeros(lat.n_springs))
-    grp = spring_groups(fam, 6)
-    assert grp.index.shape[0] == 8 and grp.plan.shape == (4, K.N_TERMS, 3)
-    assert int(np.sum(grp.index[:, GRP_HI] - grp.index[:, GRP_LO])) == 20  # rows run; 18 families
-    assert sorted(np.count_nonzero(grp.params[0, g]) for g in range(8)) == sorted(
-        [6 * 3, 6 * 2, 6 * 1, 5 * 4, 5 * 2, 5 * 2, 5 * 2, 5 * 2])  # stiffness only where a spring is
+    kinds = list(fam.index[:, FAM_KIND])
+    assert fam.index.shape[0] == 18 and (kinds.count(CROSS), kinds.count(AXIAL), kinds.count(SIDE_DIAG)) == (6, 4, 8)
+    assert all(len(CUBE_PLAN[c]) == 9 for c in range(4))
+    for c in range(4):
+        ends = [fam.index[q, FAM_KIND] for q, _, _ in CUBE_PLAN[c]]
+        assert (ends.count(CROSS), ends.count(AXIAL), ends.count(SIDE_DIAG)) == (3, 2, 4)
+    for q in range(18):  # stiffness only where a spring is: 6 faces without shift, 5 segments with
+        assert list(np.nonzero(fam.params[PAR_K, q])[0]) == list(range(6 - fam.index[q, FAM_SHIFT]))
+    assert int(np.sum(fam.spring >= 0)) == lat.n_springs
 
 
 def _coulomb_cases(r, n_cases, n):
@@ -531,7 +511,7 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
     v = r.normal(scale=0.05, size=x.shape)
     v[0::4, 1] = v[1::4, 1] = -0.1  # moving into the plane: normal impulses and collisions
     assert 2 < np.sum(x[:, 1] < contact) < n_nodes // 2 and np.any((x[:, 1] >= contact) & (x[:, 1] < 0.05))
-    stride = body.groups.stride
+    stride = body._xc.shape[2]
     assert stride > n_faces
     xc, vc = np.zeros((3, 5, stride)), np.zeros((3, 5, stride))
     fc = np.zeros((3, 4, stride))

@@ -24,7 +24,7 @@ from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
-from .lattice import CUBE_FAMILIES, build_lattice, spring_families, spring_groups
+from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
 
 
 # Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
@@ -132,22 +132,18 @@ class BodyMassSpring(NodeSegments):
         self._stretch = np.ones((cre.segments, 4))
         self._spine = np.zeros((cre.segments + 1, 3))
         self.acc = np.zeros(S.N_ACC)
-        # the step kernel's spring families (its column loops take lattice.CUBE_FAMILIES as constants) and
-        # corner-major work arrays (kernels module docstring); the spring groups (the previous step layout)
-        # and the families' work arrays serve their reference kernels (tests)
+        # the step kernel's spring families (its column loops take lattice.CUBE_FAMILIES and CUBE_PLAN as
+        # constants) and corner-major work arrays (kernels module docstring); the families' work arrays serve
+        # their reference kernels (tests)
         n_faces = cre.segments + 1
         self.families = spring_families(lat, self.stiffness, self.damping)
         if tuple(tuple(int(c) for c in r) for r in self.families.index) != CUBE_FAMILIES:
             raise ValueError("the lattice's spring families are not lattice.CUBE_FAMILIES, which the step kernel runs")
-        self.groups = spring_groups(self.families, n_faces)  # the previous step layout, kept as a tested reference
-        if self.groups.plan.shape[1] != K.N_TERMS:
-            raise ValueError(f"lattice nodes sum {self.groups.plan.shape[1]} spring forces, the kernel {K.N_TERMS}")
-        stride = self.groups.stride
+        stride = face_stride(n_faces)
         # positions and velocities carry a fifth, padding corner row: the spring loops over whole rows
         # read b ends up to one column past the fourth
         self._xc, self._vc = np.zeros((3, 5, stride)), np.zeros((3, 5, stride))
         self._fc = np.zeros((3, 4, stride))
-        self._gf = np.full((3 * self.groups.index.shape[0], 4 * stride + 1), -0.0)
         self._st, self._fs = np.ones(4 * stride), np.ones(4 * stride)
         self._dfs = np.zeros((3, stride))
         self._rest_fam = np.zeros((self.families.index.shape[0], stride))

@@ -32,9 +32,9 @@ corner's summation order (``lattice.CUBE_PLAN``) as compile-time constants and r
 faces: one computes the rest length and force of all 18 families' springs of a face, one forms the 12
 force sums (4 corners x 3 axes) of a face.  Both vectorise across faces (sqrt and divisions in SIMD
 lanes, 8 faces per 512-bit vector; the divider bounds the first at about 45 ns per segment), and they
-replace the 8 spring-group loops and 12 sum loops of the previous layout (``lattice.spring_groups``,
-``group_spring_forces``, kept as a tested reference), whose loop starts made most of the fixed cost per
-step (about 50 ns each).  The forces pass through a stack buffer (``_chunk_buffer``, chunks of
+replace the 8 spring-group loops and 12 sum loops of a previous layout (spring groups: families merged
+into flat loops over whole corner rows; removed), whose loop starts made most of the fixed cost per step
+(about 50 ns each).  The forces pass through a stack buffer (``_chunk_buffer``, chunks of
 ``CHUNK_FACES`` faces), so that LLVM needs no run-time alias checks between the 54 force rows and the
 arrays the loop reads: with the forces in an argument array it stayed scalar ("too many memory checks").
 Each node sums its spring forces in the order of the per-family reference kernels ``family_rest_lengths``
@@ -69,8 +69,7 @@ from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
 from .lattice import (AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT,
-                      GRP_DROW, GRP_HI, GRP_KIND, GRP_LO, GRP_SHIFT, PAR_D, PAR_K, PAR_L0, PAR_LC, PLAN_BACK, PLAN_GROUP,
-                      PLAN_SIGN, SIDE_FACES)
+                      PAR_D, PAR_K, PAR_L0, PAR_LC, SIDE_FACES)
 
 # scalar parameter vector layout (``phys``)
 GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
@@ -275,8 +274,8 @@ def family_rest_lengths(act, volume_conserving, fam, params, stretch, face_scale
 def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
     """Accumulate spring forces f = k (L - l) - D dl/dt [N] into ``fc`` (3, 4, n_faces), family by family.
 
-    The reference of ``group_spring_forces`` (which the step runs): its summation order is the one the
-    groups reproduce, bit for bit (tests/test_massspring_kernels.py).
+    The reference of ``column_spring_forces`` and of the step's column loops: its summation order is the one
+    they reproduce, bit for bit (tests/test_massspring_kernels.py).
     xc, vc: (3, 4, n_faces) corner-major positions [m] and velocities [m/s] (node 4 t + c at
     [:, c, t]); fam, params: ``lattice.SpringFamilies``; rest (n_fam, n_faces) [m]; dfs
     (3, n_faces) scratch.  Per spring the arithmetic of ``spring_forces`` (a spring shorter
@@ -320,15 +319,12 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
                 fb[t] += g[t]
 
 
-N_TERMS = 9  # spring force terms of every node of a cube lattice (lattice.SpringGroups.plan)
-
-
 @njit(cache=True, error_model="numpy", inline="always")
 def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
     """The force f u of the spring from flat index ia (its a end) to ib (its b end) of the flat
     corner-major arrays xf, vf (axis stride ``dim``): ``family_spring_forces``'s arithmetic, operation
-    by operation (a spring shorter than 1e-12 m pulls nothing).  Indices are uint64 (see
-    ``group_spring_forces``)."""
+    by operation (a spring shorter than 1e-12 m pulls nothing).  Indices are uint64: a signed index plus a
+    run-time offset could be negative to numba, whose wrap-around select turns the loads into gathers."""
     dim2 = dim + dim
     dx = xf[ib] - xf[ia]
     dy = xf[dim + ib] - xf[dim + ia]
@@ -339,121 +335,6 @@ def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
     f = k * (rest - length) - d * ldot
     live = length >= 1e-12
     return (f * ux if live else 0.0), (f * uy if live else 0.0), (f * uz if live else 0.0)
-
-
-@njit(cache=True, error_model="numpy")
-def group_spring_forces(act, volume_conserving, xc, vc, grp, gpar, plan, face_scale, st, fs, gf, fc):
-    """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
-    ``family_spring_forces`` (fc zeroed first) in ``lattice.SpringGroups`` loops, bitwise the same forces.
-    The step's previous layout (``advance`` runs ``column_spring_forces`` since), kept as a tested reference.
-
-    act (n_seg, 3): the step's muscle strains; xc, vc (3, 5, stride) corner-major positions [m] and
-    velocities [m/s] (stride = ``SpringGroups.stride``: node (c, t) at flat index c * stride + t of an
-    axis; row 4 is padding, read by the loops' last springs); grp, gpar, plan: ``SpringGroups`` index,
-    params and plan.  Scratch: face_scale (n_faces,); st, fs (4 stride,) the fibre stretches and face
-    scales by corner row; gf (3 n_groups, 4 stride + 1), filled with -0.0 once, the groups' spring
-    forces, spring i at column 1 + i.
-
-    Pass 1, one loop per group over its whole rows: the rest length of every spring (the rules of
-    ``lattice_rest_lengths``, the same operations) and its force f u, as ``family_spring_forces``.
-    Pass 2, one loop per corner and axis over whole rows: each node sums the terms of ``plan``,
-    starting from 0.0, in the order in which ``family_spring_forces`` adds them.  A spring that does
-    not exist is read as an exact no-op: +0.0 where it would be subtracted (x - 0.0 == x for every x)
-    and -0.0 where added (x + -0.0 == x, also for x = -0.0), so every node of a row runs the same sum
-    and the loops have no branches.  The padding columns' sums are never used.
-
-    The loops index flat arrays with uint64 offsets: a signed index plus a run-time offset could be
-    negative to numba, whose wrap-around select turns the loads into gathers, and views per loop cost
-    a reference count each (measured: about 0.15 us per group loop with views on a 6-segment snake).
-    """
-    stride = xc.shape[2]
-    act_buf = act.reshape((1, act.shape[0], act.shape[1]))
-    _group_forces_flat(act_buf, np.int64(0), volume_conserving, xc.reshape(xc.size), vc.reshape(vc.size),
-                       np.uint64(xc.shape[1] * stride), stride, grp, gpar.reshape(gpar.size), gpar.shape[2], plan,
-                       face_scale, st, fs, gf.reshape(gf.size), gf.shape[1], fc.reshape(fc.size))
-
-
-@njit(cache=True, error_model="numpy")
-def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp, gp, plen, plan, face_scale, st, fs,
-                       gff, glen, fcf):
-    """``group_spring_forces`` on flat arrays, made once per ``advance`` call (a view costs a reference
-    count): xf, vf the (3, 5, stride) positions and velocities taken flat (axis stride ``dim``, uint64); gp
-    the groups' params taken flat (row length plen); gff the groups' forces taken flat (row length glen);
-    fcf the (3, 4, stride) forces taken flat.  The step's muscle strains are row ``row`` of act_buf
-    (n_rows, n_seg, 3), read in place.  The fibre stretches and face scales (``fibre_stretch``,
-    ``face_scales``: the same operations) are computed in one loop over the faces."""
-    n_faces = act_buf.shape[1] + 1
-    _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, 4)
-    n_groups = grp.shape[0]
-    one = np.uint64(1)
-    for g in range(n_groups):
-        s = grp[g, GRP_SHIFT]
-        drow = grp[g, GRP_DROW] * stride
-        lo = grp[g, GRP_LO] * stride
-        n = (grp[g, GRP_HI] - grp[g, GRP_LO]) * stride  # whole rows: b ends up to flat 4 stride (the padding row)
-        kind = grp[g, GRP_KIND]
-        ia0 = np.uint64(lo)
-        ib0 = np.uint64(lo + drow + s)  # the b end of the group's first spring
-        sb0 = np.uint64(lo + drow)  # the b end's fibre, same segment
-        pk = np.uint64((PAR_K * n_groups + g) * plen + lo)
-        pd = np.uint64((PAR_D * n_groups + g) * plen + lo)
-        pl0 = np.uint64((PAR_L0 * n_groups + g) * plen + lo)
-        plc = np.uint64((PAR_LC * n_groups + g) * plen + lo)
-        o0 = np.uint64(3 * g * glen + 1 + lo)
-        o1 = np.uint64((3 * g + 1) * glen + 1 + lo)
-        o2 = np.uint64((3 * g + 2) * glen + 1 + lo)
-        if kind == AXIAL:
-            for t in range(n):
-                u = np.uint64(t)
-                rest = gp[pl0 + u] * st[ia0 + u]
-                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
-        elif kind == CROSS:
-            for t in range(n):
-                u = np.uint64(t)
-                rest = gp[plc + u] * fs[ia0 + u]
-                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
-        else:
-            for t in range(n):
-                u = np.uint64(t)
-                axial = gp[pl0 + u] * 0.5 * (st[ia0 + u] + st[sb0 + u])
-                cross = gp[plc + u] * 0.5 * (fs[ia0 + u] + fs[ia0 + u + one])
-                rest = math.sqrt(axial * axial + cross * cross)
-                gff[o0 + u], gff[o1 + u], gff[o2 + u] = _group_spring(xf, vf, dim, ia0 + u, ib0 + u, gp[pk + u], gp[pd + u], rest)
-        if s != 0:  # the springs past the last face: +0.0 read by its a end, -0.0 read by the next row's first b end
-            for r in range(grp[g, GRP_LO], grp[g, GRP_HI]):
-                for e in range(3):
-                    o = np.uint64((3 * g + e) * glen + 1 + r * stride)
-                    gff[o + np.uint64(n_faces - 1)] = 0.0
-                    gff[o + np.uint64(stride - 1)] = -0.0
-    for c in range(4):
-        b = 1 + c * stride
-        for e in range(3):
-            out = np.uint64((e * 4 + c) * stride)
-            r0 = np.uint64((3 * plan[c, 0, PLAN_GROUP] + e) * glen + b - plan[c, 0, PLAN_BACK])
-            r1 = np.uint64((3 * plan[c, 1, PLAN_GROUP] + e) * glen + b - plan[c, 1, PLAN_BACK])
-            r2 = np.uint64((3 * plan[c, 2, PLAN_GROUP] + e) * glen + b - plan[c, 2, PLAN_BACK])
-            r3 = np.uint64((3 * plan[c, 3, PLAN_GROUP] + e) * glen + b - plan[c, 3, PLAN_BACK])
-            r4 = np.uint64((3 * plan[c, 4, PLAN_GROUP] + e) * glen + b - plan[c, 4, PLAN_BACK])
-            r5 = np.uint64((3 * plan[c, 5, PLAN_GROUP] + e) * glen + b - plan[c, 5, PLAN_BACK])
-            r6 = np.uint64((3 * plan[c, 6, PLAN_GROUP] + e) * glen + b - plan[c, 6, PLAN_BACK])
-            r7 = np.uint64((3 * plan[c, 7, PLAN_GROUP] + e) * glen + b - plan[c, 7, PLAN_BACK])
-            r8 = np.uint64((3 * plan[c, 8, PLAN_GROUP] + e) * glen + b - plan[c, 8, PLAN_BACK])
-            s0, s1, s2 = float(plan[c, 0, PLAN_SIGN]), float(plan[c, 1, PLAN_SIGN]), float(plan[c, 2, PLAN_SIGN])
-            s3, s4, s5 = float(plan[c, 3, PLAN_SIGN]), float(plan[c, 4, PLAN_SIGN]), float(plan[c, 5, PLAN_SIGN])
-            s6, s7, s8 = float(plan[c, 6, PLAN_SIGN]), float(plan[c, 7, PLAN_SIGN]), float(plan[c, 8, PLAN_SIGN])
-            for t in range(stride):
-                u = np.uint64(t)
-                # x + (-1.0 * y) == x - y exactly: the sum of family_spring_forces, term by term
-                a = 0.0 + s0 * gff[r0 + u]
-                a = a + s1 * gff[r1 + u]
-                a = a + s2 * gff[r2 + u]
-                a = a + s3 * gff[r3 + u]
-                a = a + s4 * gff[r4 + u]
-                a = a + s5 * gff[r5 + u]
-                a = a + s6 * gff[r6 + u]
-                a = a + s7 * gff[r7 + u]
-                fcf[out + u] = a + s8 * gff[r8 + u]
-
 
 
 N_FAMILIES = len(CUBE_FAMILIES)  # 18
@@ -599,7 +480,7 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
     compile-time constants here), so one loop over the faces computes all 18 families' springs of a face
     (pass 1) and one loop forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
     both vectorised across faces (8 faces per 512-bit vector), chunk by chunk of CHUNK_FACES faces (one chunk
-    up to 63 segments).  The spring groups (``group_spring_forces``) ran 8 spring loops and 12 sum loops per
+    up to 63 segments).  The previous layout's spring groups ran 8 spring loops and 12 sum loops per
     step, each start (set-up, run-time alias checks, the first iterations' latency) about 50 ns.  Pass 1
     writes the forces to a stack buffer (``_chunk_buffer``): family q's axis e in row 3 q + e, face t0 + j of
     the chunk starting at face t0 in column 1 + j, column 0 the face before the chunk (-0.0 before face 0),

@@ -99,9 +99,9 @@ def face_stride(n_faces: int) -> int:
     """Columns per corner row of the step kernel's corner-major arrays: the faces and at least one padding
     column, rounded up to ``FACE_STRIDE_MULTIPLE``.
 
-    The padding keeps the spring groups' flat loops (``spring_groups``) of different corner rows apart:
-    a spring that would join the last face of one row to the first face of the next lands there; and it
-    makes every loop over whole rows a whole number of vectors (a short body's rows of a few faces
+    The padding keeps corner rows apart: a spring of the last face's families with shift 1 reads its b end
+    in the padding column, not on the first face of the next row; and it makes every loop over whole rows
+    a whole number of vectors (a short body's rows of a few faces
     would otherwise run mostly in the scalar remainder, where sqrt and division cost about four times
     as much per spring)."""
     m = FACE_STRIDE_MULTIPLE
@@ -130,7 +130,7 @@ class SpringFamilies:
     per spring (padding past n_faces - shift is zero); spring: (n_fam, stride) int64, the
     lattice's spring index of each entry (-1 in the padding).  ``stride`` = n_faces + 1
     (``face_stride``): the step kernel's corner-major arrays (3, 4, stride) carry one padding
-    column per corner row (``spring_groups``).
+    column per corner row.
     """
 
     index: np.ndarray
@@ -198,75 +198,10 @@ def cube_plan(families=CUBE_FAMILIES) -> tuple:
 
 # The cube lattice's force sums (``cube_plan``): every corner sums 9 terms (3 face edges, 2 axial edges,
 # 4 side diagonals).  Written out so that the kernels take them as compile-time constants; the test
-# checks them against ``cube_plan()`` and ``spring_groups``' plan.
+# checks them against ``cube_plan()`` and the families of ``spring_families``.
 CUBE_PLAN = (
     ((0, -1, 0), (0, 1, 1), (1, -1, 0), (2, -1, 0), (3, -1, 0), (4, -1, 0), (5, -1, 0), (6, 1, 1), (11, 1, 1)),
     ((1, 1, 0), (2, 1, 1), (6, -1, 0), (7, -1, 0), (7, 1, 1), (8, -1, 0), (9, -1, 0), (10, -1, 0), (15, 1, 1)),
     ((3, 1, 0), (4, 1, 1), (8, 1, 0), (11, -1, 0), (12, -1, 0), (12, 1, 1), (13, -1, 0), (14, -1, 0), (16, 1, 1)),
     ((5, 1, 0), (9, 1, 0), (10, 1, 1), (13, 1, 0), (14, 1, 1), (15, -1, 0), (16, -1, 0), (17, -1, 0), (17, 1, 1)),
 )
-
-
-# Columns of ``SpringGroups.index``.
-GRP_SHIFT, GRP_DROW, GRP_KIND, GRP_LO, GRP_HI = range(5)
-# Columns of ``SpringGroups.plan``.
-PLAN_GROUP, PLAN_SIGN, PLAN_BACK = range(3)
-
-
-@dataclass(frozen=True)
-class SpringGroups:
-    """The spring families merged into flat loops over the corner-major node arrays, and the order in
-    which each node sums its spring forces.
-
-    With ``stride`` = n_faces + 1 columns per corner row, node (corner c, face t) is flat index
-    i = c * stride + t of a (3, 4, stride) array, and family (a, b, shift) joins i = a * stride + t to
-    i + (b - a) * stride + shift.  Families with the same (shift, b - a, kind) are one group: a single
-    loop over i in [lo * stride, hi * stride - shift) computes all of them (rows lo..hi-1 of corners a;
-    a row of the range that is no family of the group, and the padding columns, give springs nobody
-    reads).  So the 18 families of a cube lattice run as 8 loops of 1 to 4 rows each, long enough to
-    vectorise also on short bodies.
-
-    index: (n_groups, 5) int64, columns GRP_SHIFT, GRP_DROW (b - a), GRP_KIND, GRP_LO, GRP_HI;
-    params: (4, n_groups, 4 stride) float64, rows PAR_K, PAR_D, PAR_L0, PAR_LC of the spring at
-    flat index i (zero where no spring is);
-    plan: (4, n_terms, 3) int64, for each corner the terms of its nodes' force sum in order
-    (PLAN_GROUP, PLAN_SIGN -1 at the spring's a end and +1 at its b end, PLAN_BACK: read the group's
-    force at the node's flat index minus this).  The order is that of ``kernels.family_spring_forces``
-    (families in ``SpringFamilies`` order, within one the a ends before the b ends), so the sums are
-    bitwise the same.
-    """
-
-    stride: int
-    index: np.ndarray
-    params: np.ndarray
-    plan: np.ndarray
-
-
-def spring_groups(fam: SpringFamilies, n_faces: int) -> SpringGroups:
-    """Merge the families ``fam`` of an n_faces-face lattice into ``SpringGroups``.
-
-    Raises ValueError if two families of a group would share a corner row, or if the corners'
-    force sums have different numbers of terms (not a cube lattice)."""
-    stride = face_stride(n_faces)
-    keys = sorted({(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND])) for r in fam.index})
-    gid = {k: g for g, k in enumerate(keys)}
-    index = np.zeros((len(keys), 5), dtype=np.int64)
-    params = np.zeros((4, len(keys), 4 * stride))
-    rows: dict[int, set] = {g: set() for g in range(len(keys))}
-    for q, r in enumerate(fam.index):
-        g = gid[(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND]))]
-        a = int(r[FAM_A])
-        if a in rows[g]:
-            raise ValueError(f"spring families {keys[g]} share corner row {a}: not a cube lattice")
-        rows[g].add(a)
-        params[:, g, a * stride:(a + 1) * stride] = fam.params[:, q, :stride]
-    for g, (shift, drow, kind) in enumerate(keys):
-        index[g] = (shift, drow, kind, min(rows[g]), max(rows[g]) + 1)
-    terms: list[list] = [[] for _ in range(4)]
-    for r in fam.index:  # the summation order of family_spring_forces: by family, a ends then b ends
-        g = gid[(int(r[FAM_SHIFT]), int(r[FAM_B] - r[FAM_A]), int(r[FAM_KIND]))]
-        terms[int(r[FAM_A])].append((g, -1, 0))
-        terms[int(r[FAM_B])].append((g, 1, int(r[FAM_B] - r[FAM_A]) * stride + int(r[FAM_SHIFT])))
-    if len({len(t) for t in terms}) != 1:
-        raise ValueError(f"the corners' force sums have {[len(t) for t in terms]} terms: not a cube lattice")
-    return SpringGroups(stride=stride, index=index, params=params, plan=np.array(terms, dtype=np.int64))
