@@ -573,7 +573,8 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
     Why this layout: the cube lattice's family table is the same for every length (``lattice.CUBE_FAMILIES``,
     compile-time constants here), so one loop over the faces computes all 18 families' springs of a face
     (pass 1: ``column_loop.family_springs_chunk``, generated from the table with its numbers as literals, which
-    numba compiles in a third of the time that 18 calls of an inlined per-family helper took) and one loop forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
+    numba compiles in a third of the time that 18 calls of an inlined per-family helper took) and one loop
+    forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
     both vectorised across faces (8 faces per 512-bit vector), chunk by chunk of CHUNK_FACES faces (one chunk
     up to 63 segments).  The spring groups (``group_spring_forces``) ran 8 spring loops and 12 sum loops per
     step, each start (set-up, run-time alias checks, the first iterations' latency) about 50 ns.  Pass 1
