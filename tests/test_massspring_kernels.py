@@ -560,13 +560,13 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
 
 
 def test_generated_column_loop_is_current():
-    """``column_loop.py`` (the spring pass written out from ``lattice.CUBE_FAMILIES``) is exactly what its generator
+    """``column_loop.py`` (the column loops written out from ``lattice.CUBE_FAMILIES``) is exactly what its generator
     gives today: a change to the family table or the generator without regenerating fails here (and the kernels'
     import refuses a file made from another table)."""
     from bench_myriapoda.bodies.massspring import column_codegen, column_loop
-    from bench_myriapoda.bodies.massspring.lattice import CUBE_FAMILIES
+    from bench_myriapoda.bodies.massspring.lattice import CUBE_FAMILIES, CUBE_PLAN
     assert column_codegen.TARGET.read_text() == column_codegen.render()
-    assert column_loop.CUBE_FAMILIES == CUBE_FAMILIES
+    assert column_loop.CUBE_FAMILIES == CUBE_FAMILIES and column_loop.CUBE_PLAN == CUBE_PLAN
 
 
 def test_lane_select_picks_bit_for_bit():

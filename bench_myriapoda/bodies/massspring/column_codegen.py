@@ -1,28 +1,31 @@
-"""Generator of ``column_loop.py``: the cube lattice's spring pass written out spring by spring.
+"""Generator of ``column_loop.py``: the cube lattice's two column loops written out spring by spring.
 
-The step kernel's first column loop (``kernels._column_forces_flat``, pass 1) computes the rest length and
-force of all 18 spring families of a face (``lattice.CUBE_FAMILIES``).  Written as 18 calls of an inlined
-helper taking each family's row as a constant tuple, numba spent about 11 of the kernel's 17 CPU s of
-compile in its IR inlining (the callee re-run through numba's front end at each call), the SSA
-reconstruction of the result and its type inference.  The generated loop holds the same floating-point
-operations in the same order with the family table's numbers as literals: no helper calls, no tuple
-indexing, no literal-typed constants per family (every integer offset is a uint64 variable made once
-before the loop), so numba types and lowers it as plain straight-line code.
+The step kernel's column loops (``kernels._column_forces_flat``) compute the rest length and force of all 18
+spring families of a face (pass 1, ``lattice.CUBE_FAMILIES``) and then the 12 force sums of a face (pass 2,
+``lattice.CUBE_PLAN``).  Written as 18 and 12 calls of inlined helpers taking each family's row or corner's
+plan as a constant tuple, the kernel took about 17 CPU s to compile: numba re-ran its front end on the
+helpers at each call and deep-copied their blocks (the branches of ``a if c else b``) with the whole scope,
+then reconstructed SSA form and typed the literal-typed integer arithmetic of every call.  The generated
+loops hold the same floating-point operations in the same order with the tables' numbers written in: no
+helper calls, no tuple indexing, every integer offset a uint64 variable made once before the loop (a
+literal per offset would be typed one by one), every name assigned once, and ``lane_select.select``
+instead of a branch, so numba types and lowers them as straight-line code.
 
-Regenerate after changing ``lattice.CUBE_FAMILIES`` or ``kernels.CHUNK_FACES``::
+Regenerate after changing ``lattice.CUBE_FAMILIES`` or ``CUBE_PLAN`` (the kernels refuse to import a file made
+from other tables)::
 
     python3 -m bench_myriapoda.bodies.massspring.column_codegen
 
 ``tests/test_massspring_kernels.py`` checks that the checked-in file is what ``render()`` gives today.
-(The file is a real module rather than an ``exec``'d string so that numba's on-disk cache, keyed by the
-function's source file, holds it.)
+The file is a real module rather than an ``exec``'d string so that numba's on-disk cache, keyed by the
+function's source file, holds it.
 """
 from __future__ import annotations
 
 import sys
 from pathlib import Path
 
-from .lattice import AXIAL, CROSS, CUBE_FAMILIES, PAR_D, PAR_K, PAR_L0, PAR_LC
+from .lattice import AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, PAR_D, PAR_K, PAR_L0, PAR_LC
 
 TARGET = Path(__file__).with_name("column_loop.py")
 
@@ -45,12 +48,12 @@ def render() -> str:
     n_fam = len(fams)
     out = []
     w = out.append
-    w('"""The cube lattice\'s spring pass, one face\'s 18 springs written out (GENERATED: do not edit).')
+    w('"""The cube lattice\'s column loops, spring by spring and term by term (GENERATED: do not edit).')
     w("")
-    w("Made by ``column_codegen.py`` from ``lattice.CUBE_FAMILIES``; regenerate with")
+    w("Made by ``column_codegen.py`` from ``lattice.CUBE_FAMILIES`` and ``CUBE_PLAN``; regenerate with")
     w("``python3 -m bench_myriapoda.bodies.massspring.column_codegen`` (a test checks that this file is current).")
     w("Each spring's operations are those of the per-family kernels ``kernels.family_rest_lengths`` and")
-    w("``family_spring_forces``, in their order; see ``family_springs_chunk``.")
+    w("``family_spring_forces``, in their order; see ``family_springs_chunk`` and ``node_sums_chunk``.")
     w('"""')
     w("import math")
     w("")
@@ -59,10 +62,15 @@ def render() -> str:
     w("")
     w("from .lane_select import select")
     w("")
-    w("# the table this file was generated from (``lattice.CUBE_FAMILIES``)")
+    w("# the tables this file was generated from (``lattice.CUBE_FAMILIES``, ``lattice.CUBE_PLAN``)")
     w("CUBE_FAMILIES = (")
-    for q in range(0, n_fam, 6):
-        w("    " + " ".join(f"{tuple(r)!r}," for r in fams[q:q + 6]))
+    for q in range(0, n_fam, 5):
+        w("    " + " ".join(f"{tuple(r)!r}," for r in fams[q:q + 5]))
+    w(")")
+    w("CUBE_PLAN = (")
+    for terms in CUBE_PLAN:
+        w("    (" + " ".join(f"{tuple(t)!r}," for t in terms[:5]))
+        w("     " + " ".join(f"{tuple(t)!r}," for t in terms[5:]) + "),")
     w(")")
     w("")
     w("")
@@ -156,7 +164,49 @@ def render() -> str:
         w(f"        live_{q} = length_{q} >= 1e-12")
         for e in AXES:
             w(f"        gq[g{q}{e} + j] = select(live_{q}, f_{q} * u{e}_{q}, 0.0)")
+    _render_sums(w, n_fam)
     return "\n".join(out) + "\n"
+
+
+def _render_sums(w, n_fam: int) -> None:
+    """Pass 2: ``node_sums_chunk``, each node's 9 terms of ``CUBE_PLAN`` as one left-to-right sum."""
+    w("")
+    w("")
+    w('@njit(cache=True, error_model="numpy", inline="always")')
+    w("def node_sums_chunk(gq, fcf, ps, row, t0, t1):")
+    w('    """Pass 2 of ``kernels._column_forces_flat`` for the faces t0 <= t < t1: the spring force [N] on the')
+    w("    node of corner c of face t, axis e, written to fcf[(4 e + c) ps + t] (fcf: the (3, 4, stride) forces")
+    w("    flat, ps = stride): the 9 terms (family q, sign s, shift b) of ``CUBE_PLAN[c]`` in their order,")
+    w("    starting from 0.0, each s * (family q's axis e in the chunk buffer gq, row length ``row``, at column")
+    w("    1 + t - t0 - b): the per-family kernel's sum term by term (x + (-1.0 * y) == x - y exactly).  A b end")
+    w("    reads its spring one column back (column 0: the face before the chunk, -0.0 before face 0: an exact")
+    w("    no-op).  ps, row: uint64.")
+    w('    """')
+    w("    one = np.uint64(1)")
+    w("    # fcf's row 4 e + c starts at (4 e + c) ps")
+    w("    o1 = ps")
+    for r in range(2, 12):
+        w(f"    o{r} = o{r - 1} + ps")
+    w("    # the chunk buffer's rows: family q's axis e at row 3 q + e (h<q><e>: its start)")
+    prev = None
+    for q in range(n_fam):
+        for e in range(3):
+            name = f"h{q}{AXES[e]}"
+            w(f"    {name} = " + ("row - row" if prev is None else f"{prev} + row"))
+            prev = name
+    w("    for t in range(t0, t1):")
+    w("        u = np.uint64(t)")
+    w("        j = np.uint64(t - t0)  # a b end's column (its spring's face is t - 1)")
+    w("        j1 = j + one  # an a end's column (face t)")
+    for e in range(3):
+        for c in range(4):
+            r = 4 * e + c
+            terms = [f"{float(sg)!r} * gq[h{q}{AXES[e]} + {'j' if b else 'j1'}]" for q, sg, b in CUBE_PLAN[c]]
+            w(f"        # corner {c}, axis {AXES[e]} (in parentheses, still summed left to right)")
+            head = "        fcf[" + (f"o{r} + u" if r else "u") + "] = ("
+            w(f"{head}0.0 + {' + '.join(terms[:3])}")
+            w(f"{' ' * (len(head) - 1)}+ {' + '.join(terms[3:6])}")
+            w(f"{' ' * (len(head) - 1)}+ {' + '.join(terms[6:])})")
 
 
 def main(argv=None) -> int:

@@ -1,9 +1,9 @@
-"""The cube lattice's spring pass, one face's 18 springs written out (GENERATED: do not edit).
+"""The cube lattice's column loops, spring by spring and term by term (GENERATED: do not edit).
 
-Made by ``column_codegen.py`` from ``lattice.CUBE_FAMILIES``; regenerate with
+Made by ``column_codegen.py`` from ``lattice.CUBE_FAMILIES`` and ``CUBE_PLAN``; regenerate with
 ``python3 -m bench_myriapoda.bodies.massspring.column_codegen`` (a test checks that this file is current).
 Each spring's operations are those of the per-family kernels ``kernels.family_rest_lengths`` and
-``family_spring_forces``, in their order; see ``family_springs_chunk``.
+``family_spring_forces``, in their order; see ``family_springs_chunk`` and ``node_sums_chunk``.
 """
 import math
 
@@ -12,11 +12,22 @@ from numba import njit
 
 from .lane_select import select
 
-# the table this file was generated from (``lattice.CUBE_FAMILIES``)
+# the tables this file was generated from (``lattice.CUBE_FAMILIES``, ``lattice.CUBE_PLAN``)
 CUBE_FAMILIES = (
-    (0, 0, 1, 0, 0, 0), (0, 1, 0, 1, 0, 1), (0, 1, 1, 2, 0, 1), (0, 2, 0, 1, 0, 2), (0, 2, 1, 2, 0, 2), (0, 3, 0, 1, 0, 3),
-    (1, 0, 1, 2, 0, 1), (1, 1, 1, 0, 1, 1), (1, 2, 0, 1, 1, 2), (1, 3, 0, 1, 1, 3), (1, 3, 1, 2, 1, 3), (2, 0, 1, 2, 0, 2),
-    (2, 2, 1, 0, 2, 2), (2, 3, 0, 1, 2, 3), (2, 3, 1, 2, 2, 3), (3, 1, 1, 2, 1, 3), (3, 2, 1, 2, 2, 3), (3, 3, 1, 0, 3, 3),
+    (0, 0, 1, 0, 0, 0), (0, 1, 0, 1, 0, 1), (0, 1, 1, 2, 0, 1), (0, 2, 0, 1, 0, 2), (0, 2, 1, 2, 0, 2),
+    (0, 3, 0, 1, 0, 3), (1, 0, 1, 2, 0, 1), (1, 1, 1, 0, 1, 1), (1, 2, 0, 1, 1, 2), (1, 3, 0, 1, 1, 3),
+    (1, 3, 1, 2, 1, 3), (2, 0, 1, 2, 0, 2), (2, 2, 1, 0, 2, 2), (2, 3, 0, 1, 2, 3), (2, 3, 1, 2, 2, 3),
+    (3, 1, 1, 2, 1, 3), (3, 2, 1, 2, 2, 3), (3, 3, 1, 0, 3, 3),
+)
+CUBE_PLAN = (
+    ((0, -1, 0), (0, 1, 1), (1, -1, 0), (2, -1, 0), (3, -1, 0),
+     (4, -1, 0), (5, -1, 0), (6, 1, 1), (11, 1, 1),),
+    ((1, 1, 0), (2, 1, 1), (6, -1, 0), (7, -1, 0), (7, 1, 1),
+     (8, -1, 0), (9, -1, 0), (10, -1, 0), (15, 1, 1),),
+    ((3, 1, 0), (4, 1, 1), (8, 1, 0), (11, -1, 0), (12, -1, 0),
+     (12, 1, 1), (13, -1, 0), (14, -1, 0), (16, 1, 1),),
+    ((5, 1, 0), (9, 1, 0), (10, 1, 1), (13, 1, 0), (14, 1, 1),
+     (15, -1, 0), (16, -1, 0), (17, -1, 0), (17, 1, 1),),
 )
 
 
@@ -555,3 +566,135 @@ def family_springs_chunk(xf, vf, dim, pf, ps, st, fs, gq, row, t0, t1):
         gq[g17x + j] = select(live_17, f_17 * ux_17, 0.0)
         gq[g17y + j] = select(live_17, f_17 * uy_17, 0.0)
         gq[g17z + j] = select(live_17, f_17 * uz_17, 0.0)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def node_sums_chunk(gq, fcf, ps, row, t0, t1):
+    """Pass 2 of ``kernels._column_forces_flat`` for the faces t0 <= t < t1: the spring force [N] on the
+    node of corner c of face t, axis e, written to fcf[(4 e + c) ps + t] (fcf: the (3, 4, stride) forces
+    flat, ps = stride): the 9 terms (family q, sign s, shift b) of ``CUBE_PLAN[c]`` in their order,
+    starting from 0.0, each s * (family q's axis e in the chunk buffer gq, row length ``row``, at column
+    1 + t - t0 - b): the per-family kernel's sum term by term (x + (-1.0 * y) == x - y exactly).  A b end
+    reads its spring one column back (column 0: the face before the chunk, -0.0 before face 0: an exact
+    no-op).  ps, row: uint64.
+    """
+    one = np.uint64(1)
+    # fcf's row 4 e + c starts at (4 e + c) ps
+    o1 = ps
+    o2 = o1 + ps
+    o3 = o2 + ps
+    o4 = o3 + ps
+    o5 = o4 + ps
+    o6 = o5 + ps
+    o7 = o6 + ps
+    o8 = o7 + ps
+    o9 = o8 + ps
+    o10 = o9 + ps
+    o11 = o10 + ps
+    # the chunk buffer's rows: family q's axis e at row 3 q + e (h<q><e>: its start)
+    h0x = row - row
+    h0y = h0x + row
+    h0z = h0y + row
+    h1x = h0z + row
+    h1y = h1x + row
+    h1z = h1y + row
+    h2x = h1z + row
+    h2y = h2x + row
+    h2z = h2y + row
+    h3x = h2z + row
+    h3y = h3x + row
+    h3z = h3y + row
+    h4x = h3z + row
+    h4y = h4x + row
+    h4z = h4y + row
+    h5x = h4z + row
+    h5y = h5x + row
+    h5z = h5y + row
+    h6x = h5z + row
+    h6y = h6x + row
+    h6z = h6y + row
+    h7x = h6z + row
+    h7y = h7x + row
+    h7z = h7y + row
+    h8x = h7z + row
+    h8y = h8x + row
+    h8z = h8y + row
+    h9x = h8z + row
+    h9y = h9x + row
+    h9z = h9y + row
+    h10x = h9z + row
+    h10y = h10x + row
+    h10z = h10y + row
+    h11x = h10z + row
+    h11y = h11x + row
+    h11z = h11y + row
+    h12x = h11z + row
+    h12y = h12x + row
+    h12z = h12y + row
+    h13x = h12z + row
+    h13y = h13x + row
+    h13z = h13y + row
+    h14x = h13z + row
+    h14y = h14x + row
+    h14z = h14y + row
+    h15x = h14z + row
+    h15y = h15x + row
+    h15z = h15y + row
+    h16x = h15z + row
+    h16y = h16x + row
+    h16z = h16y + row
+    h17x = h16z + row
+    h17y = h17x + row
+    h17z = h17y + row
+    for t in range(t0, t1):
+        u = np.uint64(t)
+        j = np.uint64(t - t0)  # a b end's column (its spring's face is t - 1)
+        j1 = j + one  # an a end's column (face t)
+        # corner 0, axis x (in parentheses, still summed left to right)
+        fcf[u] = (0.0 + -1.0 * gq[h0x + j1] + 1.0 * gq[h0x + j] + -1.0 * gq[h1x + j1]
+                 + -1.0 * gq[h2x + j1] + -1.0 * gq[h3x + j1] + -1.0 * gq[h4x + j1]
+                 + -1.0 * gq[h5x + j1] + 1.0 * gq[h6x + j] + 1.0 * gq[h11x + j])
+        # corner 1, axis x (in parentheses, still summed left to right)
+        fcf[o1 + u] = (0.0 + 1.0 * gq[h1x + j1] + 1.0 * gq[h2x + j] + -1.0 * gq[h6x + j1]
+                      + -1.0 * gq[h7x + j1] + 1.0 * gq[h7x + j] + -1.0 * gq[h8x + j1]
+                      + -1.0 * gq[h9x + j1] + -1.0 * gq[h10x + j1] + 1.0 * gq[h15x + j])
+        # corner 2, axis x (in parentheses, still summed left to right)
+        fcf[o2 + u] = (0.0 + 1.0 * gq[h3x + j1] + 1.0 * gq[h4x + j] + 1.0 * gq[h8x + j1]
+                      + -1.0 * gq[h11x + j1] + -1.0 * gq[h12x + j1] + 1.0 * gq[h12x + j]
+                      + -1.0 * gq[h13x + j1] + -1.0 * gq[h14x + j1] + 1.0 * gq[h16x + j])
+        # corner 3, axis x (in parentheses, still summed left to right)
+        fcf[o3 + u] = (0.0 + 1.0 * gq[h5x + j1] + 1.0 * gq[h9x + j1] + 1.0 * gq[h10x + j]
+                      + 1.0 * gq[h13x + j1] + 1.0 * gq[h14x + j] + -1.0 * gq[h15x + j1]
+                      + -1.0 * gq[h16x + j1] + -1.0 * gq[h17x + j1] + 1.0 * gq[h17x + j])
+        # corner 0, axis y (in parentheses, still summed left to right)
+        fcf[o4 + u] = (0.0 + -1.0 * gq[h0y + j1] + 1.0 * gq[h0y + j] + -1.0 * gq[h1y + j1]
+                      + -1.0 * gq[h2y + j1] + -1.0 * gq[h3y + j1] + -1.0 * gq[h4y + j1]
+                      + -1.0 * gq[h5y + j1] + 1.0 * gq[h6y + j] + 1.0 * gq[h11y + j])
+        # corner 1, axis y (in parentheses, still summed left to right)
+        fcf[o5 + u] = (0.0 + 1.0 * gq[h1y + j1] + 1.0 * gq[h2y + j] + -1.0 * gq[h6y + j1]
+                      + -1.0 * gq[h7y + j1] + 1.0 * gq[h7y + j] + -1.0 * gq[h8y + j1]
+                      + -1.0 * gq[h9y + j1] + -1.0 * gq[h10y + j1] + 1.0 * gq[h15y + j])
+        # corner 2, axis y (in parentheses, still summed left to right)
+        fcf[o6 + u] = (0.0 + 1.0 * gq[h3y + j1] + 1.0 * gq[h4y + j] + 1.0 * gq[h8y + j1]
+                      + -1.0 * gq[h11y + j1] + -1.0 * gq[h12y + j1] + 1.0 * gq[h12y + j]
+                      + -1.0 * gq[h13y + j1] + -1.0 * gq[h14y + j1] + 1.0 * gq[h16y + j])
+        # corner 3, axis y (in parentheses, still summed left to right)
+        fcf[o7 + u] = (0.0 + 1.0 * gq[h5y + j1] + 1.0 * gq[h9y + j1] + 1.0 * gq[h10y + j]
+                      + 1.0 * gq[h13y + j1] + 1.0 * gq[h14y + j] + -1.0 * gq[h15y + j1]
+                      + -1.0 * gq[h16y + j1] + -1.0 * gq[h17y + j1] + 1.0 * gq[h17y + j])
+        # corner 0, axis z (in parentheses, still summed left to right)
+        fcf[o8 + u] = (0.0 + -1.0 * gq[h0z + j1] + 1.0 * gq[h0z + j] + -1.0 * gq[h1z + j1]
+                      + -1.0 * gq[h2z + j1] + -1.0 * gq[h3z + j1] + -1.0 * gq[h4z + j1]
+                      + -1.0 * gq[h5z + j1] + 1.0 * gq[h6z + j] + 1.0 * gq[h11z + j])
+        # corner 1, axis z (in parentheses, still summed left to right)
+        fcf[o9 + u] = (0.0 + 1.0 * gq[h1z + j1] + 1.0 * gq[h2z + j] + -1.0 * gq[h6z + j1]
+                      + -1.0 * gq[h7z + j1] + 1.0 * gq[h7z + j] + -1.0 * gq[h8z + j1]
+                      + -1.0 * gq[h9z + j1] + -1.0 * gq[h10z + j1] + 1.0 * gq[h15z + j])
+        # corner 2, axis z (in parentheses, still summed left to right)
+        fcf[o10 + u] = (0.0 + 1.0 * gq[h3z + j1] + 1.0 * gq[h4z + j] + 1.0 * gq[h8z + j1]
+                       + -1.0 * gq[h11z + j1] + -1.0 * gq[h12z + j1] + 1.0 * gq[h12z + j]
+                       + -1.0 * gq[h13z + j1] + -1.0 * gq[h14z + j1] + 1.0 * gq[h16z + j])
+        # corner 3, axis z (in parentheses, still summed left to right)
+        fcf[o11 + u] = (0.0 + 1.0 * gq[h5z + j1] + 1.0 * gq[h9z + j1] + 1.0 * gq[h10z + j]
+                       + 1.0 * gq[h13z + j1] + 1.0 * gq[h14z + j] + -1.0 * gq[h15z + j1]
+                       + -1.0 * gq[h16z + j1] + -1.0 * gq[h17z + j1] + 1.0 * gq[h17z + j])

@@ -70,7 +70,7 @@ from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
 from . import column_loop
-from .column_loop import family_springs_chunk
+from .column_loop import family_springs_chunk, node_sums_chunk
 from .lattice import (AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT,
                       GRP_DROW, GRP_HI, GRP_KIND, GRP_LO, GRP_SHIFT, PAR_D, PAR_K, PAR_L0, PAR_LC, PLAN_BACK, PLAN_GROUP,
                       PLAN_SIGN, SIDE_FACES)
@@ -460,8 +460,8 @@ def _group_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, grp
 
 
 N_FAMILIES = len(CUBE_FAMILIES)  # 18
-if column_loop.CUBE_FAMILIES != CUBE_FAMILIES:  # the generated spring pass must be today's table
-    raise ImportError("bodies/massspring/column_loop.py was generated from another lattice.CUBE_FAMILIES; "
+if column_loop.CUBE_FAMILIES != CUBE_FAMILIES or column_loop.CUBE_PLAN != CUBE_PLAN:  # today's tables
+    raise ImportError("bodies/massspring/column_loop.py was generated from other lattice tables; "
                       "regenerate it: python3 -m bench_myriapoda.bodies.massspring.column_codegen")
 # Faces per chunk of the column loops (``_column_forces_flat``): the families' forces of one chunk live in a
 # stack buffer of N_FAMILIES * 3 rows of CHUNK_ROW doubles (28 kB), column 0 holding the springs of the face
@@ -527,26 +527,6 @@ def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, c
             st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _node_sum(gq, e, w, plan):
-    """Axis e of the spring force [N] on the node of corner c at column w of the chunk buffer gq: the 9 terms
-    of plan = ``lattice.CUBE_PLAN[c]`` (compile-time constants, the row passed rather than indexed here) in their
-    order, starting from 0.0 (x + (-1.0 * y) == x - y exactly: ``family_spring_forces``' sum, term by
-    term).  A b end reads its spring one column back (column 0: the face before the chunk; -0.0 before
-    face 0, an exact no-op)."""
-    (q0, s0, b0), (q1, s1, b1), (q2, s2, b2), (q3, s3, b3), (q4, s4, b4), (q5, s5, b5), (q6, s6, b6), \
-        (q7, s7, b7), (q8, s8, b8) = plan
-    a = 0.0 + float(s0) * gq[np.uint64((3 * q0 + e) * CHUNK_ROW + 1 - b0) + w]
-    a = a + float(s1) * gq[np.uint64((3 * q1 + e) * CHUNK_ROW + 1 - b1) + w]
-    a = a + float(s2) * gq[np.uint64((3 * q2 + e) * CHUNK_ROW + 1 - b2) + w]
-    a = a + float(s3) * gq[np.uint64((3 * q3 + e) * CHUNK_ROW + 1 - b3) + w]
-    a = a + float(s4) * gq[np.uint64((3 * q4 + e) * CHUNK_ROW + 1 - b4) + w]
-    a = a + float(s5) * gq[np.uint64((3 * q5 + e) * CHUNK_ROW + 1 - b5) + w]
-    a = a + float(s6) * gq[np.uint64((3 * q6 + e) * CHUNK_ROW + 1 - b6) + w]
-    a = a + float(s7) * gq[np.uint64((3 * q7 + e) * CHUNK_ROW + 1 - b7) + w]
-    return a + float(s8) * gq[np.uint64((3 * q8 + e) * CHUNK_ROW + 1 - b8) + w]
-
-
 @njit(cache=True, error_model="numpy")
 def column_spring_forces(act, volume_conserving, xc, vc, fparams, face_scale, st, fs, fc):
     """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
@@ -574,7 +554,8 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
     compile-time constants here), so one loop over the faces computes all 18 families' springs of a face
     (pass 1: ``column_loop.family_springs_chunk``, generated from the table with its numbers as literals, which
     numba compiles in a third of the time that 18 calls of an inlined per-family helper took) and one loop
-    forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
+    forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2, ``node_sums_chunk``, also
+    generated),
     both vectorised across faces (8 faces per 512-bit vector), chunk by chunk of CHUNK_FACES faces (one chunk
     up to 63 segments).  The spring groups (``group_spring_forces``) ran 8 spring loops and 12 sum loops per
     step, each start (set-up, run-time alias checks, the first iterations' latency) about 50 ns.  Pass 1
@@ -602,21 +583,7 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
                 gq[3 * q * CHUNK_ROW + last] = 0.0
                 gq[(3 * q + 1) * CHUNK_ROW + last] = 0.0
                 gq[(3 * q + 2) * CHUNK_ROW + last] = 0.0
-        for t in range(t0, t1):
-            u = np.uint64(t)
-            w = np.uint64(t - t0)
-            fcf[u] = _node_sum(gq, 0, w, CUBE_PLAN[0])
-            fcf[ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[1])
-            fcf[np.uint64(2) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[2])
-            fcf[np.uint64(3) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[3])
-            fcf[np.uint64(4) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[0])
-            fcf[np.uint64(5) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[1])
-            fcf[np.uint64(6) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[2])
-            fcf[np.uint64(7) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[3])
-            fcf[np.uint64(8) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[0])
-            fcf[np.uint64(9) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[1])
-            fcf[np.uint64(10) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[2])
-            fcf[np.uint64(11) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[3])
+        node_sums_chunk(gq, fcf, ps, np.uint64(CHUNK_ROW), t0, t1)
 
 
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
