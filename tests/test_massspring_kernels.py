@@ -537,3 +537,28 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
     dt, g = body.phys[K.DT], body.phys[K.GRAVITY]
     free_fall = vc[1, :4, :n_faces] + dt * (fc[1, :, :n_faces] * imc[:, :n_faces] - g)
     assert np.array_equal(va[1, :4, :n_faces][lifted], free_fall[lifted])
+
+
+def test_generated_column_loop_is_current():
+    """``column_loop.py`` (the column loops written out from ``lattice.CUBE_FAMILIES``) is exactly what its generator
+    gives today: a change to the family table or the generator without regenerating fails here (and the kernels'
+    import refuses a file made from another table)."""
+    from bench_myriapoda.bodies.massspring import column_codegen, column_loop
+    from bench_myriapoda.bodies.massspring.lattice import CUBE_FAMILIES, CUBE_PLAN
+    assert column_codegen.TARGET.read_text() == column_codegen.render()
+    assert column_loop.CUBE_FAMILIES == CUBE_FAMILIES and column_loop.CUBE_PLAN == CUBE_PLAN
+
+
+def test_lane_select_picks_bit_for_bit():
+    """``lane_select.select`` is ``a if c else b`` exactly: signed zeros, NaN and infinities come through unchanged."""
+    from numba import njit
+    from bench_myriapoda.bodies.massspring.lane_select import select
+
+    @njit
+    def pick(c, a, b):
+        return select(c, a, b)
+
+    for a, b in ((1.5, -0.0), (-0.0, 0.0), (np.nan, 2.0), (np.inf, -np.inf)):
+        for c in (True, False):
+            got, want = np.float64(pick(c, a, b)), np.float64(a if c else b)
+            assert got.view(np.int64) == want.view(np.int64)

@@ -29,7 +29,8 @@ all springs joining corner a of face t to corner b of face t + shift) then joins
 row to i + (b - a) stride + shift.  The cube lattice has the same 18 families for every length
 (``lattice.CUBE_FAMILIES``), so the step (``_column_forces_flat``) takes the family table and each
 corner's summation order (``lattice.CUBE_PLAN``) as compile-time constants and runs two loops over the
-faces: one computes the rest length and force of all 18 families' springs of a face, one forms the 12
+faces: one computes the rest length and force of all 18 families' springs of a face (written out spring
+by spring in the generated ``column_loop.py``), one forms the 12
 force sums (4 corners x 3 axes) of a face.  Both vectorise across faces (sqrt and divisions in SIMD
 lanes, 8 faces per 512-bit vector; the divider bounds the first at about 45 ns per segment), and they
 replace the 8 spring-group loops and 12 sum loops of a previous layout (spring groups: families merged
@@ -68,6 +69,8 @@ from ..contact_kernels import collide_path, contact_friction
 from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
+from . import column_loop
+from .column_loop import family_springs_chunk, node_sums_chunk
 from .lattice import (AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT,
                       PAR_D, PAR_K, PAR_L0, PAR_LC, SIDE_FACES)
 
@@ -338,6 +341,9 @@ def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
 
 
 N_FAMILIES = len(CUBE_FAMILIES)  # 18
+if column_loop.CUBE_FAMILIES != CUBE_FAMILIES or column_loop.CUBE_PLAN != CUBE_PLAN:  # today's tables
+    raise ImportError("bodies/massspring/column_loop.py was generated from other lattice tables; "
+                      "regenerate it: python3 -m bench_myriapoda.bodies.massspring.column_codegen")
 # Faces per chunk of the column loops (``_column_forces_flat``): the families' forces of one chunk live in a
 # stack buffer of N_FAMILIES * 3 rows of CHUNK_ROW doubles (28 kB), column 0 holding the springs of the face
 # before the chunk.
@@ -402,57 +408,6 @@ def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, c
             st[3 * stride + t] = max(1.0 + a0 + a1 * 1.0 + a2 * 1.0, MIN_STRETCH)
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, q, fam):
-    """Spring u [face] of cube family q: its rest length [m] (``family_rest_lengths``' operations for the
-    family's kind) and its force f u [N] (``_group_spring``), written to gq[(3 q + e) CHUNK_ROW + 1 + w] for
-    the axes e (w: the face's column in the chunk buffer gq).  fam = ``lattice.CUBE_FAMILIES[q]``: q and fam
-    are compile-time constants at every call; the row is passed rather than indexed here because numba
-    indexes a tuple with an argument through a helper call, and in a process that had loaded other cached
-    kernels first that call was still in the loop when LLVM's vectoriser ran (the loop stayed scalar).
-    Springs past the family's last face get what their zero params give (the caller overwrites the one a
-    real node reads).  pf: ``SpringFamilies.params`` (4, 18, stride) taken flat (ps = stride, uint64);
-    st, fs: the fibre stretches by corner row and the face scales (row 0 of fs, read at u + 1 too)."""
-    a, b, s, kind, ca, cb = fam
-    uq = np.uint64(q)
-    k = pf[(np.uint64(PAR_K * N_FAMILIES) + uq) * ps + u]
-    d = pf[(np.uint64(PAR_D * N_FAMILIES) + uq) * ps + u]
-    if kind == AXIAL:
-        rest = pf[(np.uint64(PAR_L0 * N_FAMILIES) + uq) * ps + u] * st[np.uint64(ca) * ps + u]
-    elif kind == CROSS:
-        rest = pf[(np.uint64(PAR_LC * N_FAMILIES) + uq) * ps + u] * fs[u]
-    else:
-        axial = pf[(np.uint64(PAR_L0 * N_FAMILIES) + uq) * ps + u] * 0.5 * (st[np.uint64(ca) * ps + u]
-                                                                          + st[np.uint64(cb) * ps + u])
-        cross = pf[(np.uint64(PAR_LC * N_FAMILIES) + uq) * ps + u] * 0.5 * (fs[u] + fs[u + np.uint64(1)])
-        rest = math.sqrt(axial * axial + cross * cross)
-    gx, gy, gz = _group_spring(xf, vf, dim, np.uint64(a) * ps + u, np.uint64(b) * ps + np.uint64(s) + u, k, d, rest)
-    o = np.uint64(3 * q * CHUNK_ROW + 1) + w
-    gq[o] = gx
-    gq[o + np.uint64(CHUNK_ROW)] = gy
-    gq[o + np.uint64(2 * CHUNK_ROW)] = gz
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def _node_sum(gq, e, w, plan):
-    """Axis e of the spring force [N] on the node of corner c at column w of the chunk buffer gq: the 9 terms
-    of plan = ``lattice.CUBE_PLAN[c]`` (compile-time constants, passed as for ``_family_spring``) in their
-    order, starting from 0.0 (x + (-1.0 * y) == x - y exactly: ``family_spring_forces``' sum, term by
-    term).  A b end reads its spring one column back (column 0: the face before the chunk; -0.0 before
-    face 0, an exact no-op)."""
-    (q0, s0, b0), (q1, s1, b1), (q2, s2, b2), (q3, s3, b3), (q4, s4, b4), (q5, s5, b5), (q6, s6, b6), \
-        (q7, s7, b7), (q8, s8, b8) = plan
-    a = 0.0 + float(s0) * gq[np.uint64((3 * q0 + e) * CHUNK_ROW + 1 - b0) + w]
-    a = a + float(s1) * gq[np.uint64((3 * q1 + e) * CHUNK_ROW + 1 - b1) + w]
-    a = a + float(s2) * gq[np.uint64((3 * q2 + e) * CHUNK_ROW + 1 - b2) + w]
-    a = a + float(s3) * gq[np.uint64((3 * q3 + e) * CHUNK_ROW + 1 - b3) + w]
-    a = a + float(s4) * gq[np.uint64((3 * q4 + e) * CHUNK_ROW + 1 - b4) + w]
-    a = a + float(s5) * gq[np.uint64((3 * q5 + e) * CHUNK_ROW + 1 - b5) + w]
-    a = a + float(s6) * gq[np.uint64((3 * q6 + e) * CHUNK_ROW + 1 - b6) + w]
-    a = a + float(s7) * gq[np.uint64((3 * q7 + e) * CHUNK_ROW + 1 - b7) + w]
-    return a + float(s8) * gq[np.uint64((3 * q8 + e) * CHUNK_ROW + 1 - b8) + w]
-
-
 @njit(cache=True, error_model="numpy")
 def column_spring_forces(act, volume_conserving, xc, vc, fparams, face_scale, st, fs, fc):
     """Overwrite ``fc`` (3, 4, stride) [N] with the lattice's spring forces: ``family_rest_lengths`` and
@@ -478,7 +433,10 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
 
     Why this layout: the cube lattice's family table is the same for every length (``lattice.CUBE_FAMILIES``,
     compile-time constants here), so one loop over the faces computes all 18 families' springs of a face
-    (pass 1) and one loop forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2),
+    (pass 1: ``column_loop.family_springs_chunk``, generated from the table with its numbers as literals, which
+    numba compiles in a third of the time that 18 calls of an inlined per-family helper took) and one loop
+    forms all 12 sums (4 corners x 3 axes, ``lattice.CUBE_PLAN``) of a face (pass 2, ``node_sums_chunk``, also
+    generated),
     both vectorised across faces (8 faces per 512-bit vector), chunk by chunk of CHUNK_FACES faces (one chunk
     up to 63 segments).  The previous layout's spring groups ran 8 spring loops and 12 sum loops per
     step, each start (set-up, run-time alias checks, the first iterations' latency) about 50 ns.  Pass 1
@@ -498,27 +456,7 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
             for r in range(CHUNK_ROWS):
                 gq[r * CHUNK_ROW] = gq[r * CHUNK_ROW + CHUNK_FACES]
         t1 = min(t0 + CHUNK_FACES, stride)  # range(t0, t1): with t0 + range(m) LLVM left pass 1 scalar
-        for t in range(t0, t1):
-            u = np.uint64(t)
-            w = np.uint64(t - t0)
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 0, CUBE_FAMILIES[0])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 1, CUBE_FAMILIES[1])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 2, CUBE_FAMILIES[2])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 3, CUBE_FAMILIES[3])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 4, CUBE_FAMILIES[4])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 5, CUBE_FAMILIES[5])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 6, CUBE_FAMILIES[6])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 7, CUBE_FAMILIES[7])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 8, CUBE_FAMILIES[8])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 9, CUBE_FAMILIES[9])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 10, CUBE_FAMILIES[10])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 11, CUBE_FAMILIES[11])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 12, CUBE_FAMILIES[12])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 13, CUBE_FAMILIES[13])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 14, CUBE_FAMILIES[14])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 15, CUBE_FAMILIES[15])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 16, CUBE_FAMILIES[16])
-            _family_spring(xf, vf, dim, pf, ps, st, fs, gq, u, w, 17, CUBE_FAMILIES[17])
+        family_springs_chunk(xf, vf, dim, pf, ps, st, fs, gq, np.uint64(CHUNK_ROW), t0, t1)
         if t0 <= n_faces - 1 < t1:  # the shifted families have no spring on the last face: its a ends subtract +0.0
             last = (n_faces - 1 - t0) + 1
             for i in range(SHIFTED_FAMILIES.shape[0]):
@@ -526,21 +464,7 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
                 gq[3 * q * CHUNK_ROW + last] = 0.0
                 gq[(3 * q + 1) * CHUNK_ROW + last] = 0.0
                 gq[(3 * q + 2) * CHUNK_ROW + last] = 0.0
-        for t in range(t0, t1):
-            u = np.uint64(t)
-            w = np.uint64(t - t0)
-            fcf[u] = _node_sum(gq, 0, w, CUBE_PLAN[0])
-            fcf[ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[1])
-            fcf[np.uint64(2) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[2])
-            fcf[np.uint64(3) * ps + u] = _node_sum(gq, 0, w, CUBE_PLAN[3])
-            fcf[np.uint64(4) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[0])
-            fcf[np.uint64(5) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[1])
-            fcf[np.uint64(6) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[2])
-            fcf[np.uint64(7) * ps + u] = _node_sum(gq, 1, w, CUBE_PLAN[3])
-            fcf[np.uint64(8) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[0])
-            fcf[np.uint64(9) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[1])
-            fcf[np.uint64(10) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[2])
-            fcf[np.uint64(11) * ps + u] = _node_sum(gq, 2, w, CUBE_PLAN[3])
+        node_sums_chunk(gq, fcf, ps, np.uint64(CHUNK_ROW), t0, t1)
 
 
 # rows of the batched node pass's work array (``advance``: n_nodes columns)
