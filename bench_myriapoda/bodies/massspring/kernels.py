@@ -322,24 +322,6 @@ def family_spring_forces(xc, vc, fam, params, rest, dfs, fc):
                 fb[t] += g[t]
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _group_spring(xf, vf, dim, ia, ib, k, d, rest):
-    """The force f u of the spring from flat index ia (its a end) to ib (its b end) of the flat
-    corner-major arrays xf, vf (axis stride ``dim``): ``family_spring_forces``'s arithmetic, operation
-    by operation (a spring shorter than 1e-12 m pulls nothing).  Indices are uint64: a signed index plus a
-    run-time offset could be negative to numba, whose wrap-around select turns the loads into gathers."""
-    dim2 = dim + dim
-    dx = xf[ib] - xf[ia]
-    dy = xf[dim + ib] - xf[dim + ia]
-    dz = xf[dim2 + ib] - xf[dim2 + ia]
-    length = math.sqrt(dx * dx + dy * dy + dz * dz)
-    ux, uy, uz = dx / length, dy / length, dz / length
-    ldot = (vf[ib] - vf[ia]) * ux + (vf[dim + ib] - vf[dim + ia]) * uy + (vf[dim2 + ib] - vf[dim2 + ia]) * uz
-    f = k * (rest - length) - d * ldot
-    live = length >= 1e-12
-    return (f * ux if live else 0.0), (f * uy if live else 0.0), (f * uz if live else 0.0)
-
-
 N_FAMILIES = len(CUBE_FAMILIES)  # 18
 if column_loop.CUBE_FAMILIES != CUBE_FAMILIES or column_loop.CUBE_PLAN != CUBE_PLAN:  # today's tables
     raise ImportError("bodies/massspring/column_loop.py was generated from other lattice tables; "
@@ -848,7 +830,7 @@ def advance(x, v, inv_mass, fparams, act_buf,
     for f in range(n_faces):
         for c in range(4):
             imc[c * stride + f] = inv_mass[4 * f + c]
-    # flat views for the spring groups and the batched node pass, made once per call (a view costs a reference count)
+    # flat views for the column loops and the batched node pass, made once per call (a view costs a reference count)
     xf, vf, ff = xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size)
     xd, fd, wlu = np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl)
     osx = np.uint64(B_SX) * wlu
