@@ -359,11 +359,11 @@ def _chunk_buffer(typingctx):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, copies):
+def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs):
     """The fibre stretches and face scales of the step's muscle strains (row ``row`` of act_buf (n_rows, n_seg, 3),
     read in place): ``fibre_stretch`` and ``face_scales``' operations in one loop over the faces.  Writes
-    face_scale[t] (n_faces,), st[c * stride + t] (corner c's fibre of segment t) and ``copies`` copies of the
-    face scale, fs[c * stride + t] for c < copies."""
+    face_scale[t] (n_faces,), st[c * stride + t] (corner c's fibre of segment t) and the face scale again to
+    fs[t] (the column loops read fs[t] and fs[t + 1] up to t + 1 = stride, so fs is longer than stride)."""
     n_seg = act_buf.shape[1]
     n_faces = n_seg + 1
     for t in range(n_faces):
@@ -380,8 +380,7 @@ def _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, c
         else:
             scale = 1.0
         face_scale[t] = scale
-        for c in range(copies):
-            fs[c * stride + t] = scale
+        fs[t] = scale
         if t < n_seg:  # fibre_stretch of the four corners' fibres of segment t
             a0, a1, a2 = act_buf[row, t, 0], act_buf[row, t, 1], act_buf[row, t, 2]
             st[t] = max(1.0 + a0 + a1 * -1.0 + a2 * -1.0, MIN_STRETCH)
@@ -428,7 +427,7 @@ def _column_forces_flat(act_buf, row, volume_conserving, xf, vf, dim, stride, pf
     sum are those of the families (module docstring), so the forces are the same bits; a spring that does
     not exist is an exact no-op, +0.0 where subtracted and -0.0 where added."""
     n_faces = act_buf.shape[1] + 1
-    _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs, 1)
+    _face_factors(act_buf, row, volume_conserving, stride, face_scale, st, fs)
     gq = carray(_chunk_buffer(), (CHUNK_ROWS * CHUNK_ROW,))
     for r in range(CHUNK_ROWS):
         gq[r * CHUNK_ROW] = -0.0
