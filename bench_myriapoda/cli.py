@@ -26,6 +26,7 @@ from typing import Any, Sequence
 
 from .core import registry
 from .core.config import creature_names, load_creature_file, resolve_case, scenario_paths
+from .cli_help import QUICK_SET_TIME, _para, help_text, validate_description
 from .core.errors import InputError
 from .harness.progress import MatrixProgress, ProgressBar
 
@@ -36,23 +37,68 @@ EXIT_CLOSED_PIPE = 128 + 13  # what a shell reports for a process ended by SIGPI
 QUICK_MATRIX = "quick"
 QUICK_OUT = Path("reports") / "quick"
 
+MAIN_DESCRIPTION = """A research benchmark suite for simulated creatures: Miller's worms and snakes (SIGGRAPH 1988) and
+    Fang, Jiang and Terzopoulos's myriapods (SCA 2013) on interchangeable body models (mass-spring lattice, FEM,
+    rigid/FEM hybrid). It measures speed, gait quality, stability and throughput and stores every run. With no
+    arguments it runs the quick matrix and writes reports/quick/index.html. `bench-myriapoda COMMAND --help`
+    describes each command."""
+MAIN_EPILOG = """examples:
+  bench-myriapoda
+  bench-myriapoda list
+  bench-myriapoda run --creature worm --body massspring --scenario flat
+  bench-myriapoda validate --quick
+  bench-myriapoda run --help
+"""
+
 TABLE_METRICS = ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg", "slip_ratio",
                  "path_following_error_bl", "contact_fraction", "t_fail_s", "posture_fault")
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse that reports bad flags as an InputError (one line, exit 2)."""
+    """argparse that reports bad flags as an InputError (one line, exit 2, the program named once), with a
+    suggestion for a misspelt subcommand or flag; ``describe`` fills the description when help is printed."""
+
+    describe = None
+
+    def parse_known_args(self, args=None, namespace=None):
+        self._argv = list(sys.argv[1:] if args is None else args)
+        return super().parse_known_args(args, namespace)
+
+    def format_help(self) -> str:
+        if self.describe is not None:
+            self.description = self.describe()
+        return super().format_help()
 
     def error(self, message: str):
-        raise InputError(self.prog, None, message)
+        from .core.suggest import did_you_mean
+
+        # the top-level parser's prog is the program itself, which the caller prints once already
+        where = self.prog.removeprefix("bench-myriapoda").strip() or "arguments"
+        if where == "arguments" and message.startswith("argument ") and ": " in message:
+            where, message = message.split(": ", 1)
+        commands = next((a.choices for a in self._actions if isinstance(a, argparse._SubParsersAction)), {})
+        if "invalid choice" in message and commands:
+            word = message.split("invalid choice: ", 1)[1].split(" (", 1)[0].strip("'\"")
+            message += did_you_mean(word, commands)
+        elif message.startswith("unrecognized arguments"):
+            argv = getattr(self, "_argv", [])
+            sub = commands.get(next((a for a in argv if a in commands), None), self)
+            flags = [o for a in sub._actions for o in a.option_strings]
+            word = next((w.split("=", 1)[0] for w in message.split(":", 1)[1].split() if w.startswith("-")), "")
+            if sub is not self:
+                where = sub.prog.removeprefix("bench-myriapoda").strip()
+            message += did_you_mean(word, flags)
+        raise InputError(where, None, message)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="bench-myriapoda", description="Benchmark suite for simulated myriapods, worms and snakes.")
+    p = _Parser(prog="bench-myriapoda", description=_para(MAIN_DESCRIPTION), epilog=MAIN_EPILOG,
+                formatter_class=argparse.RawDescriptionHelpFormatter)
     _version_argument(p)
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
 
-    ls = sub.add_parser("list", help="creatures, bodies, gaits, scenarios and supported combinations")
+    ls = sub.add_parser("list", help="creatures, bodies, gaits, scenarios and supported combinations",
+                        **help_text("list"))
     ls.add_argument("--json", action="store_true", help="print one JSON object")
 
     run = sub.add_parser("run", help="run one case", **_run_help_text())
@@ -78,7 +124,8 @@ def build_parser() -> argparse.ArgumentParser:
                           "view whose camera follows the creature")
     _budget_arguments(run)
 
-    sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)")
+    sd = sub.add_parser("stable-dt", help="largest time step for which a case stays stable (bisection)",
+                        **help_text("stable-dt"))
     _case_arguments(sd)
     sd.add_argument("--rel-tol", type=float, default=0.05, help="stop when the bracket is tighter than this (default 0.05)")
     sd.add_argument("--max-runs", type=int, default=24, help="at most this many runs (default 24)")
@@ -88,11 +135,12 @@ def build_parser() -> argparse.ArgumentParser:
     _budget_arguments(sd)
 
     q = sub.add_parser("quick", help="run scenarios/matrix/quick.toml and write reports/quick/index.html "
-                                     "(also what no arguments do)")
+                                     "(also what no arguments do)", **help_text("quick"))
     q.add_argument("--out", metavar="DIR", default=str(QUICK_OUT), help=f"output directory (default {QUICK_OUT})")
     q.add_argument("--workers", type=int, metavar="N", default=None, help="worker processes (default: CPU count)")
 
-    mx = sub.add_parser("matrix", help="run a scenario matrix (scenarios/matrix/NAME.toml) on a process pool or Dask")
+    mx = sub.add_parser("matrix", help="run a scenario matrix (scenarios/matrix/NAME.toml) on a process pool or Dask",
+                        **help_text("matrix"))
     mx.add_argument("file", metavar="FILE", help="matrix file (.toml) or a name in scenarios/matrix/")
     mx.add_argument("--executor", choices=("local", "dask"), default="local",
                     help="local: a process pool on this machine (default); dask: a dask.distributed cluster")
@@ -112,7 +160,8 @@ def build_parser() -> argparse.ArgumentParser:
     mx.add_argument("--report", action="store_true", help="write DIR/index.html and DIR/summary.md when done")
     _budget_arguments(mx)
 
-    rp = sub.add_parser("report", help="write DIR/index.html and DIR/summary.md from a matrix output directory")
+    rp = sub.add_parser("report", help="write DIR/index.html and DIR/summary.md from a matrix output directory",
+                        **help_text("report"))
     rp.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
     rp.add_argument("--baseline", metavar="DIR2", default=None,
                     help="another matrix output directory to compare against; regressions are highlighted")
@@ -124,7 +173,8 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--workers", type=int, metavar="N", default=None,
                     help="processes drawing the figures (default: CPU count; the page is the same for any N)")
 
-    rg = sub.add_parser("regress", help="time the fixed throughput suite, store it, compare with a baseline run")
+    rg = sub.add_parser("regress", help="time the fixed throughput suite, store it, compare with a baseline run",
+                        **help_text("regress"))
     rg.add_argument("--baseline", metavar="COMMIT_OR_RUN", default=None,
                     help="a regress run id or a git commit (prefix) with a run in the store "
                          "(default: the latest earlier run on this machine)")
@@ -138,16 +188,19 @@ def build_parser() -> argparse.ArgumentParser:
                     help="run only these entries of the suite (default: all)")
 
     _keys_parser(sub)
-    pe = sub.add_parser("peers", help="time MuJoCo flex and PyElastica's snake side by side with ours (extra [peers])")
+    pe = sub.add_parser("peers", help="time MuJoCo flex and PyElastica's snake side by side with ours (extra [peers])",
+                        **help_text("peers"))
     pe.add_argument("--repeats", type=int, metavar="N", default=5, help="timed repetitions per entry (default 5)")
     pe.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     pe.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
-    va = sub.add_parser("validate", help="verdicts against the papers and analytic references (exit 1 on a FAIL)")
+    va = sub.add_parser("validate", help="verdicts against the papers and analytic references (exit 1 on a FAIL)",
+                        **help_text("validate"))
+    va.describe = validate_description
     va.add_argument("--body", nargs="+", action="extend", metavar="B", default=None,
                     help="only these body models (default: all)")
     va.add_argument("--check", nargs="+", action="extend", metavar="NAME", default=None,
                     help="only these checks or families (analytic, miller, paper, cross_body, throughput)")
-    va.add_argument("--quick", action="store_true", help="the quick set: small sizes, within 3 minutes on 2 cores")
+    va.add_argument("--quick", action="store_true", help=f"the quick set: small sizes, {QUICK_SET_TIME}")
     va.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     va.add_argument("--out", metavar="DIR", default=None,
                     help="validation.json and the work-precision PNGs go here (default reports/validation)")
@@ -890,7 +943,11 @@ def _run_help_text() -> dict[str, Any]:
     registry.load_all()
     creatures = creature_names()
     lines = [
-        "Run one case (creature x body model x gait x scenario) and print its metrics.",
+        _para("Run one case (creature x body model x gait x scenario) and print its metrics: speed, direction, "
+              "gait quality, stability and the body model's own figures, plus the throughput. The case is resolved "
+              "from the built-in defaults, the creature file, the scenario file, --duration/--dt/--seed and then "
+              "--set, later layers winning; the run is recorded in the results store unless --no-store. A run that "
+              "blows up ends with status unstable (exit 0 unless --strict)."),
         "",
         f"creatures:  {', '.join(creatures) or '(none found)'}",
         f"bodies:     {', '.join(sorted(registry.BODIES))}",
@@ -909,8 +966,7 @@ def _keys_parser(sub) -> None:
     from .core.keys import sections
 
     k = sub.add_parser("keys", help="every configuration key --set accepts: type, default, range, unit, meaning",
-                       description="Every configuration key --set accepts (and creature/scenario files set), with "
-                                   "its type, default, allowed range or choices, unit and description.")
+                       **help_text("keys"))
     k.add_argument("section", nargs="?", metavar="SECTION", default=None,
                    help=f"only this section: {', '.join(sections())} (default: all)")
     k.add_argument("--json", action="store_true", help='print one JSON object {"keys": [...]}')

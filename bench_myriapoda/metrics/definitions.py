@@ -1,0 +1,159 @@
+"""The one table of every metric a run can store: name -> unit, definition, who produces it.
+
+The documentation's metric reference is generated from ``METRICS`` (``docs/_ext/reference_pages.py``)
+and ``tests/test_metric_definitions.py`` holds it to the code both ways: every metric a stored run
+carries is in the table, and every name in the table is written by the package's code. Adding a
+metric means adding its row here; the test says which one is missing.
+
+Units are SI unless the name says otherwise (``_bl``: body lengths, ``_deg``: degrees,
+``_per_cycle``: per gait period). ``-`` marks a dimensionless number, ``count`` a whole number
+stored as a float.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class MetricDefinition:
+    """One row of the metric table."""
+
+    name: str
+    unit: str
+    definition: str
+    group: str     # which runs carry it (the reference page's sections)
+
+
+_ROWS: tuple[tuple[str, str, str, str], ...] = (
+    # ---- every run (harness/runner.py, metrics/locomotion.py)
+    ("speed_m_per_s", "m/s", "forward speed of the centre of mass along the mean body axis over the steady window "
+     "(after `metrics.warmup_cycles` gait cycles)", "every run"),
+    ("speed_bl_per_s", "BL/s", "`speed_m_per_s` divided by the body's rest length", "every run"),
+    ("speed_bl_per_cycle", "BL/cycle", "forward distance per gait period in body lengths", "every run"),
+    ("displacement_per_cycle_m", "m", "forward distance per gait period", "every run"),
+    ("lateral_speed_m_per_s", "m/s", "speed of the centre of mass perpendicular to the mean body axis, positive "
+     "to the creature's right", "every run"),
+    ("travel_angle_deg", "deg", "signed angle from the mean body axis to the direction of travel", "every run"),
+    ("slip_ratio", "-", "1 - speed / wave speed (NaN without a travelling wave)", "every run"),
+    ("path_following_error_bl", "BL", "mean distance of the segments from the path the head has travelled "
+     "since t = 0, counted once the head has travelled a segment's rest distance behind it", "every run"),
+    ("cycles_measured", "cycles", "length of the steady window in gait periods", "every run"),
+    ("com_height_change_m", "m", "height of the centre of mass at the end minus at the start", "every run"),
+    ("energy_drift_rel", "-", "change of total mechanical energy over the run relative to its start "
+     "(meaningful for passive, undamped cases)", "every run"),
+    ("energy_max_dev_rel", "-", "largest deviation of total mechanical energy from its start, relative",
+     "every run"),
+    ("contact_fraction", "-", "mean share of the body's nodes touching the ground", "every run"),
+    ("max_penetration_m", "m", "deepest penetration of a node into the terrain", "every run"),
+    ("body_length_m", "m", "the body's rest length from head to tail (a hybrid body's links included)",
+     "every run"),
+    ("wave_speed_m_per_s", "m/s", "speed of the commanded muscle wave along the body (0 without one)",
+     "every run"),
+    ("t_fail_s", "s", "time at which the run became unstable (non-finite state, runaway speed, deep "
+     "penetration); NaN when it stayed stable", "every run"),
+    ("path_length_m", "m", "length of the path the head travelled", "every run"),
+    ("terrain_clearance_min_m", "m", "smallest signed distance of a segment centre (legged: a box corner or "
+     "leg tip) above the terrain; negative inside", "every run"),
+    ("hanging_elongation_m", "m", "elongation of a suspended body: head-to-tail distance over the last samples "
+     "minus at t = 0", "suspended scenarios"),
+    # ---- legless creatures (metrics/body_shape.py, metrics/posture.py)
+    ("curvature_amplitude", "-", "peak curvature x body length of the ground projection of the centre line: "
+     "sqrt(2) x the RMS of each interior point's curvature over the steady window, median over the points",
+     "legless creatures"),
+    ("body_wavelength_bl", "BL", "body wavelength from the phase of each point's curvature at the gait "
+     "frequency; NaN for a body that does not bend", "legless creatures"),
+    ("heading_drift_deg_per_cycle", "deg/cycle", "rotation of the mean body axis per gait period "
+     "(least squares over the window; + = left)", "legless creatures"),
+    ("roll_max_deg", "deg", "largest rotation of a cross-section about the body axis (dorsal axis against the "
+     "vertical, pitch excluded) over segments and the run", "legless creatures"),
+    ("segment_contact_fraction", "-", "mean share of segments touching the ground over the window",
+     "legless creatures"),
+    ("lift_max_m", "m", "how far the lowest segment centre rose above the ground beneath it after the first "
+     "contact (the whole body leaving the ground)", "legless creatures"),
+    ("airborne_max_s", "s", "longest time with no segment in contact after the first contact",
+     "legless creatures"),
+    ("posture_fault", "0/1", "1 when the body flipped (roll_max_deg > 90 on flat ground) or left the ground "
+     "(airborne_max_s > 0.3 s, not in suspended scenarios), else 0; `run --strict` exits 1 on it",
+     "legless creatures"),
+    # ---- body models' own figures (bodies/*/body.py: extra_metrics)
+    ("min_J", "-", "smallest det F of any tetrahedron seen during the run", "fem and hybrid bodies"),
+    ("inverted_elements_max", "count", "most tetrahedra with det F <= 0 at once", "fem and hybrid bodies"),
+    ("inverted_elements_final", "count", "tetrahedra with det F <= 0 at the end of the run", "hybrid body"),
+    ("max_strain", "-", "largest |sigma - 1| over the principal stretches of any tetrahedron",
+     "fem and hybrid bodies"),
+    ("n_tets", "count", "tetrahedra in the mesh", "fem body"),
+    ("n_nodes", "count", "nodes in the mesh", "fem body"),
+    ("coupling_residual_max_m", "m", "largest distance the staggered deformable step moves an attached node "
+     "from where its rigid segment puts it", "hybrid body, legged mass-spring body"),
+    ("coupling_residual_mean_m", "m", "mean of that distance over attached nodes and steps",
+     "hybrid body, legged mass-spring body"),
+    # ---- legged creatures (metrics/gait.py, harness/legged.py)
+    ("duty_factor_mean", "-", "mean share of a stride a stepping leg spends in STANCE", "legged creatures"),
+    ("duty_factor_std", "-", "standard deviation of the duty factor over stepping legs", "legged creatures"),
+    ("stride_frequency_hz", "Hz", "mean stride frequency of the stepping legs", "legged creatures"),
+    ("phase_lag_mean", "cycles", "circular mean of the stance-onset lag of each leg behind the leg in front, "
+     "in (-0.5, 0.5]; positive = retrograde wave", "legged creatures"),
+    ("phase_lag_cv", "-", "RMS deviation of the lags from their mean divided by |phase_lag_mean|",
+     "legged creatures"),
+    ("legs_per_wave", "legs", "1 / |phase_lag_mean|: legs per wavelength along one side", "legged creatures"),
+    ("lr_phase_diff", "cycles", "phase of the right leg's stance onset in the left leg's stride, per segment, "
+     "|circular mean| in [0, 0.5] (0 in phase, 0.5 antiphase)", "legged creatures"),
+    ("stance_fraction_min", "-", "smallest share of legs in STANCE at any sample of the gait window",
+     "legged creatures"),
+    ("stance_fraction_mean", "-", "time-weighted mean share of legs in STANCE over the gait window",
+     "legged creatures"),
+    ("stride_length_bl", "BL", "distance the centre of mass travels per stride, in body lengths",
+     "legged creatures"),
+    ("speed_bl_per_stride", "BL/stride", "forward speed per stride period, in body lengths", "legged creatures"),
+    ("foot_slip_mean_m", "m", "mean distance a leg tip slides while in STANCE", "legged creatures"),
+    ("stepping_leg_fraction", "-", "share of legs that complete at least one stride in the gait window",
+     "legged creatures"),
+    ("walking_cycle_leg_fraction", "-", "share of legs whose dominant state cycle is SF1 -> SF2 -> STANCE in at "
+     "least 80 % of at least two complete cycles (paper Fig. 10 D)", "legged creatures"),
+    ("heading_error_deg", "deg", "mean |heading error| of the head against the commanded heading",
+     "legged creatures"),
+    ("body_undulation_amp_bl", "BL", "mean half-width of the segment centres' sideways spread about the "
+     "head-tail line", "legged creatures"),
+    ("time_to_walk_s", "s", "when the head's ADJUSTMENT mode ended (NaN if it never did)", "legged creatures"),
+    ("touch_fraction_at_walk", "-", "share of leg tips touching the ground when ADJUSTMENT ended",
+     "legged creatures"),
+    ("tracking_error_mean_m", "m", "mean distance of supported segments from their kinematic targets after the "
+     "body's step", "legged creatures"),
+    ("brain_mode_final", "code", "the head's mode at the end: 0 ADJUSTMENT, 1 AVOIDANCE, 2 TROPHOTROPISM, "
+     "3 RANDOM-WALK, 4 CONTROL (the JSON's `labels` names it)", "legged creatures"),
+    ("brain_avoidance_fraction", "-", "share of controller steps in AVOIDANCE", "legged creatures"),
+    ("brain_trophotropism_fraction", "-", "share of controller steps in TROPHOTROPISM", "legged creatures"),
+    ("leg_penetration_max_m", "m", "deepest knee or leg tip inside the terrain over the run", "legged creatures"),
+    ("leg_stops", "count", "swing moves cut at a surface, summed over legs and steps", "legged creatures"),
+    ("leg_stuck", "count", "leg-steps left inside a surface with no way out", "legged creatures"),
+    ("wall_pushes", "count", "segment-steps a carried segment was moved out of a wall", "legged creatures"),
+    ("obstacle_contacts", "count", "antenna contact events with obstacles", "legged creatures"),
+    ("obstacle_penetration_max_m", "m", "deepest penetration of the body or a leg into an obstacle",
+     "legged creatures"),
+    ("obstacle_penetration_body_max_m", "m", "deepest penetration of a body box corner into an obstacle",
+     "legged creatures"),
+    ("obstacle_penetration_legs_max_m", "m", "deepest penetration of a leg into an obstacle", "legged creatures"),
+    ("food_reached", "count", "food sources eaten", "legged creatures"),
+    ("time_to_first_food_s", "s", "when the first food source was eaten (NaN if none)", "legged creatures"),
+    ("food_sources", "count", "food sources in the scenario", "legged creatures"),
+    # ---- shallow water (world/water_coupling.py)
+    ("wake_energy", "J", "energy of the water's motion at the end: potential plus kinetic", "water scenarios"),
+    ("wake_energy_max", "J", "largest sampled estimate of the wake's energy during the run", "water scenarios"),
+    ("water_points_submerged_mean", "count", "mean number of body points under the water surface",
+     "water scenarios"),
+    # ---- stable-dt (harness/stable_dt.py; stored with command = 'stable-dt')
+    ("stable_dt_max_s", "s", "largest time step for which the case stayed stable over its duration (NaN when even "
+     "the smallest tried was unstable)", "stable-dt"),
+    ("unstable_dt_min_s", "s", "smallest time step found unstable (NaN when none up to the ceiling)", "stable-dt"),
+    ("stable_dt_runs", "count", "runs the bisection took", "stable-dt"),
+)
+
+METRICS: dict[str, MetricDefinition] = {name: MetricDefinition(name, unit, text, group)
+                                        for name, unit, text, group in _ROWS}
+
+GROUPS: tuple[str, ...] = tuple(dict.fromkeys(group for *_, group in _ROWS))
+
+
+def metric_names() -> list[str]:
+    """Every metric name in the table, in table order."""
+    return list(METRICS)
