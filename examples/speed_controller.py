@@ -1,4 +1,4 @@
-"""A user controller in plain Python, run on all three body models (README, "Extending").
+"""A user controller in plain Python, run on all three body models (docs: "Write your own controller").
 
 The worm's compression wave (Miller's rectilinear gait) as a tiny central pattern generator whose
 amplitude a proportional controller adjusts, ten times a second, so that the worm crawls at a
