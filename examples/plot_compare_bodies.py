@@ -4,7 +4,7 @@ Compare the body models on the worm
 
 The same creature, gait and scenario on each of the three body models: Miller's mass-spring
 lattice, the fixed-corotational FEM body and the rigid/FEM hybrid. Every run is stored in one
-results database, read back into pandas with :func:`bench_myriapoda.load_results`, and drawn: the
+results database, read back into pandas with :func:`bench_myriapoda.api.load_results`, and drawn: the
 centre of mass's forward travel over time, and speed against throughput.
 """
 import os

@@ -3,8 +3,8 @@ Load a matrix's results into pandas
 ===================================
 
 A scenario matrix is a TOML file that crosses creatures, bodies, gaits, scenarios, seeds and a grid
-of any configuration keys. :func:`bench_myriapoda.run_matrix` runs it as ``bench-myriapoda matrix``
-does and returns :func:`bench_myriapoda.load_results` of its output directory: one row per case, one
+of any configuration keys. :func:`bench_myriapoda.api.run_matrix` runs it as ``bench-myriapoda matrix``
+does and returns :func:`bench_myriapoda.api.load_results` of its output directory: one row per case, one
 column per metric, the swept keys as columns. Here the worm's wave frequency is swept on two body
 models; Miller's rectilinear crawl should move eps x Lambda per cycle, so the speed grows in
 proportion to the frequency.
