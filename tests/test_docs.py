@@ -27,7 +27,7 @@ sys.path.insert(0, str(DOCS / "_ext"))
 import reference_pages  # noqa: E402
 
 EXAMPLES = sorted((ROOT / "examples").glob("plot_*.py"))
-TUTORIALS = sorted((DOCS / "tutorials").glob("*.md"))
+TUTORIALS = sorted(p for p in (DOCS / "tutorials").glob("*.md") if p.name != "index.md")
 # guide pages whose Python blocks are runnable too (the others show fragments of output or options)
 RUNNABLE_GUIDES = [DOCS / "guide" / "first-run.md", DOCS / "guide" / "results-store.md"]
 FENCE = re.compile(r"^```(\w+)[^\n]*\n(.*?)^```", re.S | re.M)
