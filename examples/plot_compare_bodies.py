@@ -34,6 +34,6 @@ for _, row in df.iterrows():
 left.set(xlabel="time [s]", ylabel="forward travel of the centre of mass [m]", title="worm, rectilinear gait")
 left.legend()
 right.set(xscale="log", xlabel="throughput [steps/s]", ylabel="speed [body lengths / cycle]",
-          title="speed against cost")
+          title="speed against cost", ylim=(0, 1.3 * df["speed_bl_per_cycle"].max()))
 fig.tight_layout()
 plt.show()
