@@ -29,7 +29,9 @@ import reference_pages  # noqa: E402
 EXAMPLES = sorted((ROOT / "examples").glob("plot_*.py"))
 TUTORIALS = sorted(p for p in (DOCS / "tutorials").glob("*.md") if p.name != "index.md")
 # guide pages whose Python blocks are runnable too (the others show fragments of output or options)
-RUNNABLE_GUIDES = [DOCS / "guide" / "first-run.md", DOCS / "guide" / "results-store.md"]
+RUNNABLE_GUIDES = [DOCS / "guide" / "first-run.md", DOCS / "guide" / "results-store.md", DOCS / "guide" / "python-api.md"]
+GENERATED = {DOCS / p for p in reference_pages.GENERATED}
+PAGES = sorted(p for p in DOCS.rglob("*.md") if p not in GENERATED and "_build" not in p.parts)
 FENCE = re.compile(r"^```(\w+)[^\n]*\n(.*?)^```", re.S | re.M)
 
 
@@ -41,6 +43,15 @@ def code_blocks(path: Path) -> list[tuple[str, str]]:
 def shell_commands(code: str) -> list[str]:
     """The commands of a shell block, continuation lines joined."""
     return [c.strip() for c in code.replace("\\\n", " ").splitlines() if c.strip() and not c.startswith("#")]
+
+
+def cli_argv(command: str) -> list[str] | None:
+    """The arguments of a ``bench-myriapoda ...`` command line (comments and anything after a pipe dropped),
+    or None for another command."""
+    words = shlex.split(command, comments=True)
+    if not words or words[0] != "bench-myriapoda":
+        return None
+    return words[1:words.index("|")] if "|" in words else words[1:]
 
 
 # --------------------------------------------------------------------------- README
@@ -211,10 +222,9 @@ def test_every_code_block_of_the_page_runs_or_parses(page, tmp_path, monkeypatch
             exec(compile(code, f"{page.name}:block{i}", "exec"), namespace)
         elif lang == "bash":
             for command in shell_commands(code):
-                if command.startswith("bench-myriapoda"):
-                    argv = shlex.split(command)[1:]
-                    if "--help" not in argv and "--version" not in argv:
-                        parser.parse_args(argv or ["quick"])
+                argv = cli_argv(command)
+                if argv is not None and "--help" not in argv and "--version" not in argv:
+                    parser.parse_args(argv or ["quick"])
         elif lang == "toml":
             data = tomllib.loads(code)
             if "matrix" in data:
@@ -223,6 +233,24 @@ def test_every_code_block_of_the_page_runs_or_parses(page, tmp_path, monkeypatch
                 assert expand_matrix(path).cases
         else:
             assert lang in ("yaml", "text", "bibtex"), (page.name, lang)
+
+
+@pytest.mark.parametrize("page", PAGES + [README], ids=lambda p: str(p.relative_to(ROOT)))
+def test_every_command_line_on_the_page_parses(page):
+    """Every ``bench-myriapoda`` command in a shell block of any documentation page (and the README) is one
+    the command line's parser accepts: no removed flag, no misspelt subcommand."""
+    parser = build_parser()
+    for lang, code in code_blocks(page):
+        if lang != "bash":
+            continue
+        for command in shell_commands(code):
+            argv = cli_argv(command)
+            if argv is None or "--help" in argv or "--version" in argv:
+                continue
+            try:
+                parser.parse_args(argv or ["quick"])
+            except Exception as exc:  # InputError: one line naming the flag
+                pytest.fail(f"{page.name}: {command}: {exc}")
 
 
 # --------------------------------------------------------------------------- the gallery
