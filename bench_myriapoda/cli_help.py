@@ -34,7 +34,7 @@ DESCRIPTIONS: dict[str, str] = {
         grid of any configuration keys, on a local process pool or a Dask cluster. Every case goes to
         DIR/results.sqlite (and results.csv, matrix.json, series/); --resume runs only the cases not yet
         stored, so an interrupted matrix continues where it stopped. FILE is a path or a name in
-        scenarios/matrix/ (quick, miller, paper, body-wave).""",
+        scenarios/matrix/: {matrices}.""",
     "report": """Write DIR/index.html and DIR/summary.md from a matrix output directory: the scorecard,
         comparison tables, sweep and stability maps, time series, the reproduced paper figures with their
         validation verdicts, and the regress history. With --baseline DIR2 every metric is compared with
@@ -129,5 +129,9 @@ def validate_description() -> str:
 def help_text(name: str) -> dict[str, Any]:
     """Keyword arguments for ``add_parser(name, ...)``: description, epilog with examples, raw formatting."""
     description = None if name == "validate" else _para(DESCRIPTIONS[name])
+    if name == "matrix":
+        from .harness.matrix import matrix_paths
+
+        description = description.format(matrices=", ".join(matrix_paths()) or "(none found)")
     return {"description": description, "epilog": "examples:\n" + EXAMPLES[name],
             "formatter_class": argparse.RawDescriptionHelpFormatter}
