@@ -517,6 +517,9 @@ def cmd_matrix(args) -> int:
             import dask.distributed  # noqa: F401
         except ImportError:
             raise InputError("--executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
+    if args.executor == "local":  # the workers' fork server imports the package while the matrix expands
+        from .harness.worker_start import prestart
+        prestart()
     exp = expand_matrix(locate_matrix(args.file))
     out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name
     if out.exists() and not out.is_dir():

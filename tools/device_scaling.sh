@@ -21,7 +21,7 @@ OUT=${OUT:?set OUT to the output folder}
 PY=${PY:-python3}
 BIG=${BIG:-16}
 MID=${MID:-4}
-BUDGET_S=${BUDGET_S:-450}      # stop starting series after this many seconds
+BUDGET_S=${BUDGET_S:-420}      # start no series that would end after this many seconds
 WORK=${WORK:-$(mktemp -d /tmp/bench-scaling.XXXXXX)}
 T0=$(date +%s)
 mkdir -p "$OUT" "$WORK"
@@ -37,7 +37,7 @@ if ! $PY -c "import trimesh, dask.distributed" 2>/dev/null; then
         "$SITE" "$ROOT/.devwheels"; }
 fi
 export PYTHONPATH=$ROOT:$SITE${PYTHONPATH:+:$PYTHONPATH}
-export NUMBA_CACHE_DIR=$WORK/numba-cache   # fresh: the first series compiles everything
+export NUMBA_CACHE_DIR=${SCALING_CACHE:-$WORK/numba-cache}   # fresh: the first series compiles everything
 export MPLBACKEND=Agg
 { echo "date: $(date -u)"; echo "nproc: $(nproc)"; lscpu 2>/dev/null | grep -E "Model name|^CPU\(s\)|Thread|Core|Socket|NUMA node\(s\)";
   $PY -c "import sys, numpy, numba, dask, distributed, trimesh; print(sys.version.split()[0], 'numpy', numpy.__version__, 'numba', numba.__version__, 'dask', dask.__version__, 'trimesh', trimesh.__version__)";
@@ -76,7 +76,11 @@ series() {
   local name=$1 matrix=$2 workers=$3 est=$4; shift 4
   local now=$(( $(date +%s) - T0 ))
   if [ $(( now + est )) -gt "$BUDGET_S" ]; then log "skip $name (needs ~$est s, $(( BUDGET_S - now )) s left)"; return; fi
-  log "start $name: $matrix on $workers worker(s) $*"
+  if [ -n "${SEED_FROM:-}" ] && [ -f "$WORK/$SEED_FROM/results.sqlite" ]; then
+    # the cold run's rows: the cost model predicts this run's cases from what the machine measured
+    mkdir -p "$WORK/$name" && cp "$WORK/$SEED_FROM/results.sqlite" "$WORK/$name/results.sqlite"
+  fi
+  log "start $name: $matrix on $workers worker(s) $* ${SEED_FROM:+(costs from $SEED_FROM)}"
   local t0=$(date +%s.%N)
   timeout $(( BUDGET_S - now + 30 )) $PY -m bench_myriapoda.cli matrix "$matrix" --workers "$workers" \
       --out "$WORK/$name" "$@" >"$WORK/$name.log" 2>&1
@@ -89,25 +93,35 @@ series() {
   log "end $name rc=$rc: $(grep -E '^parallel efficiency' "$WORK/$name.log" || tail -1 "$WORK/$name.log")"
 }
 
+fixed_costs() {  # spawn and forkserver workers: 1 alone and BIG at once (warm cache)
+  local now=$(( $(date +%s) - T0 ))
+  if [ $(( now + 40 )) -gt "$BUDGET_S" ]; then log "skip worker fixed costs"; return; fi
+  log "worker fixed costs"
+  timeout 90 $PY -m bench_myriapoda.harness.worker_costs --workers 1 "$BIG" --start both \
+      >"$OUT/fixed_costs.json" 2>"$OUT/fixed_costs.err"
+  log "end worker fixed costs rc=$?"
+}
+
 series quick-cold-$BIG  "$QUICK" "$BIG" 75
 series probe-cold-$BIG  "$PROBE" "$BIG" 60
+fixed_costs
+export SEED_FROM=probe-cold-$BIG
 series probe-warm-$BIG  "$PROBE" "$BIG" 25
 series probe-warm-1     "$PROBE" 1 80
-series quick-warm-$BIG  "$QUICK" "$BIG" 20
-series quick-warm-1     "$QUICK" 1 35
-series quick-warm-$MID  "$QUICK" "$MID" 20
+SEED_FROM=quick-cold-$BIG series quick-warm-$BIG  "$QUICK" "$BIG" 20
+SEED_FROM=quick-cold-$BIG series quick-warm-1     "$QUICK" 1 35
+series probe-dask-$BIG  "$PROBE" "$BIG" 35 --executor dask
+SEED_FROM=quick-cold-$BIG series quick-warm-$MID  "$QUICK" "$MID" 20
 series probe-warm-$MID  "$PROBE" "$MID" 35
 series probe-warm-$BIG-fileorder "$PROBE" "$BIG" 25 --schedule file
-series quick-warm-$BIG-fileorder "$QUICK" "$BIG" 20 --schedule file
-series probe-dask-$BIG  "$PROBE" "$BIG" 35 --executor dask
+SEED_FROM=quick-cold-$BIG BENCH_MYRIAPODA_WORKER_START=spawn series quick-warm-$BIG-spawn "$QUICK" "$BIG" 20
+SEED_FROM=quick-cold-$BIG series quick-warm-$BIG-fileorder "$QUICK" "$BIG" 20 --schedule file
 
-# --- fixed costs of a worker: spawn + imports + body models, 1 alone and BIG at once (warm cache)
-now=$(( $(date +%s) - T0 ))
-if [ $(( now + 25 )) -le "$BUDGET_S" ]; then
-  log "worker fixed costs"
-  timeout 60 $PY -m bench_myriapoda.harness.worker_costs --workers 1 "$BIG" >"$OUT/fixed_costs.json" 2>"$OUT/fixed_costs.err"
-  cat "$OUT/fixed_costs.json"
-fi
+# --- the schedule simulator on the warm single-worker runs' case costs
+for d in quick-warm-1 probe-warm-1; do
+  [ -f "$OUT/$d/results.sqlite" ] && timeout 60 $PY -m bench_myriapoda.harness.schedule "$OUT/$d" --json \
+      >"$OUT/$d/simulated.json" 2>>"$OUT/progress.log"
+done
 
 # --- summary of every series that ran
 $PY - "$OUT" <<'EOF'

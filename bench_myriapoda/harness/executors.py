@@ -4,8 +4,9 @@
 store from this (the parent) process only, one transaction per case, tagged
 ``command = 'matrix'`` and ``matrix = NAME``.  Workers never touch the store.
 
-``local``: ``workers`` long-lived ``spawn`` processes, each fed one case at a
-time over a pipe.  Compile once, not once per worker: cases are grouped by the
+``local``: ``workers`` long-lived processes, each fed one case at a time over a
+pipe, forked from a server that has imported the package once (``worker_start``;
+``spawn`` where there is no fork server).  Compile once, not once per worker: cases are grouped by the
 kernels they compile (``compile_group``); the first case of every group goes out
 first, and the other cases of a group wait until that one has finished, by when
 its kernels are in numba's on-disk cache and the other workers load them instead
@@ -380,7 +381,9 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                costs: Sequence[float] | None = None) -> int:
     """Run ``cases`` on ``workers`` local worker processes; return the number of workers that ran cases.
     ``costs``: predicted wall times [s] in the order of ``cases`` (longest first, ``compile_first_order``)."""
-    ctx = mp.get_context("spawn")
+    from .worker_start import worker_context
+
+    ctx = worker_context()
     sched = CompileScheduler(cases, costs)
     pending = sched.pending
     next_job = sched.next_job

@@ -15,13 +15,13 @@ where ``per_step_s`` comes, first match wins, from
 
 1. ``store``: earlier runs of the same kind of case (:func:`cost_key`: body model, creature,
    segments, mesh resolution, legs, water) in the matrix's store or the history store: the median
-   of (wall - compile) / steps; ``fixed_s`` is the median compile (kernel load) time of those runs;
+   of (wall - compile) / steps; ``fixed_s`` is the least compile (kernel load) time of those runs;
 2. ``store-scaled``: earlier runs of the same body and creature at another size, scaled by the
    size ratio (:func:`size_of`: segments x mesh nodes per link);
 3. ``suite``: the throughput suite's figure for the body and creature (``regress_history``,
    newest run; ``harness/throughput_suite.py``), scaled by size from the suite scene's size;
-4. ``default``: :data:`DEFAULT_STEP_S`, per-step costs of the default-sized creatures measured on
-   the development machine, scaled by size.
+4. ``default``: :data:`DEFAULT_STEP_S`, per-step costs per unit of size measured on the development
+   machine, times the case's size.
 
 The order only changes *when* a case runs, never what it computes: every case is a separate
 process-local simulation from its own resolved configuration, so results are identical in any
@@ -42,21 +42,22 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
-# Per-step wall time [s] of a default-sized creature on each body model with warm kernels, when neither
-# the store nor the throughput suite knows the kind of case: the medians of (wall - compile) / steps of
-# the warm quick matrix with 1 worker on the development machine (2-core x86-64, 2026-11-27, shared with
-# other jobs, so upper bounds).  Keys: (body model, legged).  Only the ORDER of the cases depends on these:
-# a factor of two off changes which case starts first, never a result.
+# Per-step wall time [s] per unit of size (size_of: segments x FEM nodes per link) of each body model with warm
+# kernels, for a kind of case neither the store nor the throughput suite knows.  From the quick matrix on the
+# development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs): the median over
+# its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's summed case times
+# (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker).  Keys: (body model, legged).  Only the
+# ORDER of the cases depends on these: a factor of two off changes which case starts first, never a result.
 DEFAULT_STEP_S: dict[tuple[str, bool], float] = {
-    ("massspring", False): 2.0e-5,
-    ("massspring", True): 6.0e-5,
-    ("fem", False): 1.2e-4,
-    ("fem", True): 2.0e-4,
-    ("hybrid", False): 1.5e-4,
-    ("hybrid", True): 2.5e-4,
+    ("massspring", False): 1.0e-6,
+    ("massspring", True): 2.2e-5,
+    ("fem", False): 2.3e-7,
+    ("fem", True): 4.0e-7,
+    ("hybrid", False): 5.0e-7,
+    ("hybrid", True): 3.2e-7,
 }
 DEFAULT_FIXED_S = 0.05  # per case with warm kernels: kernel lookup, body build, metrics [s]
-UNKNOWN_STEP_S = 1.0e-4  # a body model not in DEFAULT_STEP_S [s per step]
+UNKNOWN_STEP_S = 1.0e-6  # a body model not in DEFAULT_STEP_S [s per step per size unit]
 
 # The throughput suite's entries (harness/throughput_suite.py) by (body model, creature) with the size of
 # their scene (size_of's units: segments x FEM nodes per link), so a figure scales to other sizes.
@@ -138,7 +139,9 @@ class CostModel:
         for o in observed:
             by_key.setdefault(o.key, []).append(o)
         self.step_s = {k: statistics.median(o.per_step_s for o in v) for k, v in by_key.items()}
-        self.fixed_s = {k: statistics.median(min(o.compile_s, o.wall_s) for o in v) for k, v in by_key.items()}
+        # the least compile time seen: a warm worker's kernel lookup; a run that compiled cold says nothing
+        # about the next one's (a matrix compiles each group once)
+        self.fixed_s = {k: min(min(o.compile_s, o.wall_s) for o in v) for k, v in by_key.items()}
         self.suite = dict(suite or {})
 
     def predict(self, case: Any) -> Prediction:
@@ -154,8 +157,8 @@ class CostModel:
         if scene and scene[0] in self.suite and self.suite[scene[0]] > 0:
             per_step = 1.0 / self.suite[scene[0]] * size_of(key) / scene[1]
             return self._p(steps, per_step, DEFAULT_FIXED_S, "suite")
-        base = DEFAULT_STEP_S.get((key[0], key[4]), UNKNOWN_STEP_S)
-        return self._p(steps, base * size_of(key) / _default_size(key), DEFAULT_FIXED_S, "default")
+        return self._p(steps, DEFAULT_STEP_S.get((key[0], key[4]), UNKNOWN_STEP_S) * size_of(key), DEFAULT_FIXED_S,
+                       "default")
 
     @staticmethod
     def _p(steps: int, per_step: float, fixed: float, source: str) -> Prediction:
@@ -163,13 +166,6 @@ class CostModel:
 
     def predict_all(self, cases: Sequence[Any]) -> list[Prediction]:
         return [self.predict(c) for c in cases]
-
-
-def _default_size(key: tuple) -> float:
-    """The size DEFAULT_STEP_S was measured at: a 10-segment creature (18 if legged), resolution 3 on FEM links."""
-    body, _c, _s, resolution, legged, _w = key
-    segments = 18.0 if legged else 10.0
-    return segments * (3.0 ** 3 if resolution is not None else 1.0)
 
 
 def observed_runs(store_paths: Iterable[Path | str]) -> list[Observed]:
@@ -357,3 +353,84 @@ def write_run_summary(manifest: Path | str, summary: Mapping[str, Any]) -> None:
     with os.fdopen(fd, "w") as fh:
         json.dump(doc, fh, indent=1, sort_keys=True)
     os.replace(tmp, manifest)
+
+
+# --------------------------------------------------------------------------- command line
+
+def stored_case_walls(out_dir: Path | str, minus_compile: bool = False) -> dict[str, float]:
+    """Case hash -> wall time [s] of the newest row of each case in a matrix output directory's store
+    (``minus_compile``: without its compile time, what the case costs once its kernels are cached)."""
+    db = Path(out_dir) / "results.sqlite"
+    con = sqlite3.connect(f"file:{db}?mode=ro", uri=True)
+    try:
+        rows = con.execute("SELECT case_hash, wall_s, compile_s FROM runs WHERE command = 'matrix' ORDER BY id").fetchall()
+    finally:
+        con.close()
+    out = {}
+    for h, w, c in rows:
+        if w is None or not math.isfinite(w):
+            continue
+        if minus_compile and c is not None and math.isfinite(c):
+            w = max(0.0, w - c)
+        out[h] = float(w)
+    return out
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m bench_myriapoda.harness.schedule DIR [DIR2 ...] --workers 1 2 4 8 16``: the matrix wall
+    predicted by :func:`simulate` from each directory's stored case wall times, and how the costs the run
+    was ordered by compare with them (``matrix.json``'s ``schedule``)."""
+    import argparse
+    import sys
+
+    ap = argparse.ArgumentParser(prog="python -m bench_myriapoda.harness.schedule", description=main.__doc__)
+    ap.add_argument("dirs", nargs="+", metavar="DIR", help="matrix output directories (results.sqlite, matrix.json)")
+    ap.add_argument("--workers", type=int, nargs="+", default=[1, 2, 4, 8, 16])
+    ap.add_argument("--worker-start", type=float, default=0.0, metavar="S",
+                    help="fixed cost of starting a worker [s] (harness/worker_costs.py's start_s)")
+    ap.add_argument("--per-case", type=float, default=0.0, metavar="S",
+                    help="fixed cost per case outside its own wall time [s] (hand-over, result transfer, store)")
+    ap.add_argument("--minus-compile", action="store_true",
+                    help="case costs without their compile time (to simulate warm runs from a cold run's store)")
+    ap.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    args = ap.parse_args(argv)
+    for flag, v in (("--worker-start", args.worker_start), ("--per-case", args.per_case)):
+        if not (math.isfinite(v) and v >= 0):
+            print(f"bench-myriapoda: {flag}: {v} is out of range; must be a finite number of seconds >= 0", file=sys.stderr)
+            return 2
+    if any(w < 1 for w in args.workers):
+        print("bench-myriapoda: --workers: every count must be >= 1", file=sys.stderr)
+        return 2
+    report = []
+    for d in args.dirs:
+        if not (Path(d) / "results.sqlite").is_file():
+            print(f"bench-myriapoda: {d}: no results.sqlite; give a matrix output directory", file=sys.stderr)
+            return 2
+        walls = stored_case_walls(d, args.minus_compile)
+        costs = list(walls.values())
+        sims = [simulate(costs, w, args.worker_start, args.per_case) for w in args.workers]
+        sched = {}
+        m = Path(d) / "matrix.json"
+        if m.is_file():
+            sched = json.loads(m.read_text()).get("schedule", {}) or {}
+        pred = {h: c.get("predicted_s") for h, c in sched.get("cases", {}).items() if c.get("predicted_s")}
+        pairs = [(pred[h], w) for h, w in walls.items() if h in pred]
+        r = correlation([p for p, _ in pairs], [w for _, w in pairs])
+        report.append({"dir": str(d), "cases": len(costs), "sum_s": sum(costs), "critical_s": max(costs, default=0.0),
+                       "predicted_vs_measured_r": r if math.isfinite(r) else None, "pairs": len(pairs),
+                       "simulated": [{"workers": s.workers, "wall_s": s.wall_s, "efficiency": s.efficiency}
+                                     for s in sims]})
+    if args.json:
+        print(json.dumps(report, indent=1))
+        return 0
+    for rep in report:
+        r = rep["predicted_vs_measured_r"]
+        print(f"{rep['dir']}: {rep['cases']} cases, {rep['sum_s']:.1f} s of cases, critical path {rep['critical_s']:.1f} s; "
+              f"predicted vs measured case cost r = {'-' if r is None else f'{r:.3f}'} ({rep['pairs']} cases)")
+        for s in rep["simulated"]:
+            print(f"  {s['workers']:>3} worker(s): {s['wall_s']:7.1f} s  (efficiency {s['efficiency']:.0%})")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -4,8 +4,9 @@ A matrix's wall time on ``W`` workers is its cases' own time plus what the harne
 them.  This module measures that part through the real worker (``executors._start_slot`` and its
 pipe protocol), on ``N`` workers started at once, with a warm JIT cache:
 
-``start_s``       spawn, imports, body-model registry and compile-lock set-up, until the worker takes
-                  its first job (``"started"``);
+``start_s``       process start (spawn: a fresh interpreter's imports and body-model registry; forkserver:
+                  a fork, plus the server's own imports when it was not running yet), until the worker
+                  takes its first job (``"started"``);
 ``kernel_load_s`` the first case's kernels loaded from numba's disk cache (a compile-only job);
 ``case_s``        a short case run in a worker: ``"started"`` to ``"done"`` (build, kernels already
                   loaded, run, metrics, compact recording, result over the pipe), and ``overhead_s``,
@@ -19,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import multiprocessing as mp
 import statistics
 import sys
 import tempfile
@@ -28,6 +28,12 @@ from pathlib import Path
 
 PROBE_CASE = ("worm", "massspring", "flat")  # the cheapest kernels to load
 PROBE_DURATION_S = 0.2  # [s] simulated: a short case, so the harness's part is visible
+
+
+def _server_pid():
+    from multiprocessing import forkserver
+
+    return getattr(getattr(forkserver, "_forkserver", None), "_forkserver_pid", None)
 
 
 def _recv(conn):
@@ -43,16 +49,20 @@ def _await(conn, want: str):
             return payload, t
 
 
-def measure(workers: int) -> dict:
-    """Fixed costs [s] of ``workers`` local workers started at once: medians and maxima over the workers."""
+def measure(workers: int, method: str | None = None) -> dict:
+    """Fixed costs [s] of ``workers`` local workers started at once: medians and maxima over the workers.
+    ``method``: how they start (``worker_start.START_METHODS``; default: as the executor starts them)."""
     from ..core.config import resolve_case
     from .executors import _start_slot
     from .recorder import save_recording
     from .store import record_run
 
     case = resolve_case(*PROBE_CASE, duration=PROBE_DURATION_S)
-    ctx = mp.get_context("spawn")
-    t0 = time.perf_counter()
+    from .worker_start import worker_context
+
+    ctx = worker_context(method)
+    server_running = ctx.get_start_method() == "forkserver" and _server_pid() is not None
+    t0 = time.perf_counter()  # a fork server not running yet starts with the first worker: its imports count
     slots = [_start_slot(ctx) for _ in range(workers)]
     for k, s in enumerate(slots):
         s.conn.send((k, case, True))  # compile-only: load the kernels
@@ -93,7 +103,8 @@ def measure(workers: int) -> dict:
     def agg(xs):
         return {"median": statistics.median(xs), "max": max(xs)}
 
-    return {"workers": workers, "start_s": agg(start), "kernel_load_s": agg(load), "case_s": agg(case_s),
+    return {"workers": workers, "start_method": ctx.get_start_method(), "server_was_running": server_running,
+            "start_s": agg(start), "kernel_load_s": agg(load), "case_s": agg(case_s),
             "overhead_s": agg(overhead), "store_s": agg(store_s), "stop_s": agg(stop),
             "probe_case": "/".join(PROBE_CASE) + f" {PROBE_DURATION_S} s, {case.steps} steps"}
 
@@ -101,6 +112,8 @@ def measure(workers: int) -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--workers", type=int, nargs="+", default=[1], help="worker counts to measure, each in turn")
+    ap.add_argument("--start", choices=("forkserver", "spawn", "both"), default="both",
+                    help="how the workers start (both: spawn, then forkserver, for each count)")
     args = ap.parse_args(argv)
     for n in args.workers:
         if not 1 <= n <= 256:
@@ -108,7 +121,8 @@ def main(argv=None) -> int:
             return 2
     from ..core import registry
     registry.load_all()
-    print(json.dumps([measure(n) for n in args.workers], indent=1))
+    methods = ("spawn", "forkserver") if args.start == "both" else (args.start,)
+    print(json.dumps([measure(n, m) for n in args.workers for m in methods], indent=1))
     return 0
 
 
