@@ -98,7 +98,7 @@ fixed_costs() {  # spawn and forkserver workers: 1 alone and BIG at once (warm c
   if [ $(( now + 40 )) -gt "$BUDGET_S" ]; then log "skip worker fixed costs"; return; fi
   log "worker fixed costs"
   timeout 90 $PY -m bench_myriapoda.harness.worker_costs --workers 1 "$BIG" --start both \
-      >"$OUT/fixed_costs.json" 2>"$OUT/fixed_costs.err"
+      >"$OUT/fixed_costs.jsonl" 2>"$OUT/fixed_costs.err"
   log "end worker fixed costs rc=$?"
 }
 

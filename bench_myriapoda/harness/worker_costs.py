@@ -14,7 +14,7 @@ pipe protocol), on ``N`` workers started at once, with a warm JIT cache:
 ``store_s``       the parent writing one result (recording ``.npz`` and store row), as ``run_matrix`` does;
 ``stop_s``        a stop request until the worker process has exited.
 
-Run ``python -m bench_myriapoda.harness.worker_costs --workers 1 16`` (JSON on stdout).
+Run ``python -m bench_myriapoda.harness.worker_costs --workers 1 16`` (one JSON line per measurement on stdout).
 """
 from __future__ import annotations
 
@@ -122,7 +122,9 @@ def main(argv=None) -> int:
     from ..core import registry
     registry.load_all()
     methods = ("spawn", "forkserver") if args.start == "both" else (args.start,)
-    print(json.dumps([measure(n, m) for n in args.workers for m in methods], indent=1))
+    for n in args.workers:
+        for m in methods:  # one JSON line per measurement, written at once: a run cut short keeps what it measured
+            print(json.dumps(measure(n, m)), flush=True)
     return 0
 
 
