@@ -15,7 +15,9 @@ where ``per_step_s`` comes, first match wins, from
 
 1. ``store``: earlier runs of the same kind of case (:func:`cost_key`: body model, creature,
    segments, mesh resolution, legs, water) in the matrix's store or the history store: the median
-   of (wall - compile) / steps; ``fixed_s`` is the least compile (kernel load) time of those runs;
+   of their stepping time per step (steps / steps_per_s); a case run before (same ``case_hash``)
+   is predicted to run the steps it ran then (an unstable case stops early again); ``fixed_s`` is the
+   median over all stored runs of the wall beyond compile and steps (observations, metrics);
 2. ``store-scaled``: earlier runs of the same body and creature at another size, scaled by the
    size ratio (:func:`size_of`: segments x mesh nodes per link);
 3. ``suite``: the throughput suite's figure for the body and creature (``regress_history``,
@@ -114,16 +116,33 @@ class Prediction:
 
 @dataclass(frozen=True)
 class Observed:
-    """One earlier run of a case: its key, steps done, wall and compile (kernel load) times [s]."""
+    """One earlier run of a case: its key, steps done, wall, compile (kernel load) and stepping times [s].
+
+    ``step_wall_s``: the time in the body's step kernels (steps / steps_per_s; NaN when not recorded).
+    The rest of the wall beyond compile is the case's own overhead (observations, metrics, recording)
+    and, on a cold cache, kernels compiled on first use after ``compile`` (measured: up to 80 s of a
+    3-step case on the development machine), which says nothing about the next run of the case.
+    """
 
     key: tuple
     steps: int
     wall_s: float
     compile_s: float
+    step_wall_s: float = float("nan")
+    case_hash: str = ""
 
     @property
     def per_step_s(self) -> float:
+        """Wall per step [s]: the stepping time where recorded (free of compiles), else (wall - compile) / steps."""
+        if math.isfinite(self.step_wall_s):
+            return self.step_wall_s / self.steps
         return max(0.0, self.wall_s - self.compile_s) / self.steps
+
+    @property
+    def overhead_s(self) -> float:
+        """What the case took besides its compile and its steps [s]: observations, metrics, recording, and on
+        a cold cache the kernels compiled on first use after ``compile``."""
+        return max(0.0, self.wall_s - self.compile_s - self.per_step_s * self.steps)
 
 
 class CostModel:
@@ -136,28 +155,37 @@ class CostModel:
 
     def __init__(self, observed: Iterable[Observed] = (), suite: Mapping[str, float] | None = None):
         by_key: dict[tuple, list[Observed]] = {}
+        steps_done: dict[str, list[int]] = {}
+        observed = list(observed)
         for o in observed:
             by_key.setdefault(o.key, []).append(o)
+            if o.case_hash:
+                steps_done.setdefault(o.case_hash, []).append(o.steps)
         self.step_s = {k: statistics.median(o.per_step_s for o in v) for k, v in by_key.items()}
-        # the least compile time seen: a warm worker's kernel lookup; a run that compiled cold says nothing
-        # about the next one's (a matrix compiles each group once)
-        self.fixed_s = {k: min(min(o.compile_s, o.wall_s) for o in v) for k, v in by_key.items()}
+        # One fixed part for every case: the median over all runs of what a case took besides its compile and
+        # its steps.  Per kind it would be one run's, often the cold run that compiled the group's kernels
+        # (measured up to 80 s of lazily compiled kernels here), which says nothing about the next run.
+        self.fixed = statistics.median(o.overhead_s for o in observed) if observed else DEFAULT_FIXED_S
+        # an exact case seen before: the steps it ran (an unstable case stops early, and will again)
+        self.steps_done = {h: int(statistics.median(v)) for h, v in steps_done.items()}
         self.suite = dict(suite or {})
 
     def predict(self, case: Any) -> Prediction:
         key = cost_key(case)
         steps = case_steps(case)
+        if not isinstance(case, Mapping) and case.case_hash() in self.steps_done:
+            steps = min(steps, self.steps_done[case.case_hash()])
         if key in self.step_s:
-            return self._p(steps, self.step_s[key], self.fixed_s[key], "store")
+            return self._p(steps, self.step_s[key], self.fixed, "store")
         same_kind = [k for k in self.step_s if k[:2] == key[:2] and k[4:] == key[4:]]
         if same_kind:  # the nearest size of the same body and creature, scaled
             near = min(same_kind, key=lambda k: abs(math.log(size_of(k) / size_of(key))))
-            return self._p(steps, self.step_s[near] * size_of(key) / size_of(near), self.fixed_s[near], "store-scaled")
+            return self._p(steps, self.step_s[near] * size_of(key) / size_of(near), self.fixed, "store-scaled")
         scene = SUITE_SCENES.get(key[:2])
         if scene and scene[0] in self.suite and self.suite[scene[0]] > 0:
             per_step = 1.0 / self.suite[scene[0]] * size_of(key) / scene[1]
-            return self._p(steps, per_step, DEFAULT_FIXED_S, "suite")
-        return self._p(steps, DEFAULT_STEP_S.get((key[0], key[4]), UNKNOWN_STEP_S) * size_of(key), DEFAULT_FIXED_S,
+            return self._p(steps, per_step, self.fixed, "suite")
+        return self._p(steps, DEFAULT_STEP_S.get((key[0], key[4]), UNKNOWN_STEP_S) * size_of(key), self.fixed,
                        "default")
 
     @staticmethod
@@ -179,17 +207,19 @@ def observed_runs(store_paths: Iterable[Path | str]) -> list[Observed]:
         try:
             con = sqlite3.connect(f"file:{Path(p)}?mode=ro", uri=True)
             try:
-                rows = con.execute("SELECT case_json, steps, wall_s, compile_s FROM runs WHERE status IN (?, ?) "
-                                   "AND steps > 0 AND wall_s > 0", OK_STATUSES).fetchall()
+                rows = con.execute("SELECT case_json, steps, wall_s, compile_s, steps_per_s, case_hash FROM runs "
+                                   "WHERE status IN (?, ?) AND steps > 0 AND wall_s > 0", OK_STATUSES).fetchall()
             finally:
                 con.close()
         except sqlite3.Error:  # not a store, or an older schema: no history from it
             continue
-        for case_json, steps, wall, comp in rows:
+        for case_json, steps, wall, comp, rate, case_hash in rows:
             if comp is None or not math.isfinite(comp) or not math.isfinite(wall):
                 continue
+            step_wall = steps / rate if rate is not None and math.isfinite(rate) and rate > 0 else float("nan")
             try:
-                out.append(Observed(cost_key(json.loads(case_json)), int(steps), float(wall), float(comp)))
+                out.append(Observed(cost_key(json.loads(case_json)), int(steps), float(wall), float(comp), step_wall,
+                                    case_hash or ""))
             except (ValueError, KeyError, TypeError):
                 continue
     return out
