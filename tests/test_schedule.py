@@ -120,3 +120,34 @@ def test_write_run_summary_adds_a_schedule_section_and_keeps_the_manifest(tmp_pa
     S.write_run_summary(m, {"line": "parallel efficiency 50%"})
     doc = json.loads(m.read_text())
     assert doc["name"] == "x" and doc["cases"] == {"h": {}} and doc["schedule"]["line"].startswith("parallel")
+
+
+class _Page:
+    def __init__(self):
+        self.sections, self.paras, self.tables = [], [], []
+
+    def section(self, sid, title):
+        self.sections.append(sid)
+
+    def p(self, text, cls=""):
+        self.paras.append(text)
+
+    def table(self, df, *a, **k):
+        self.tables.append(df)
+
+
+def test_the_report_section_shows_the_recorded_schedule_or_says_there_is_none(tmp_path):
+    from bench_myriapoda.report import schedule_section
+
+    page = _Page()
+    schedule_section.section(page, tmp_path)  # no matrix.json
+    assert page.sections == ["schedule"] and "No schedule recorded" in page.paras[0] and not page.tables
+    eff = S.efficiency({"a": 3.0, "b": 1.0}, workers=2, matrix_wall_s=4.0, labels={"a": "worm/fem"})
+    S.write_run_summary(tmp_path / "matrix.json", {"efficiency": eff.to_dict(), "line": eff.line(),
+                                                   "predicted_vs_measured_r": 0.9, "cost_sources": {"store": 2}})
+    page = _Page()
+    schedule_section.section(page, tmp_path)
+    assert page.paras == [eff.line()]
+    table = dict(zip(page.tables[0]["quantity"], page.tables[0]["value"]))
+    assert table["parallel efficiency"] == "0.5" and table["critical case"] == "worm/fem"
+    assert table["predicted vs measured case cost (Pearson r)"] == "0.9" and table["cost sources"] == "store: 2"

@@ -6,14 +6,19 @@
 # jinja2, click, pyyaml, sortedcontainers; trimesh and dask[distributed] come from the wheels in .devwheels/
 # (installed into a private folder, never into the system).  No network is needed.
 #
-# Series, in order of importance; one that would not fit in what is left of BUDGET_S is skipped:
-#   quick cold (fresh numba cache) on BIG workers; probe cold-ish on BIG (its caterpillar kernels are new);
-#   probe warm on BIG and 1; quick warm on 1, MID, BIG; probe warm on MID; probe warm on BIG in file order
-#   (the schedule before issue 31); probe on dask with BIG workers; worker fixed costs.
+# Series, in order of importance; one whose estimate does not fit in what is left of BUDGET_S is skipped:
+#   quick cold (fresh numba cache) on BIG workers; the probe on BIG (its caterpillar cases are new kinds);
+#   worker fixed costs (spawn and forkserver, 1 and BIG workers); probe warm on BIG and 1; quick warm on BIG
+#   and 1; probe on dask with BIG workers; quick and probe warm on MID; probe warm on BIG in file order (the
+#   order before issue 31); quick warm on BIG with spawned workers (the start before issue 31); quick warm
+#   on BIG in file order.  Warm series start with the cold run's rows in their store, so their cases are
+#   ordered by what this machine measured.
 # Writes into $OUT: one folder per series (matrix.json with the schedule section, results.csv, results.sqlite,
-# the run's log), summary.json and summary.md (walls, parallel efficiency, critical path), env.txt.
+# the run's log, process.json), summary.json and summary.md (walls, parallel efficiency, critical path,
+# predicted-vs-measured r), fixed_costs.jsonl, simulated.json in the 1-worker folders, env.txt, progress.log.
 #
-# Local smoke test (2 cores): DEVICE_TINY=1 BIG=2 MID=2 OUT=/tmp/x bash tools/device_scaling.sh
+# Local smoke test (2 cores, tiny matrices): DEVICE_TINY=1 BIG=2 MID=2 BUDGET_S=2400 OUT=/tmp/x bash tools/device_scaling.sh
+# (SCALING_CACHE=DIR: use that numba cache instead of a fresh one; PY=...: another interpreter)
 set -u
 cd "$(dirname "$0")/.."
 ROOT=$PWD

@@ -51,6 +51,7 @@ from .validation import figure_verdict, load_validation, section as validation_s
 SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
             ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
             ("stability", "Stability heatmaps (dt x stiffness)"), ("scaling", "Throughput scaling"),
+            ("schedule", "Matrix schedule"),
             ("energy", "Energy over time"), ("paper", "Reproduced paper figures"), ("validation", "Validation"),
             ("history", "Performance history (regress)"), ("baseline", "Changes against the baseline"))
 MAX_GAIT_CASES = 12  # a matrix with many legged cases shows the first ones; the tables list all

@@ -3,7 +3,7 @@
 Reads the ``schedule`` key that ``bench-myriapoda matrix`` adds to ``DIR/matrix.json`` after a run
 (``harness.schedule.run_summary``): the parallel efficiency (sum of the cases' wall times over
 workers x matrix wall), the critical path (the longest case), and how well the predicted case costs
-that ordered the run matched the measured ones.  Nothing is shown for a directory without it.
+that ordered the run matched the measured ones.  A directory without it gets a one-line note.
 """
 from __future__ import annotations
 
@@ -25,10 +25,12 @@ def load_schedule(out_dir: Path | str) -> dict | None:
 def section(page, out_dir: Path | str) -> None:
     """Append the section to ``page`` (``report.build._Page``) when the run recorded its schedule."""
     sched = load_schedule(out_dir)
+    page.section("schedule", "Matrix schedule: parallel efficiency and critical path")
     if not sched or "efficiency" not in sched:
+        page.p("No schedule recorded: matrix.json has none (a run before issue 31, or nothing ran in the last "
+               "--resume).", "note")
         return
     e = sched["efficiency"]
-    page.section("schedule", "Matrix schedule: parallel efficiency and critical path")
     page.p(sched.get("line", ""))
     r = sched.get("predicted_vs_measured_r")
     rows = {"workers": e.get("workers"), "cases run": e.get("cases"),
