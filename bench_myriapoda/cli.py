@@ -158,6 +158,9 @@ def build_parser() -> argparse.ArgumentParser:
     mx.add_argument("--out", metavar="DIR", default=None,
                     help="results.sqlite, results.csv, matrix.json and series/ go here (default reports/matrix/NAME)")
     mx.add_argument("--report", action="store_true", help="write DIR/index.html and DIR/summary.md when done")
+    mx.add_argument("--schedule", choices=("cost", "file"), default="cost",
+                    help="order the cases are started in: cost (longest predicted first, the default) or file "
+                         "(the matrix file's order); results do not depend on it")
     _budget_arguments(mx)
 
     rp = sub.add_parser("report", help="write DIR/index.html and DIR/summary.md from a matrix output directory",
@@ -518,6 +521,7 @@ def cmd_stable_dt(args) -> int:
 def cmd_quick(args) -> int:
     """The main job: the quick matrix on a local process pool, then its report."""
     ns = argparse.Namespace(file=QUICK_MATRIX, executor="local", workers=args.workers, scheduler=None, resume=False,
+                            schedule="cost",
                             timeout_per_case=None, out=args.out, report=True, retry_failed=False, dask_timeout=None,
                             force=False, memory_budget=None, max_steps=None)
     return cmd_matrix(ns)
@@ -566,6 +570,9 @@ def cmd_matrix(args) -> int:
             import dask.distributed  # noqa: F401
         except ImportError:
             raise InputError("--executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
+    if args.executor == "local":  # the workers' fork server imports the package while the matrix expands
+        from .harness.worker_start import prestart
+        prestart()
     exp = expand_matrix(locate_matrix(args.file))
     out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name
     if out.exists() and not out.is_dir():
@@ -594,12 +601,20 @@ def cmd_matrix(args) -> int:
     def on_result(result, done, total):
         bar.case_done(labels[result.case.case_hash()], result.status, result.message)
 
+    from .harness.store import DEFAULT_STORE as history_store
+    stats: dict = {}
     try:
-        run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
-                   timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result, matrix=exp.name,
-                   resume=args.resume, series_dir=out / "series", retry_failed=args.retry_failed)
+        ran = run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
+                         timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result,
+                         matrix=exp.name, resume=args.resume, series_dir=out / "series",
+                         retry_failed=args.retry_failed, schedule=getattr(args, "schedule", "cost"),
+                         history_stores=[history_store], stats=stats)
     finally:
         bar.close()
+    if ran:
+        from .harness.schedule import run_summary, write_run_summary
+        sched = run_summary(stats, ran, labels)
+        write_run_summary(out / "matrix.json", sched)
     rows = matrix_rows(store, exp.name).drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(labels)]
     axes_of = {}
@@ -629,6 +644,8 @@ def cmd_matrix(args) -> int:
     missing = set(labels) - set(rows.case_hash)
     bad = sum(t["status"] in ("error", "timeout") for t in table)
     print(f"{len(table)} of {len(labels)} cases stored in {store}; {bad} error or timeout; table in {out / 'results.csv'}")
+    if ran:
+        print(sched["line"])
     if args.report:
         from .harness.store import DEFAULT_STORE
         from .report.build import build_report

@@ -1,4 +1,5 @@
 """Scenario matrices: expansion, bad files, local vs Dask, fault isolation, kill and resume."""
+import json
 import math
 import signal
 import sqlite3
@@ -317,3 +318,76 @@ def test_killed_matrix_resumes_with_every_case_stored_exactly_once(tmp_path):
     per_run = pd.read_sql("SELECT run_id, COUNT(*) AS n FROM metrics GROUP BY run_id", con)
     assert set(per_run.run_id) == set(runs.id) and per_run.n.nunique() == 1 and per_run.n.iloc[0] > 10
     assert "8 of 8 cases stored" in res.stdout
+
+
+class _Interrupt(Exception):
+    pass
+
+
+@pytest.mark.parametrize("executor", ["local", "dask"])
+def test_an_interrupted_cost_scheduled_matrix_resumes_with_every_case_stored_once(tmp_path, executor):
+    # issue 31: cases start longest predicted first; an interrupted matrix still resumes with each case once
+    if executor == "dask":
+        pytest.importorskip("dask.distributed")
+    cases = small_cases(tmp_path)
+    db = tmp_path / "r.sqlite"
+    kw = dict(store_path=db, matrix="small", schedule="cost")
+    if executor == "dask":
+        kw["dask_processes"] = False
+
+    def stop_after_two(result, done, total):
+        if done == 2:
+            raise _Interrupt()
+
+    stats: dict = {}
+    with pytest.raises(_Interrupt):
+        run_matrix(cases, executor, workers=2, on_result=stop_after_two, stats=stats, **kw)
+    assert set(stats["predicted_s"]) == {c.case_hash() for c in cases}  # every case had a cost before it ran
+    first = pd.read_sql("SELECT case_hash FROM runs", sqlite3.connect(db))
+    assert 2 <= len(first) < 4 and first.case_hash.is_unique
+    again = run_matrix(cases, executor, workers=2, resume=True, **kw)
+    assert {r.case.case_hash() for r in again}.isdisjoint(set(first.case_hash))
+    runs = pd.read_sql("SELECT case_hash, status FROM runs", sqlite3.connect(db))
+    assert len(runs) == 4 and runs.case_hash.is_unique and set(runs.status) == {"ok"}
+    assert set(runs.case_hash) == {c.case_hash() for c in cases}
+    assert run_matrix(cases, executor, workers=2, resume=True, **kw) == []  # nothing left to run
+
+
+def test_the_order_cases_start_in_does_not_change_their_results(tmp_path):
+    # longest-first (cost) and file order, and the cases given in reverse: bit-identical metrics per case
+    cases = small_cases(tmp_path)
+    runs = [run_matrix(cases, "local", workers=2, store_path=tmp_path / "c.sqlite", matrix="small", schedule="cost"),
+            run_matrix(cases, "local", workers=2, store_path=tmp_path / "f.sqlite", matrix="small", schedule="file"),
+            run_matrix(cases[::-1], "local", workers=1, store_path=tmp_path / "r.sqlite", matrix="small")]
+    by_hash = [{r.case.case_hash(): r for r in rs} for rs in runs]
+    assert all(len(b) == 4 for b in by_hash)
+    for h, r in by_hash[0].items():
+        for other in by_hash[1:]:
+            o = other[h]
+            assert r.status == o.status == "ok" and r.metrics.keys() == o.metrics.keys()
+            assert not {k: (v, o.metrics[k]) for k, v in r.metrics.items() if not same(v, o.metrics[k])}
+
+
+def test_a_matrix_run_ends_with_its_parallel_efficiency_and_critical_path(tmp_path, capsys):
+    p = write(tmp_path, """
+        [matrix]
+        name = "eff"
+        creatures = ["worm"]
+        bodies = ["massspring"]
+        scenarios = ["flat"]
+        duration = 0.3
+        set = { "creature.segments" = 4 }
+        [matrix.grid]
+        "friction.mu_transverse" = [0.2, 0.6]
+    """)
+    out = tmp_path / "out"
+    assert main(["matrix", str(p), "--workers", "2", "--out", str(out)]) == 0
+    line = [ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("parallel efficiency")]
+    assert len(line) == 1 and "critical path" in line[0] and "on 2 worker(s)" in line[0]
+    sched = json.loads((out / "matrix.json").read_text())["schedule"]
+    eff = sched["efficiency"]
+    assert eff["cases"] == 2 and eff["workers"] == 2 and 0 < eff["parallel_efficiency"] <= 1
+    walls = [c["wall_s"] for c in sched["cases"].values()]
+    assert eff["critical_path_s"] == max(walls) and eff["case_wall_sum_s"] == pytest.approx(sum(walls))
+    assert eff["matrix_wall_s"] >= max(walls)
+    assert all(c["predicted_s"] > 0 for c in sched["cases"].values())

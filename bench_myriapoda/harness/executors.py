@@ -4,8 +4,9 @@
 store from this (the parent) process only, one transaction per case, tagged
 ``command = 'matrix'`` and ``matrix = NAME``.  Workers never touch the store.
 
-``local``: ``workers`` long-lived ``spawn`` processes, each fed one case at a
-time over a pipe.  Compile once, not once per worker: cases are grouped by the
+``local``: ``workers`` long-lived processes, each fed one case at a time over a
+pipe, forked from a server that has imported the package once (``worker_start``;
+``spawn`` where there is no fork server).  Compile once, not once per worker: cases are grouped by the
 kernels they compile (``compile_group``); the first case of every group goes out
 first, and the other cases of a group wait until that one has finished, by when
 its kernels are in numba's on-disk cache and the other workers load them instead
@@ -183,7 +184,21 @@ def _worker_main(conn) -> None:
                 pass
             conn.send(("compiled", index))
         else:
-            conn.send(("done", run_case_slim(case)))
+            conn.send(("done", slim_result(run_case(case, progress=_WarmSignal(conn, index)))))
+
+
+class _WarmSignal:
+    """``run_case``'s progress callback in a local worker: after the case's first chunk (its kernels compiled
+    or loaded, one chunk run) it sends ``("warm", index)`` once, so the parent hands the other cases of its
+    compile group to idle workers without waiting for the whole case (``CompileScheduler.warmed``)."""
+
+    def __init__(self, conn, index: int):
+        self.conn, self.index, self.sent = conn, index, False
+
+    def __call__(self, _fraction: float) -> None:
+        if not self.sent:
+            self.sent = True
+            self.conn.send(("warm", self.index))
 
 
 @dataclass
@@ -239,15 +254,32 @@ def compile_group(case: Case) -> tuple:
     return (case.body.name, case.creature.legs_per_segment > 0, has_water(case.scenario))
 
 
-def compile_first_order(cases: Sequence[Case]) -> list[tuple[int, Case]]:
-    """(index, case) with the first case of every compile group first, the rest in their order."""
-    seen: set = set()
-    first, rest = [], []
-    for i, c in enumerate(cases):
-        g = compile_group(c)
-        (rest if g in seen else first).append((i, c))
-        seen.add(g)
-    return first + rest
+def compile_first_order(cases: Sequence[Case], costs: Sequence[float] | None = None) -> list[tuple[int, Case]]:
+    """(index, case) with the first case of every compile group first, the rest in their order.
+
+    With ``costs`` (predicted wall times [s], ``schedule.CostModel``): a group's first case is its
+    cheapest (its kernels reach the cache soonest, which frees the rest of the group), the groups with
+    the most predicted work compile first, and the rest follow longest first (``schedule.longest_first``),
+    so the tail of the matrix is short cases.
+    """
+    if costs is None:
+        seen: set = set()
+        first, rest = [], []
+        for i, c in enumerate(cases):
+            g = compile_group(c)
+            (rest if g in seen else first).append((i, c))
+            seen.add(g)
+        return first + rest
+    from .schedule import longest_first
+
+    groups: dict[tuple, list[int]] = {}
+    for i in longest_first(costs):
+        groups.setdefault(compile_group(cases[i]), []).append(i)
+    heads = sorted(groups.values(), key=lambda members: -sum(costs[i] for i in members))
+    first = [members[-1] for members in heads]  # the cheapest of each group (longest_first's last)
+    taken = set(first)
+    rest = [i for i in longest_first(costs) if i not in taken]
+    return [(i, cases[i]) for i in first + rest]
 
 
 def shares_kernels(g: tuple, h: tuple) -> bool:
@@ -270,8 +302,8 @@ class CompileScheduler:
     4. nothing: the worker waits for a group to turn warm.
     """
 
-    def __init__(self, cases: Sequence[Case]):
-        self.pending = deque(compile_first_order(cases))
+    def __init__(self, cases: Sequence[Case], costs: Sequence[float] | None = None):
+        self.pending = deque(compile_first_order(cases, costs))
         self.groups = [compile_group(c) for c in cases]
         self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
         self.warm: set = set()  # groups with a finished case
@@ -331,6 +363,13 @@ class CompileScheduler:
         if ok:
             self.warm.add(g)
 
+    def warmed(self, index: int) -> None:
+        """Case ``index`` has compiled (or loaded) its kernels and run its first chunk: its group is warm,
+        the rest of the group may start while it runs on."""
+        g = self.groups[index]
+        self.warm.add(g)
+        self.compiling.discard(g)
+
     def finished(self, index: int) -> None:
         """Case ``index`` ended (any status): its group's kernels are compiled and cached."""
         g = self.groups[index]
@@ -338,9 +377,14 @@ class CompileScheduler:
         self.compiling.discard(g)
 
 
-def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None]) -> None:
-    ctx = mp.get_context("spawn")
-    sched = CompileScheduler(cases)
+def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None],
+               costs: Sequence[float] | None = None) -> int:
+    """Run ``cases`` on ``workers`` local worker processes; return the number of workers that ran cases.
+    ``costs``: predicted wall times [s] in the order of ``cases`` (longest first, ``compile_first_order``)."""
+    from .worker_start import worker_context
+
+    ctx = worker_context()
+    sched = CompileScheduler(cases, costs)
     pending = sched.pending
     next_job = sched.next_job
 
@@ -388,6 +432,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                         break
                     if kind == "started":  # the clock starts when the worker starts the case
                         s.started, s.running = time.monotonic(), True
+                    elif kind == "warm":  # its kernels are in the cache: the rest of its group may start
+                        sched.warmed(payload)
                     else:  # "done": the slim result; "compiled": the index of a compile-only job
                         result = payload
                 if s.compile_only:  # the extra compile worker: no result to record; a compile that died or
@@ -429,17 +475,28 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                 s.request_stop()
         for s in live:
             s.stop(kill=s.job is not None)
+    return n
 
 
 # --------------------------------------------------------------------------- dask
 
 def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeout: float | None,
-              emit: Callable[[RunResult], None], processes: bool = True) -> None:
+              emit: Callable[[RunResult], None], processes: bool = True,
+              costs: Sequence[float] | None = None) -> int:
+    """Run ``cases`` as Dask tasks; return the number of Dask workers (threads) that ran them.
+    ``costs``: predicted wall times [s]; a longer case gets a higher task priority, so it starts first."""
     from dask.distributed import wait  # optional dependency: imported only here
 
     client, cluster = dask_client(scheduler, workers, processes)
     try:
-        futures = {client.submit(run_case_slim, case, pure=False): case for case in cases}
+        order = list(range(len(cases)))
+        if costs is not None:
+            from .schedule import longest_first
+            order = longest_first(costs)
+        # submitted longest first, with priorities to match: Dask runs higher priorities first
+        futures = {client.submit(run_case_slim, cases[i], pure=False, priority=len(order) - rank): cases[i]
+                   for rank, i in enumerate(order)}
+        n_workers = sum(w.get("nthreads", 1) for w in client.scheduler_info().get("workers", {}).values()) or workers
         started: dict[str, float] = {}
         remaining = set(futures)
         while remaining:
@@ -473,6 +530,7 @@ def _run_dask(cases: Sequence[Case], workers: int, scheduler: str | None, timeou
         client.close()
         if cluster is not None:
             cluster.close()
+    return n_workers
 
 
 def worker_process_settings() -> None:
@@ -596,7 +654,9 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
                timeout_per_case: float | None = None, store_path: Path | str = "results.sqlite",
                on_result: Callable[[RunResult, int, int], None] | None = None, *, matrix: str = "matrix",
                resume: bool = False, dask_processes: bool = True,
-               series_dir: Path | str | None = None, retry_failed: bool = False) -> list[RunResult]:
+               series_dir: Path | str | None = None, retry_failed: bool = False,
+               schedule: str = "cost", history_stores: Sequence[Path | str] = (),
+               stats: dict | None = None) -> list[RunResult]:
     """Run ``cases`` and record each result in ``store_path`` as it arrives.
 
     With ``series_dir``, each case's compact recording is saved as ``series_dir/CASE_HASH.npz``
@@ -607,7 +667,16 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
     cases already stored for ``matrix`` are skipped (``total`` counts only the
     cases left); with ``retry_failed`` too, those stored as ``error`` or ``timeout``
     run again.  Duplicate cases (equal hashes) run once.
+
+    ``schedule``: ``"cost"`` predicts each case's wall time (``schedule.CostModel`` from the runs in
+    ``store_path`` and ``history_stores`` and their throughput-suite figures) and starts the longest
+    cases first; ``"file"`` keeps the matrix's order.  Results do not depend on it.
+    ``stats``: a dict filled with what the run gave: ``workers``, ``matrix_wall_s`` (from the first case
+    handed out to the last result stored), ``predicted_s`` (case hash -> predicted wall [s]),
+    ``cost_sources`` (source -> cases) and ``emit_s`` (parent time spent storing results [s]).
     """
+    if schedule not in SCHEDULES:
+        raise ValueError(f"schedule must be one of {SCHEDULES}, got {schedule!r}")
     if executor not in EXECUTORS:
         raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
     skip = done_hashes(store_path, matrix, retry_failed) if resume else set()
@@ -622,20 +691,45 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
         return results
     workers = workers or os.cpu_count() or 1
 
+    costs = None
+    stats = {} if stats is None else stats
+    if schedule == "cost":
+        from .schedule import cost_model_for
+
+        predictions = cost_model_for([store_path, *history_stores]).predict_all(todo)
+        costs = [p.seconds for p in predictions]
+        stats["predicted_s"] = {c.case_hash(): p.seconds for c, p in zip(todo, predictions)}
+        sources: dict[str, int] = {}
+        for p in predictions:
+            sources[p.source] = sources.get(p.source, 0) + 1
+        stats["cost_sources"] = sources
+    emit_s = [0.0]
+
     def emit(result: RunResult) -> None:
+        e0 = time.perf_counter()
         recording = result.extra.pop("recording", None)
         if series_dir is not None and recording is not None:
             save_recording(Path(series_dir) / f"{result.case.case_hash()}.npz", recording)
         record_run(store_path, result, command="matrix", matrix=matrix)
+        emit_s[0] += time.perf_counter() - e0
         results.append(result)
         if on_result is not None:
             on_result(result, len(results), len(todo))
 
-    if executor == "local":
-        _run_local(todo, workers, timeout_per_case, emit)
-    else:
-        _run_dask(todo, workers, scheduler, timeout_per_case, emit, processes=dask_processes)
+    t0 = time.perf_counter()
+    try:
+        if executor == "local":
+            used = _run_local(todo, workers, timeout_per_case, emit, costs)
+        else:
+            used = _run_dask(todo, workers, scheduler, timeout_per_case, emit, processes=dask_processes, costs=costs)
+    finally:
+        stats["matrix_wall_s"] = time.perf_counter() - t0
+        stats["emit_s"] = emit_s[0]
+    stats["workers"] = used
     return results
+
+
+SCHEDULES = ("cost", "file")
 
 
 def matrix_rows(store_path: Path | str, matrix: str):

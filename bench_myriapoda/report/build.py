@@ -39,7 +39,7 @@ import pandas as pd
 
 from ..core.cells import fmt
 from ..harness.recorder import series_from_recording
-from . import body_wave, sweeps
+from . import body_wave, schedule_section, sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
@@ -51,6 +51,7 @@ from .validation import figure_verdict, load_validation, section as validation_s
 SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
             ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
             ("stability", "Stability heatmaps (dt x stiffness)"), ("scaling", "Throughput scaling"),
+            ("schedule", "Matrix schedule"),
             ("energy", "Energy over time"), ("paper", "Reproduced paper figures"), ("validation", "Validation"),
             ("history", "Performance history (regress)"), ("baseline", "Changes against the baseline"))
 MAX_GAIT_CASES = 12  # a matrix with many legged cases shows the first ones; the tables list all
@@ -184,6 +185,7 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     _trajectories(page, res, main)
     _stability(page, res)
     _scaling(page, res)
+    schedule_section.section(page, d)  # parallel efficiency and critical path of the run (matrix.json)
     if not res.df.empty and body_wave.has_body_wave_sweep(res.df, res.grid_keys):
         body_wave.report_section(page, res)
     _energy(page, res, main)
