@@ -329,8 +329,7 @@ def cmd_run(args) -> int:
     else:
         print_result_table(result)
         if run_id is not None:  # where the result went (--json keeps stdout to the one object)
-            print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id}); "
-                  f"`bench-myriapoda run ... --json` prints it as JSON")
+            print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id})")
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
         return EXIT_FAIL

@@ -135,7 +135,8 @@ def test_scorecard_json_gives_each_pair_four_groups_each_a_number_or_a_reason(qu
 
 def test_centipede_speed_is_commanded_and_its_emergent_measures_differ_between_bodies(quick_run):
     df = bm.load_results(quick_run.out)
-    walks = df[(df.creature == "centipede") & (df.scenario == "walk") & df["creature.segments"].isna()]
+    walks = df[(df.creature == "centipede") & (df.scenario == "walk")]
+    walks = walks[walks.duration == walks.duration.max()]  # the headline walks, not the 0.5 s size sweep
     assert set(walks.body) == {"hybrid", "massspring", "fem"}
     # the speed is the command on every body (1 m/s, the body behind the head a few % slower) ...
     speed = walks.speed_m_per_s.astype(float)

@@ -63,3 +63,25 @@ def test_only_a_legged_walks_speed_is_commanded():
     assert commanded_metric("speed_m_per_s", legged=True) == "controller.head_speed_m_s"
     assert commanded_metric("speed_m_per_s", legged=False) is None
     assert commanded_metric("body_speed_ratio", legged=True) is None
+
+
+def test_impact_loss_and_integrator_drift_are_measured_apart():
+    """A dropped body: energy drifts 1e-4 in free fall, then loses half at the impact (first contact at 1 s)."""
+    from bench_myriapoda.core.series import Series
+    from bench_myriapoda.metrics.locomotion import contact_energy_metrics, energy_metrics
+
+    t = np.linspace(0.0, 2.0, 201)
+    total = np.where(t < 1.0, 10.0 * (1.0 + 1e-4 * t), 5.0)  # [J]
+    energy = np.stack([np.zeros_like(t), np.zeros_like(t), total], axis=1)
+    zeros = np.zeros((len(t), 3))
+    contact = np.repeat((t >= 1.0)[:, None], 4, axis=1)
+    s = Series(t, zeros, zeros, zeros, np.zeros((len(t), 4, 3)), energy, None, segment_contact=contact)
+    m = contact_energy_metrics(s)
+    assert m["energy_drift_free_rel"] == pytest.approx(1e-4 * t[t < 1.0][-1], rel=1e-9)
+    assert m["impact_energy_loss_rel"] == pytest.approx((5.0 - 10.0 * (1 + 1e-4 * t[t < 1.0][-1])) / 10.0, rel=1e-9)
+    assert energy_metrics(s)["energy_drift_rel"] == pytest.approx(-0.5)  # the whole run: impact and drift mixed
+    # in contact from the start: no free-flight window; never in contact: no impact
+    s.segment_contact = np.ones_like(contact)
+    assert all(math.isnan(v) for v in contact_energy_metrics(s).values())
+    s.segment_contact = np.zeros_like(contact)
+    assert all(math.isnan(v) for v in contact_energy_metrics(s).values())
