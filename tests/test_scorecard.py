@@ -5,6 +5,7 @@ Most tests read the output of one run of the main job (``conftest.quick_run``).
 """
 from __future__ import annotations
 
+import html as html_lib
 import json
 import math
 import re
@@ -151,7 +152,7 @@ def test_centipede_speed_is_commanded_and_its_emergent_measures_differ_between_b
     assert sum(x > 0.1 for x in spread.values()) >= 2, spread
     comp = _section((quick_run.out / "index.html").read_text(), "comparison")
     cent = comp.split("<h3>centipede: locomotion and gait</h3>", 1)[1].split("<h3>", 1)[0]
-    assert "commanded: a legged walk's speed is the head speed the controller commands" in cent
+    assert "commanded: a legged walk's speed is the head speed the controller commands" in html_lib.unescape(cent)
     head = re.findall(r"<th>(.*?)</th>", cent.split("</thead>", 1)[0])
     col = head.index("speed [m/s]")
     for row in re.findall(r"<tr[^>]*>(.*?)</tr>", cent.split("<tbody>", 1)[1].split("</tbody>", 1)[0]):
