@@ -225,3 +225,10 @@ def test_the_report_tables_split_sweeps_and_blank_unstable_speeds():
     sweep = tables[2][1].table
     assert list(sweep.columns[:4]) == ["body", "swept values", "duration [s]", "status"]
     assert "speed [m/s]" not in sweep and sweep["t_fail [s]"].iloc[0] == 0.2
+
+
+def test_scorecard_of_something_that_is_not_a_matrix_directory_is_bad_input(tmp_path, capsys):
+    assert main(["scorecard", str(tmp_path / "missing")]) == 2
+    assert main(["scorecard", str(tmp_path)]) == 2  # a directory without results.sqlite and matrix.json
+    err = capsys.readouterr().err
+    assert err.count("bench-myriapoda: error: DIR:") == 2 and capsys.readouterr().out == ""
