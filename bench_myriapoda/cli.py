@@ -124,13 +124,6 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--workers", type=int, metavar="N", default=None,
                     help="processes drawing the figures (default: CPU count; the page is the same for any N)")
 
-    sc = sub.add_parser("scorecard", help="which body model for each creature: stability, fidelity, locomotion "
-                                          "and cost per creature x body of a matrix output directory")
-    sc.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
-    sc.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
-    sc.add_argument("--history-store", metavar="PATH", default=None,
-                    help="results store with validate and stable-dt results (default reports/results.sqlite)")
-
     rg = sub.add_parser("regress", help="time the fixed throughput suite, store it, compare with a baseline run")
     rg.add_argument("--baseline", metavar="COMMIT_OR_RUN", default=None,
                     help="a regress run id or a git commit (prefix) with a run in the store "
@@ -144,6 +137,7 @@ def build_parser() -> argparse.ArgumentParser:
     rg.add_argument("--suite", nargs="+", action="extend", metavar="NAME", default=None,
                     help="run only these entries of the suite (default: all)")
 
+    _scorecard_parser(sub)
     _keys_parser(sub)
     pe = sub.add_parser("peers", help="time MuJoCo flex and PyElastica's snake side by side with ours (extra [peers])")
     pe.add_argument("--repeats", type=int, metavar="N", default=5, help="timed repetitions per entry (default 5)")
@@ -506,6 +500,15 @@ def cmd_report(args) -> int:
     if args.baseline:
         print(f"{summary.regressions} regression(s) against {args.baseline}")
     return EXIT_FAIL if args.strict and summary.regressions else EXIT_OK
+
+
+def _scorecard_parser(sub) -> None:
+    sc = sub.add_parser("scorecard", help="which body model for each creature: stability, fidelity, locomotion "
+                                          "and cost per creature x body of a matrix output directory")
+    sc.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
+    sc.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    sc.add_argument("--history-store", metavar="PATH", default=None,
+                    help="results store with validate and stable-dt results (default reports/results.sqlite)")
 
 
 def cmd_scorecard(args) -> int:
