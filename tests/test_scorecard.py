@@ -232,3 +232,23 @@ def test_scorecard_of_something_that_is_not_a_matrix_directory_is_bad_input(tmp_
     assert main(["scorecard", str(tmp_path)]) == 2  # a directory without results.sqlite and matrix.json
     err = capsys.readouterr().err
     assert err.count("bench-myriapoda: error: DIR:") == 2 and capsys.readouterr().out == ""
+
+
+def test_fidelity_counts_the_pairs_verdicts_and_names_the_worst_deviation():
+    from bench_myriapoda.report.scorecard import fidelity_group
+    from bench_myriapoda.report.validation import ValidationData
+
+    rows = pd.DataFrame([
+        {"check": "analytic.worm-eps-lambda", "body": "fem", "measured": 0.09, "reference": 0.1, "verdict": "PASS"},
+        {"check": "cross_body.worm-speed", "body": "fem", "measured": 0.5, "reference": 0.1, "verdict": "FAIL"},
+        {"check": "analytic.cantilever", "body": "fem", "measured": 1.01, "reference": 1.0, "verdict": "PASS"},
+        {"check": "miller.image2-snake-coils", "body": "fem", "measured": "x", "reference": "y", "verdict": "FAIL"},
+        {"check": "analytic.worm-eps-lambda", "body": "massspring", "measured": 0.2, "reference": 0.1,
+         "verdict": "FAIL"}])
+    g = fidelity_group(ValidationData(rows, "test rows"), "worm", "fem")
+    # the worm's two checks and the body's own cantilever; not the snake's check, not the other body's row
+    assert g.details["counts"] == {"PASS": 2, "FAIL": 1}
+    assert g.value == pytest.approx(1 / 3) and g.details["worst_check"] == "cross_body.worm-speed"
+    assert g.details["worst_deviation_rel"] == pytest.approx(4.0) and "cross_body.worm-speed (400 % off)" in g.text
+    none = fidelity_group(None, "worm", "fem")
+    assert none.value is None and "bench-myriapoda validate --body fem" in none.reason

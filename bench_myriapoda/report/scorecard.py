@@ -226,7 +226,8 @@ def fidelity_group(vdata, creature: str, body: str) -> Group:
     if vdata is None:
         return Group(None, "not validated", f"no validate results; {cmd}")
     rows = vdata.rows
-    mine = rows[(rows["body"] == body) & [check_creature(c) in (creature, None) for c in rows["check"]]]
+    concerns = np.array([check_creature(str(c)) in (creature, None) for c in rows["check"]], dtype=bool)
+    mine = rows[(rows["body"] == body).to_numpy() & concerns]
     if mine.empty:
         return Group(None, "no check ran", f"{vdata.origin} has no check of {creature} on {body}; {cmd}")
     counts = {k: int(v) for k, v in mine["verdict"].value_counts().items()}
