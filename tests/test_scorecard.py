@@ -252,3 +252,24 @@ def test_fidelity_counts_the_pairs_verdicts_and_names_the_worst_deviation():
     assert g.details["worst_deviation_rel"] == pytest.approx(4.0) and "cross_body.worm-speed (400 % off)" in g.text
     none = fidelity_group(None, "worm", "fem")
     assert none.value is None and "bench-myriapoda validate --body fem" in none.reason
+
+
+def test_shape_tracking_is_shown_when_measured_and_marks_the_speed_comparison():
+    """Issue 27's metric.shape_tracking_error and metric.shape_not_achieved, when the results have them."""
+    from bench_myriapoda.report.scorecard import locomotion_group, shape_group
+
+    case = {"gait": {"amplitude": 0.2, "wavelength_bl": 1.0}, "creature": {"segments": 10, "segment_length_m": 0.1}}
+    row = pd.Series({"creature": "worm", "body": "fem", "gait": "rectilinear", "scenario": "flat", "status": "ok",
+                     "case_json": json.dumps(case), "labels_json": "{}", "metric.body_length_m": 1.0,
+                     "metric.speed_bl_per_cycle": 0.15})
+    plain = locomotion_group(row)
+    assert plain.value == pytest.approx(0.25) and "[shape not achieved]" not in plain.text  # 0.15 against 0.2
+    assert shape_group(row).text == "not measured"
+    flagged = row.copy()
+    flagged["metric.shape_tracking_error"], flagged["metric.shape_not_achieved"] = 0.4, 1.0
+    assert "[shape not achieved]" in locomotion_group(flagged).text
+    g = shape_group(flagged)
+    assert g.value == 0.4 and g.details["shape_not_achieved"] and "shape not achieved" in g.text
+    short = row.copy()
+    short["labels_json"] = json.dumps({"too_short": "too short: 1.00 steady cycles"})
+    assert locomotion_group(short).value is None and "too short: 1.00" in locomotion_group(short).reason
