@@ -330,7 +330,9 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
     :func:`run_matrix` (its cases, the newest run of each, with the matrix's grid keys as the swept
     keys).  Without a matrix manifest, a swept key is any configuration key whose value differs between
     runs of the same creature, body, gait and scenario.  ``keys``: more configuration keys to add as
-    columns (dotted, as ``--set`` takes them).
+    columns (dotted, as ``--set`` takes them).  A key a run does not have (a Young's modulus swept on the
+    FEM body next to a lattice body) is an empty cell (NaN) in that run's row; a key no run has is an
+    ``InputError``.
     """
     import pandas as pd
 
@@ -365,6 +367,9 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
         swept = _swept_keys(flat, [tuple(c[a]["name"] for a in AXES[:4]) for c in cases])
     swept = [k for k in swept if k not in AXES and k not in ("dt", "duration")]
     extra = [k for k in keys if k not in swept]
+    unknown = [k for k in extra if not any(k in f for f in flat)]
+    if unknown and flat:  # no run has it: a typo, not a key of another body model
+        raise InputError("keys", unknown[0], "not a configuration key of any run here (see `bench-myriapoda keys`)")
     rows = []
     for (_, r), case, f in zip(runs.iterrows(), cases, flat):
         axes = {"creature": case["creature"]["name"], "body": case["body"]["name"], "gait": case["gait"]["name"],
@@ -373,12 +378,9 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
             axes.update({k: v for k, v in manifest["cases"][r.case_hash]["axes"].items() if k in AXES and k != "seed"})
             axes["seed"] = case["seed"]
         row = {"run_id": int(r.id), "case_hash": r.case_hash, **axes, "dt": case["dt"]}
-        for k in swept + extra:
-            if k not in f:
-                raise InputError("keys", k, f"not a configuration key of this run "
-                                            f"({axes['creature']}/{axes['body']})")
-            v = f[k]
-            row[k] = list(v) if isinstance(v, tuple) else v
+        for k in swept + extra:  # a key this run's body model lacks (a mixed-body sweep): an empty cell
+            v = f.get(k)
+            row[k] = list(v) if isinstance(v, tuple) else (np.nan if v is None else v)
         row.update({"duration": case["duration"], "status": r.status, "message": r.message or "",
                     "command": r.command, "matrix": r.matrix, "git_commit": r.git_commit, "timestamp": r.timestamp})
         timings = json.loads(r.timings_json)

@@ -190,6 +190,7 @@ def build_parser() -> argparse.ArgumentParser:
     rg.add_argument("--suite", nargs="+", action="extend", metavar="NAME", default=None,
                     help="run only these entries of the suite (default: all)")
 
+    _scorecard_parser(sub)
     _keys_parser(sub)
     pe = sub.add_parser("peers", help="time MuJoCo flex and PyElastica's snake side by side with ours (extra [peers])",
                         **help_text("peers"))
@@ -322,11 +323,20 @@ def print_result_table(result) -> None:
     labels = d.get("labels", {})  # a coded metric (brain_mode_final) prints its label, as the JSON has it
     names = sorted(set(d["metrics"]) | set(labels))
     width = max(len(k) for k in names) if names else 10
+    short = set(too_short_metrics(result)) if labels.get("too_short") else set()
     for k in names:
-        print(f"  {k:<{width}}  {labels[k] if k in labels else _fmt(d['metrics'][k])}")
+        v = labels[k] if k in labels else ("too short" if k in short else _fmt(d["metrics"][k]))
+        print(f"  {k:<{width}}  {v}")
     t = d["timings"]
     print(f"  {'steps':<{width}}  {t['steps']}   steps/s {_fmt(t['steps_per_s'])}   realtime x{_fmt(t['realtime_factor'])}"
           f"   compile {_fmt(t['compile_s'])} s   wall {_fmt(t['wall_s'])} s")
+
+
+def too_short_metrics(result) -> tuple[str, ...]:
+    """The metrics a too-short run leaves NaN (``metrics.locomotion.STEADY_METRICS``, ``metrics.walk``)."""
+    from .metrics.locomotion import STEADY_METRICS
+    from .metrics.walk import EMERGENT_WALK_METRICS
+    return EMERGENT_WALK_METRICS if result.case.creature.legs_per_segment else STEADY_METRICS
 
 
 def cmd_run(args) -> int:
@@ -351,8 +361,7 @@ def cmd_run(args) -> int:
                       total_s=case.duration, dt=case.dt)
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames)
     bar.close()
-    if not args.no_store:
-        record_run(args.store or DEFAULT_STORE, result, command="run")
+    run_id = None if args.no_store else record_run(args.store or DEFAULT_STORE, result, command="run")
     if args.record and result.series is not None:
         extra = {}
         if "leg_timeline" in result.extra:
@@ -369,6 +378,8 @@ def cmd_run(args) -> int:
         print(json.dumps(result.to_json_dict()))
     else:
         print_result_table(result)
+        if run_id is not None:  # where the result went (--json keeps stdout to the one object)
+            print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id})")
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
         return EXIT_FAIL
@@ -548,6 +559,30 @@ def cmd_report(args) -> int:
     return EXIT_FAIL if args.strict and summary.regressions else EXIT_OK
 
 
+def _scorecard_parser(sub) -> None:
+    sc = sub.add_parser("scorecard", help="which body model for each creature: stability, fidelity, locomotion "
+                                          "and cost per creature x body of a matrix output directory")
+    sc.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
+    sc.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
+    sc.add_argument("--history-store", metavar="PATH", default=None,
+                    help="results store with validate and stable-dt results (default reports/results.sqlite)")
+
+
+def cmd_scorecard(args) -> int:
+    """The scorecard of a matrix output directory (``report.scorecard``), as text or one JSON object."""
+    from .harness.store import DEFAULT_STORE
+    from .report.scorecard import scorecard_for_dir, scorecard_lines
+
+    _check_path_flags(args, "--history-store")
+    card = scorecard_for_dir(args.dir, Path(args.history_store) if args.history_store else DEFAULT_STORE)
+    if args.json:
+        print(json.dumps(card.to_json()))
+    else:
+        for line in scorecard_lines(card):
+            print(line)
+    return EXIT_OK
+
+
 def cmd_matrix(args) -> int:
     """Expand a matrix file, list what is not supported, run the rest, store and tabulate the results.
 
@@ -627,6 +662,7 @@ def cmd_matrix(args) -> int:
         axes = axes_of[r.case_hash]
         table.append({"case_hash": r.case_hash, **{k: v for k, v in axes.items()}, "dt": case["dt"],
                       "duration": case["duration"], "status": r.status, "message": r.message or "",
+                      "labels_json": r.labels_json or "{}",
                       **{k: m.get(k) for k in TABLE_METRICS}, "steps_per_s": r.steps_per_s, "wall_s": r.wall_s,
                       **{f"metric.{k}": v for k, v in sorted(m.items())}})
     import pandas as pd
@@ -636,11 +672,10 @@ def cmd_matrix(args) -> int:
         df.to_parquet(out / "results.parquet", index=False)
     except ImportError:  # pyarrow (or fastparquet) not installed: CSV only
         pass
-    head = ["creature", "body", "gait", "scenario", "status", *TABLE_METRICS[:3], "steps_per_s"]
-    lines = [head] + [[_fmt(t.get(k)) for k in head] for t in table]
-    widths = [max(len(str(row[i])) for row in lines) for i in range(len(head))]
-    for row in lines:
-        print("  ".join(str(v).ljust(w) for v, w in zip(row, widths)))
+    from .harness.terminal_table import closing_line, matrix_table_lines
+    shown = [{**t, "axes": axes_of[t["case_hash"]]} for t in table]  # the grid point of each case
+    for line in matrix_table_lines(shown, exp.grid_keys):
+        print(line)
     missing = set(labels) - set(rows.case_hash)
     bad = sum(t["status"] in ("error", "timeout") for t in table)
     print(f"{len(table)} of {len(labels)} cases stored in {store}; {bad} error or timeout; table in {out / 'results.csv'}")
@@ -653,6 +688,9 @@ def cmd_matrix(args) -> int:
         workers = args.workers or os.cpu_count() or 1
         summary = build_report(out, history_store=DEFAULT_STORE, workers=workers)
         print(f"report written to {summary.index} ({len(summary.figures)} figures)")
+        print(closing_line(shown, exp.grid_keys, summary.index, summary.verdicts))
+    else:
+        print(closing_line(shown, exp.grid_keys, None) + f"; write the report with `bench-myriapoda report {out}`")
     return EXIT_FAIL if bad or missing else EXIT_OK
 
 
@@ -910,7 +948,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             args = parser.parse_args(["quick", *argv])
         code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
                 "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
-                "peers": cmd_peers, "validate": cmd_validate}[args.command](args)
+                "peers": cmd_peers, "validate": cmd_validate, "scorecard": cmd_scorecard}[args.command](args)
         sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
         return code
     except BrokenPipeError:

@@ -135,7 +135,9 @@ def test_the_readme_worked_example_moves_the_worm_on_all_three_bodies():
     ns = runpy.run_path(str(ROOT / "examples" / "speed_controller.py"), run_name="example")
     for body in ("massspring", "fem", "hybrid"):
         ctrl = ns["SpeedController"]()
-        res = bm.run(creature="worm", body=body, scenario="flat", duration=6.0, controller=ctrl)
+        # a 6 s run has 1 steady cycle: metrics.min_steady_cycles pinned to 0 so the travel angle is a number
+        res = bm.run(creature="worm", body=body, scenario="flat", duration=6.0, controller=ctrl,
+                     metrics__min_steady_cycles=0)
         assert res.status == "ok", res.message
         forward = (res.series.com[-1, 0] - res.series.com[0, 0]) / res.metrics["body_length_m"]
         assert forward > 0.1, (body, forward)              # it crawled forward (+x, its heading), in BL

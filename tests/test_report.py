@@ -317,7 +317,10 @@ _PROBE = """<script>window.addEventListener('load', () => {
   const secs = [...document.querySelectorAll('section')].map(s => [s.id, s.getBoundingClientRect().height,
                                                                    s.querySelector('h2').getBoundingClientRect().height]);
   const p = document.createElement('pre'); p.id = 'probe';
-  p.textContent = JSON.stringify({imgs, secs, width: document.documentElement.clientWidth});
+  const tables = [...document.querySelectorAll('table')].map(t => [t.closest('section').id,
+                                                                   t.getBoundingClientRect().right,
+                                                                   t.closest('section').getBoundingClientRect().right]);
+  p.textContent = JSON.stringify({imgs, secs, tables, width: document.documentElement.clientWidth});
   document.body.appendChild(p);
 });</script>"""
 
@@ -347,6 +350,37 @@ def test_report_in_chromium_at_1400_px_shows_every_section_and_images_at_least_8
     for src, shown, natural, complete in data["imgs"]:
         assert complete and natural >= 800, f"{src}: {natural} px wide"
         assert shown >= 800, f"{src} drawn {shown} px wide"
+    # issue 26: every table within the page (its right edge inside the window, no horizontal scrolling)
+    assert data["tables"] and all(right <= page + 0.5 for _, right, page in data["tables"]), data["tables"]
+
+
+def chromium_probe(index: Path, tmp_path: Path) -> dict:
+    """Lay ``index`` out in headless chromium at 1400 px with the probe: images, sections, tables, page width."""
+    import html as html_lib
+
+    probe = index.parent / ".probe.html"
+    probe.write_text(index.read_text().replace("</body>", _PROBE + "</body>"))
+    try:
+        cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+               "--disable-background-networking", "--disable-component-update", "--disable-sync",
+               f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1400,1000", "--virtual-time-budget=20000",
+               "--dump-dom", probe.as_uri()]
+        dom = subprocess.run(cmd, check=True, timeout=120, capture_output=True, text=True).stdout
+    finally:
+        probe.unlink()
+    return json.loads(html_lib.unescape(re.search(r'<pre id="probe">(.*?)</pre>', dom, re.S).group(1)))
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="Debian's chromium is not installed (.ci/run installs it)")
+def test_the_quick_report_at_1400_px_has_no_table_wider_than_the_page(quick_run, tmp_path):
+    """The main job's report (issue 26): the scorecard and every detailed table fit a 1400 px window."""
+    data = chromium_probe(quick_run.out / "index.html", tmp_path)
+    assert 1300 <= data["width"] <= 1400
+    sections = {sid for sid, _, _ in data["tables"]}
+    assert {"scorecard", "comparison"} <= sections
+    wide = [(sid, right, page) for sid, right, page in data["tables"] if right > page + 0.5]
+    assert not wide, wide
+    assert [s[0] for s in data["secs"]][0] == "scorecard"
 
 
 def test_report_history_lists_the_peer_speedups(matrix_dir, tmp_path):

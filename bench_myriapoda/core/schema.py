@@ -419,6 +419,9 @@ class StabilityConfig:
 @dataclass(frozen=True)
 class MetricsConfig:
     warmup_cycles: float = rng(2.0, ge=0.0, doc="gait cycles skipped before locomotion metrics are measured")
+    min_steady_cycles: float = rng(2.0, ge=0.0, doc="fewest steady gait cycles (after the amplitude ramp and the "
+                                                   "warm-up) a locomotion metric is measured over; a shorter run "
+                                                   "reports it as too short (NaN, reason in labels.too_short)")
 
 
 SECTIONS: dict[str, type] = {

@@ -28,7 +28,7 @@ from ..core.config import Case
 from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, controller_settings
 from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
-from ..metrics.locomotion import energy_metrics, locomotion_metrics
+from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
 from ..world.water_coupling import WaterCoupling, has_water
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
@@ -228,6 +228,23 @@ class Creature:
         return self.view.scene()
 
 
+def _has_gait(case: Case) -> bool:
+    """A body that moves by a gait: not a passive body (dropped, muscles off) or one hanging by its head."""
+    return case.gait.name != "passive" and not case.scenario.passive and not case.scenario.suspended
+
+
+def _walk_metrics(series, case, metrics: dict, monitor, length: float):
+    """A legged run's emergent measures (``metrics.walk``) over its gait window, and the too-short reason."""
+    from ..metrics.walk import walk_emergent_metrics
+
+    t_walk = monitor.controller.t_walk
+    start = (t_walk if math.isfinite(t_walk) else float(series.t[0])) + 1.0  # as LeggedMonitor.metrics
+    return walk_emergent_metrics(series.t, series.com, series.head, series.tail, series.energy, start,
+                                 case.controller.head_speed_m_s, metrics.get("stride_frequency_hz", math.nan),
+                                 length, case.creature.mass_kg, case.scenario.gravity_m_s2,
+                                 case.metrics.min_steady_cycles)
+
+
 def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False,
              on_sample: Callable[[float, Any, Any], None] | None = None, controller=None) -> RunResult:
     """Simulate ``case`` and return its status, metrics and timings.
@@ -298,7 +315,7 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if monitor is not None:
             # these refer to a muscle wave's period and speed; a legged gait has its own stride metrics
             for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
-                      "cycles_measured"):
+                      "cycles_measured", "steady_cycles"):
                 metrics[k] = float("nan")
         if monitor is None:  # shape, roll, contact and posture_fault of a legless body
             metrics.update(legless_metrics(series, case, length))
@@ -307,6 +324,19 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if monitor is not None:
             metrics.update(monitor.metrics())
             extra.update(monitor.extra())
+        # a legless gait measured over under metrics.min_steady_cycles steady cycles: its locomotion metrics
+        # are NaN and the reason travels with the result (JSON, store, report); a legged walk's emergent
+        # measures (metrics.walk) are NaN under that many strides
+        short = None
+        if monitor is not None and len(series.t) >= 3:
+            walk, short = _walk_metrics(series, case, metrics, monitor, length)
+            metrics.update(walk)
+        elif len(series.t) >= 3 and _has_gait(case):
+            short = too_short_reason(float(series.t[-1]), case)
+        if short:
+            if monitor is None:
+                blank_too_short(metrics)
+            extra.setdefault("labels", {})["too_short"] = short
         if water is not None:
             metrics.update(water.metrics())
             timings["water_s"] = water_wall

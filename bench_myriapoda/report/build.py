@@ -5,8 +5,12 @@ relative files under ``DIR/figures/``, so it opens from disk with no server
 and no network) and ``DIR/summary.md`` (the same tables, for a pull request
 or a terminal).  Sections, each an ``<section id=...>``:
 
+``scorecard``     which body model for each creature: stability, fidelity, locomotion against a reference and
+                  cost per creature x body, a recommendation per creature and the error-vs-cost figure
+                  (``report/scorecard.py``)
 ``overview``      what ran: matrix, case counts by status, unsupported combinations
-``comparison``    per creature, the body models side by side: speed, gait, stability, throughput
+``comparison``    per creature, the body models side by side: stability and throughput, then speed and gait;
+                  then each sweep in its own table per swept key (short runs: stability and throughput)
 ``gait``          leg-state diagrams (paper Fig. 10) and phase lags along the body, per legged case
 ``trajectories``  bodies and paths seen from above, over the terrain, per creature
 ``stability``     dt x stiffness heatmaps per body model (cases of a sweep over ``dt`` and a stiffness key)
@@ -48,7 +52,7 @@ from .figure_pool import FigurePainter
 from .tables import comparison_tables, footnote_marks, html_table, md_table
 from .validation import figure_verdict, load_validation, section as validation_section
 
-SECTIONS = (("overview", "Overview"), ("comparison", "Comparison across body models"),
+SECTIONS = (("scorecard", "Scorecard: which body model for each creature"), ("overview", "Overview"), ("comparison", "Comparison across body models"),
             ("gait", "Gait diagrams and phase lags"), ("trajectories", "Trajectories from above"),
             ("stability", "Stability heatmaps (dt x stiffness)"), ("scaling", "Throughput scaling"),
             ("schedule", "Matrix schedule"),
@@ -63,7 +67,8 @@ body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;mar
 padding:0 1em;color:#222}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 h3{font-size:1em;margin-bottom:.3em}
-table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em}
+table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em;max-width:100%}
+table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}
 th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3f3f3}
 td:first-child,th:first-child{text-align:left}
 tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
@@ -84,6 +89,7 @@ class ReportSummary:
     summary: Path
     figures: list[Path] = field(default_factory=list)
     regressions: int = 0
+    verdicts: dict[str, int] = field(default_factory=dict)  # the reproduced figures' verdicts, counted
 
 
 class _Page:
@@ -95,6 +101,7 @@ class _Page:
         self.html: list[str] = []
         self.md: list[str] = []
         self.figures: list[Path] = []
+        self.verdicts: dict[str, int] = {}
 
     def draw(self, path: Path, fn, *args, **kwargs) -> Path:
         """Have ``fn(*args, **kwargs)`` write the figure file ``path`` (perhaps in a worker: ``figure_pool``)."""
@@ -115,10 +122,12 @@ class _Page:
         self.html.append(f"<h3>{html.escape(text)}</h3>")
         self.md.append(f"\n### {text}\n")
 
-    def table(self, df: pd.DataFrame, row_classes=None, notes=None, footnotes: dict[str, str] | None = None) -> None:
+    def table(self, df: pd.DataFrame, row_classes=None, notes=None, footnotes: dict[str, str] | None = None,
+              css: str = "") -> None:
         """A table; ``notes`` / ``footnotes``: blanked cells and their reasons (``tables.ComparisonTable``)."""
         marks = footnote_marks(footnotes or {})
-        self.html.append(html_table(df, row_classes, notes, marks))
+        t = html_table(df, row_classes, notes, marks)
+        self.html.append(t.replace("<table>", f'<table class="{css}">', 1) if css else t)
         self.md.append(md_table(df, notes, marks))
         for key, text in (footnotes or {}).items():
             self.html.append(f'<p class="footnote"><sup>{marks[key]}</sup> -: {html.escape(text)}</p>')
@@ -177,6 +186,8 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     """The body of ``build_report``: every section into ``tmp``, then moved into ``d``."""
     page = _Page(tmp / "figures", painter)
     page.fig_dir.mkdir()
+    vdata = load_validation(d, Path(history_store) if history_store else None)
+    _scorecard(page, res, vdata, Path(history_store) if history_store else None)
     _overview(page, res)
     sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
     main = res.df[~sweep] if not res.df.empty else res.df
@@ -189,7 +200,6 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     if not res.df.empty and body_wave.has_body_wave_sweep(res.df, res.grid_keys):
         body_wave.report_section(page, res)
     _energy(page, res, main)
-    vdata = load_validation(d, Path(history_store) if history_store else None)
     _paper(page, res, main, vdata)
     validation_section(page, vdata, Path(history_store) if history_store else None)
     _history(page, Path(history_store) if history_store else None)
@@ -213,7 +223,7 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     os.replace(tmp / "summary.md", d / "summary.md")
     shutil.rmtree(old, ignore_errors=True)
     figures = [final_fig / p.name for p in page.figures]
-    return ReportSummary(d / "index.html", d / "summary.md", figures, regressions)
+    return ReportSummary(d / "index.html", d / "summary.md", figures, regressions, dict(page.verdicts))
 
 
 TMP_PREFIX = ".report-"  # DIR/.report-PID-XXXX: the report being built by process PID
@@ -292,6 +302,34 @@ def _overview(page: _Page, res: MatrixResults) -> None:
         page.p("Unsupported combinations (listed before the run, not run): " + "; ".join(res.unsupported), "note")
 
 
+def _scorecard(page: _Page, res: MatrixResults, vdata, store: Path | None) -> None:
+    from .scorecard import build_scorecard, scorecard_table
+    from .scorecard_figure import plot_error_vs_cost
+
+    page.section("scorecard", "Scorecard: which body model for each creature")
+    if res.df.empty:
+        page.p("No case stored yet.", "note")
+        return
+    card = build_scorecard(res, vdata, store)
+    page.p("One row per creature x body model of this matrix. Stability: the largest stable dt found (matrix dt "
+           "sweeps, else stable-dt) and the default dt's margin under it. Fidelity: the validate verdicts of the "
+           "pair and the worst deviation from a reference. Locomotion: the headline case's speed against the "
+           "kinematic or analytic reference (a commanded speed is no result). Cost: CPU seconds per simulated "
+           "second and steps/s. A cell without data says why and which command fills it.", "note")
+    for creature, line in card.recommendations.items():
+        page.html.append(f'<p class="recommendation"><b>Recommendation</b> -- {html.escape(line)}</p>')
+        page.md.append(f"**Recommendation** -- {line}\n")
+    page.table(scorecard_table(card), css="scorecard")
+    points = [(r.creature, r.body, r.error, r.cost.value, r.error_kind) for r in card.rows if r.cost.value is not None]
+    if points:
+        path = page.fig_dir / "scorecard_error_vs_cost.png"
+        page.draw(path, plot_error_vs_cost, points, path)
+        page.figure(path, "Summary: each creature x body pair's error (speed error against its reference, or the "
+                          "share of failed validate checks where no speed reference applies) against its cost "
+                          "(CPU seconds per simulated second), log-log; colour: creature, marker: body model. "
+                          "Pairs without an error measure sit on the strip below at their cost.")
+
+
 def _comparison(page: _Page, res: MatrixResults) -> None:
     from .seed_spread import has_several_seeds, plot_seed_spread
 
@@ -299,15 +337,21 @@ def _comparison(page: _Page, res: MatrixResults) -> None:
     if res.df.empty:
         page.p("No case stored yet.", "note")
         return
-    page.p("One table per creature; a row per case, the cases of parameter sweeps included (after the others, "
-           "each naming its swept values). Speed, gait, stability and throughput metrics (README, 'Metrics'); "
-           "a column appears when some case of the creature has a value; '-' with a mark = does not apply to "
-           "that case (the reason under the table); '-' alone = not measured (e.g. leg metrics of a worm).",
-           "note")
+    page.p("Per creature: its headline cases (outside sweeps) in two tables -- stability and cost, then speed and "
+           "gait -- then each parameter sweep in its own table, titled by its swept keys, with each row's swept "
+           "values and duration (sweeps are short runs: stability and throughput only). A column appears when "
+           "some case has a value; '-' with a mark = no number for that case, the reason under the table "
+           "(does not apply, blew up, commanded, too short); '-' alone = not measured.", "note")
     grid_columns = [f"grid.{k}" for k in res.grid_keys]
-    for creature, ct in comparison_tables(res.df, grid_columns).items():
-        page.h3(creature)
-        page.table(ct.table, [s if s != "ok" else "" for s in ct.table["status"]], ct.notes, ct.footnotes)
+    mask = sweeps.sweep_mask(res.df, res.grid_keys)
+    for creature, tables in comparison_tables(res.df, grid_columns, mask).items():
+        for title, ct in tables:
+            page.h3(title)
+            if ct is None:
+                page.p("No headline case: this creature ran only in the sweeps below." if title == creature
+                       else "No metric measured.", "note")
+                continue
+            page.table(ct.table, [s if s != "ok" else "" for s in ct.table["status"]], ct.notes, ct.footnotes)
         sub = res.df[res.df["creature"] == creature]
         sub = sub[~sweeps.sweep_mask(sub, res.grid_keys)]
         if has_several_seeds(sub):
@@ -463,7 +507,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
         page.h3(f"{fig.figure} ({fig.paper}): {r.label}")
         page.html.append(f'<p class="caption">{html.escape(fig.caption)}</p>')
         page.md.append(f"> {fig.caption}\n")
-        figure_verdict(page, fig, r, res, vdata)
+        v = figure_verdict(page, fig, r, res, vdata)
+        page.verdicts[v] = page.verdicts.get(v, 0) + 1
         s = series_from_recording(rec)
         scen = res.case(r.case_hash)["scenario"]
         food = res.case(r.case_hash).get("food")

@@ -22,15 +22,20 @@ import pandas as pd
 
 from ..core.cells import fmt
 
-# (column of the matrix DataFrame, header, group)
+# (column of the matrix DataFrame, header, group).  The groups are the report's tables per creature:
+# "stability" and "throughput" in the first, "speed" and "gait" in the second, so each fits 1400 px.
 COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("metric.speed_m_per_s", "speed [m/s]", "speed"),
     ("metric.speed_bl_per_s", "speed [BL/s]", "speed"),
     ("metric.speed_bl_per_cycle", "speed [BL/cycle]", "speed"),
     ("metric.travel_angle_deg", "travel angle [deg]", "speed"),
+    ("metric.steady_cycles", "steady cycles", "speed"),
     ("metric.slip_ratio", "slip ratio", "gait"),
+    ("metric.body_speed_ratio", "body / commanded speed", "gait"),
+    ("metric.lateral_sway_bl", "lateral sway [BL]", "gait"),
+    ("metric.foot_slip_mean_m", "foot slip [m]", "gait"),
+    ("metric.cost_of_transport_mech", "mech. cost of transport", "gait"),
     ("metric.phase_lag_mean", "phase lag [cycles]", "gait"),
-    ("metric.legs_per_wave", "legs per wave", "gait"),
     ("metric.duty_factor_mean", "duty factor", "gait"),
     ("metric.stride_frequency_hz", "stride freq. [Hz]", "gait"),
     ("metric.walking_cycle_leg_fraction", "legs in walking cycle", "gait"),
@@ -38,12 +43,17 @@ COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("metric.posture_fault", "posture fault", "stability"),
     ("metric.max_penetration_m", "max penetration [m]", "stability"),
     ("metric.energy_drift_rel", "energy drift [rel]", "stability"),
+    ("metric.energy_drift_free_rel", "integrator drift [rel]", "stability"),
+    ("metric.impact_energy_loss_rel", "impact loss [rel]", "contact"),
     ("metric.inverted_elements_max", "inverted tets (max)", "stability"),
     ("steps_per_s", "steps/s", "throughput"),
     ("realtime_factor", "x realtime", "throughput"),
 )
+TABLE_GROUPS = (("", ("stability", "contact", "throughput")), ("locomotion and gait", ("speed", "gait")))
+SWEEP_GROUPS = ("stability", "throughput")  # a sweep's rows are short runs: their speeds are not shown
 CASE_COLUMNS = ("body", "gait", "scenario", "seed")
 SWEPT_COLUMN = "swept values"
+DURATION_COLUMN = "duration [s]"
 
 # Why a metric means nothing for a case: (footnote key, the columns it blanks, the footnote's text).
 # Checked in this order; a cell takes the first reason that applies.
@@ -55,13 +65,58 @@ NOT_APPLICABLE: tuple[tuple[str, tuple[str, ...], str], ...] = (
     ("suspended", ("metric.speed_m_per_s", "metric.speed_bl_per_s", "metric.speed_bl_per_cycle",
                    "metric.travel_angle_deg", "metric.slip_ratio"),
      "suspended from its head (scenario 'hang'): the body does not travel"),
-    ("driven", ("metric.energy_drift_rel",),
+    ("driven", ("metric.energy_drift_rel", "metric.energy_drift_free_rel", "metric.impact_energy_loss_rel"),
      "actively driven (muscles or legs put energy in and take it out): the energy drift measures the "
      "integrator only for a passive body"),
     ("legged", ("metric.speed_bl_per_cycle",),
      "legged: the body has no muscle-wave cycle (the gait's frequency_hz is unused); the legs' cycle is "
      "the stride frequency"),
 )
+
+
+# Why a cell of a case holds no number, beyond what the metric means (``row_reason``): (key, columns, text).
+ROW_REASONS: tuple[tuple[str, tuple[str, ...], str], ...] = (
+    ("unstable", tuple(c for c, _, g in COMPARISON_COLUMNS if g in ("speed", "gait")) + ("metric.energy_drift_rel",
+                                                                                        "metric.energy_drift_free_rel"),
+     "the run blew up (status unstable, at t_fail): what it measured until then is no result"),
+    ("commanded", ("metric.speed_m_per_s", "metric.speed_bl_per_s"),
+     "commanded: a legged walk's speed is the head speed the controller commands (controller.head_speed_m_s), "
+     "the same on every body model; left out of comparisons (see body / commanded speed, foot slip, sway)"),
+    ("too_short", ("metric.speed_m_per_s", "metric.speed_bl_per_s", "metric.speed_bl_per_cycle",
+                   "metric.travel_angle_deg", "metric.slip_ratio", "metric.body_speed_ratio", "metric.lateral_sway_bl",
+                   "metric.cost_of_transport_mech"),
+     "too short: measured over fewer steady gait cycles (after the ramp and warm-up) than "
+     "metrics.min_steady_cycles (2); not a number (the run's reason is in its labels: --json, the store)"),
+    ("contact", ("metric.energy_drift_rel",),
+     "the body hits the ground: the energy change is the impact loss (its own column), not integrator drift; "
+     "the integrator drift is measured before the first contact"),
+)
+
+
+def row_reason(row, column: str) -> str | None:
+    """The ROW_REASONS key that blanks ``column`` for this case (a matrix DataFrame row), or None.
+
+    Unstable runs, commanded speeds of legged walks, too-short runs (``labels.too_short``) and the
+    energy change of a passive body that hit the ground (``metric.impact_energy_loss_rel`` set).
+    """
+    legged = str(row.get("gait", "")) == "leg-wave"
+    case_json = row.get("case_json")
+    if isinstance(case_json, str):
+        legged = bool(json.loads(case_json).get("creature", {}).get("legs_per_segment", 0))
+    labels = {}
+    if isinstance(row.get("labels_json"), str):
+        try:
+            labels = json.loads(row["labels_json"]) or {}
+        except ValueError:
+            labels = {}
+    impact = row.get("metric.impact_energy_loss_rel")
+    applies = {"unstable": row.get("status") == "unstable", "commanded": legged,
+               "too_short": bool(labels.get("too_short")),
+               "contact": isinstance(impact, float) and math.isfinite(impact)}
+    for key, columns, _ in ROW_REASONS:
+        if column in columns and applies[key]:
+            return key
+    return None
 
 
 def not_applicable_reason(row, column: str) -> str | None:
@@ -101,45 +156,90 @@ class ComparisonTable:
     footnotes: dict[str, str]
 
 
-def comparison_tables(df: pd.DataFrame, grid_columns: Sequence[str] = ()) -> dict[str, ComparisonTable]:
-    """Creature -> table of all its cases (body, gait, scenario, seed, swept values, status, metrics).
+def _table(sub: pd.DataFrame, grid_columns: Sequence[str], groups: Sequence[str], sweep: bool) -> ComparisonTable | None:
+    """One table of ``sub``'s cases: case columns, then the metrics of ``groups`` that some case has
+    (a metric blank with a footnote key where it does not apply to a case).  None when no metric shows."""
+    cols = [c for c in CASE_COLUMNS if c in sub]
+    table = sub[cols].copy()
+    if "seed" in table and table["seed"].isna().all():
+        table = table.drop(columns="seed")
+    for c in ("gait", "scenario"):  # a column with one value for every row says nothing a heading does not
+        if sweep and c in table and table[c].nunique() == 1:
+            table = table.drop(columns=c)
+    swept = [swept_values(r, grid_columns) for _, r in sub.iterrows()]
+    if any(swept):
+        table[SWEPT_COLUMN] = swept
+    table[DURATION_COLUMN] = pd.to_numeric(sub["duration"], errors="coerce") if "duration" in sub else float("nan")
+    table["status"] = sub["status"]
+    notes = pd.DataFrame("", index=table.index, columns=list(table.columns))
+    shown = 0
+    for col, head, group in COMPARISON_COLUMNS:
+        if group not in groups or col not in sub:
+            continue
+        values = pd.to_numeric(sub[col], errors="coerce")
+        reasons = pd.Series([not_applicable_reason(r, col) or row_reason(r, col) or "" for _, r in sub.iterrows()],
+                            index=sub.index)
+        # measured for some case, or blank for a stated reason (a too-short speed): shown
+        if values.notna().any() or (reasons.isin(["too_short", "commanded"]) & (sub["status"] == "ok")).any():
+            table[head] = values.where(reasons == "")
+            notes[head] = reasons
+            shown += 1
+    if not shown:
+        return None
+    keys = table.assign(_sweep=[bool(x) for x in swept])
+    by = ["_sweep"] + [c for c in ("body", "gait", "scenario") if c in table]
+    for col in grid_columns:
+        keys[col] = pd.to_numeric(sub[col], errors="coerce")
+        by.append(col)
+    if "seed" in table:
+        by.append("seed")
+    order = keys.sort_values(by, na_position="first").index
+    table, notes = table.loc[order].reset_index(drop=True), notes.loc[order].reset_index(drop=True)
+    used = set(notes.to_numpy().ravel()) - {""}
+    texts = [(k, text) for k, _, text in NOT_APPLICABLE + ROW_REASONS if k in used]
+    return ComparisonTable(table, notes, dict(texts))
 
-    Every case is a row, sweep cases included: ``swept values`` names each row's grid point (``grid_columns``:
-    the ``grid.KEY`` columns).  Rows: cases outside sweeps first, then by body and swept values.  A metric
-    that does not apply to a case (``not_applicable_reason``) is blank with a footnote key in ``notes``.
+
+def sweep_key_sets(df: pd.DataFrame, grid_columns: Sequence[str]) -> pd.Series:
+    """Each case's swept keys, e.g. "dt x body.stiffness" ("" outside any sweep)."""
+    return pd.Series([" x ".join(c.removeprefix("grid.") for c in grid_columns
+                                 if c in df and not (isinstance(r.get(c), float) and math.isnan(r.get(c)))
+                                 and r.get(c) is not None)
+                      for _, r in df.iterrows()], index=df.index, dtype=object)
+
+
+def comparison_tables(df: pd.DataFrame, grid_columns: Sequence[str] = (),
+                      sweep: pd.Series | None = None) -> dict[str, list[tuple[str, ComparisonTable | None]]]:
+    """Creature -> its tables, each (title, table): first its cases outside sweeps, in two tables --
+    (creature, stability and throughput), (creature + ": locomotion and gait", speeds and gait metrics) --
+    then one table per sweep, titled by its swept keys, with stability and throughput columns.
+
+    sweep: which cases belong to a stability or scaling sweep (``sweeps.sweep_mask``; default: a case with
+    any grid value).  Every table has a duration column; ``swept values`` names a row's grid point.  A table
+    of the creature's headline cases is None when it has none (it ran only in sweeps).
     """
-    out: dict[str, ComparisonTable] = {}
+    out: dict[str, list[tuple[str, ComparisonTable | None]]] = {}
     grid_columns = [c for c in grid_columns if c in df]
+    keysets = sweep_key_sets(df, grid_columns)
+    if sweep is None:
+        sweep = keysets != ""
     for creature, sub in df.groupby("creature", sort=True):
-        cols = [c for c in CASE_COLUMNS if c in sub]
-        table = sub[cols].copy()
-        if "seed" in table and table["seed"].isna().all():
-            table = table.drop(columns="seed")
-        swept = [swept_values(r, grid_columns) for _, r in sub.iterrows()]
-        if any(swept):
-            table[SWEPT_COLUMN] = swept
-        table["status"] = sub["status"]
-        notes = pd.DataFrame("", index=table.index, columns=list(table.columns))
-        for col, head, _ in COMPARISON_COLUMNS:
-            if col not in sub:
-                continue
-            values = pd.to_numeric(sub[col], errors="coerce")
-            reasons = pd.Series([not_applicable_reason(r, col) or "" for _, r in sub.iterrows()], index=sub.index)
-            if values.notna().any():  # measured for some case: shown, blanked (with the reason) where meaningless
-                table[head] = values.where(reasons == "")
-                notes[head] = reasons
-        # outside sweeps first; then by body, gait, scenario, the swept values (numerically) and the seed
-        keys = table.assign(_sweep=[bool(x) for x in swept])
-        by = ["_sweep"] + [c for c in ("body", "gait", "scenario") if c in table]
-        for col in grid_columns:
-            keys[col] = pd.to_numeric(sub[col], errors="coerce")
-            by.append(col)
-        if "seed" in table:
-            by.append("seed")
-        order = keys.sort_values(by, na_position="first").index
-        table, notes = table.loc[order].reset_index(drop=True), notes.loc[order].reset_index(drop=True)
-        used = set(notes.to_numpy().ravel()) - {""}
-        out[str(creature)] = ComparisonTable(table, notes, {k: text for k, _, text in NOT_APPLICABLE if k in used})
+        tables: list[tuple[str, ComparisonTable | None]] = []
+        main = sub[~sweep.loc[sub.index]]
+        if main.empty:
+            tables.append((str(creature), None))
+        for title, groups in TABLE_GROUPS:
+            if main.empty:
+                break
+            t = _table(main, [c for c in grid_columns if main[c].notna().any()], groups, False)
+            if t is not None or not title:
+                tables.append((f"{creature}: {title}" if title else str(creature), t))
+        swept = sub[sweep.loc[sub.index]]
+        for keyset, part in swept.groupby(keysets.loc[swept.index], sort=True):
+            cols = [c for c in grid_columns if part[c].notna().any()]
+            t = _table(part, cols, SWEEP_GROUPS, True)
+            tables.append((f"{creature}: sweep over {keyset}", t))
+        out[str(creature)] = tables
     return out
 
 

@@ -166,6 +166,12 @@ def case_outcome(fig, row, res) -> tuple[Outcome | None, str]:
     from ..validation import paper as P
 
     m = row["metrics"] if "metrics" in row and isinstance(row["metrics"], dict) else _metrics(row)
+    try:  # a run too short for its locomotion metrics: the judges say NOT APPLICABLE with this reason
+        too_short = json.loads(row.get("labels_json") or "{}").get("too_short")
+    except (TypeError, ValueError, AttributeError):
+        too_short = None
+    if too_short:
+        m = {**m, "too_short": too_short}
     case = res.case(row.case_hash)
     duration = float(case.get("duration", row.get("duration", math.nan)))
     rec = res.recording(row.case_hash)

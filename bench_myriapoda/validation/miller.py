@@ -89,6 +89,16 @@ def judge_worm_book(com, sc) -> Outcome:
                  final_height_m=float(com[-1, 1]), final_x_m=float(com[-1, 0]))
 
 
+def _finite(v) -> bool:
+    return isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def _no_number(m: dict, name: str) -> str:
+    """Why a judged metric is not a number: the run's too-short reason when it has one."""
+    why = m.get("too_short")
+    return f"{name} is not a number: {why}" if isinstance(why, str) else f"{name} is not a number in this run"
+
+
 # --------------------------------------------------------------------------- Image 3
 
 def judge_sidewinder(m: dict) -> Outcome:
@@ -99,6 +109,8 @@ def judge_sidewinder(m: dict) -> Outcome:
         return not_applicable("bench_myriapoda.reference.miller_images (issue 11) is not on this branch")
     lo, hi = mod.DIAGONAL_DEG
     ang = m.get("travel_angle_deg", math.nan)
+    if not _finite(ang):
+        return not_applicable(_no_number(m, "travel_angle_deg"), f"{lo:g} < |travel angle| < {hi:g} deg")
     contact = m.get("segment_contact_fraction", math.nan)
     roll = m.get("roll_max_deg", math.nan)
     ok = lo < abs(ang) < hi and contact < mod.LOCALISED_CONTACT and roll < mod.ROLL_MAX_DEG
@@ -115,6 +127,8 @@ def judge_snake_coils(m: dict) -> Outcome:
     ref = f"path-following error <= {PATH_FOLLOWING_MAX_BL:g} BL while moving >= {SNAKE_MIN_BL_PER_CYCLE:g} BL/cycle"
     pf = m.get("path_following_error_bl", math.nan)
     v = m.get("speed_bl_per_cycle", math.nan)
+    if not (_finite(pf) and _finite(v)):
+        return not_applicable(_no_number(m, "speed_bl_per_cycle"), ref)
     ok = pf <= PATH_FOLLOWING_MAX_BL and v >= SNAKE_MIN_BL_PER_CYCLE
     return holds(bool(ok), f"{pf:.3f} BL at {v:.3f} BL/cycle", ref, "both bounds",
                  f"speed {m.get('speed_m_per_s', math.nan):.4f} m/s", "",
