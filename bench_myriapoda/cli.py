@@ -561,7 +561,8 @@ def cmd_report(args) -> int:
 
 def _scorecard_parser(sub) -> None:
     sc = sub.add_parser("scorecard", help="which body model for each creature: stability, fidelity, locomotion "
-                                          "and cost per creature x body of a matrix output directory")
+                                          "and cost per creature x body of a matrix output directory",
+                        **help_text("scorecard"))
     sc.add_argument("dir", metavar="DIR", help="a directory written by `bench-myriapoda matrix FILE --out DIR`")
     sc.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
     sc.add_argument("--history-store", metavar="PATH", default=None,

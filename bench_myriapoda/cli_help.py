@@ -48,6 +48,12 @@ DESCRIPTIONS: dict[str, str] = {
         its type, default, allowed range or choices, unit and description. SECTION limits the list to one
         section; `top` holds dt, duration and seed, `body` the body models' keys with the models that have
         each.""",
+    "scorecard": """Print the scorecard of a matrix output directory: one row per creature x body model with
+        its stability (the largest stable dt from the matrix's dt sweeps, else from stable-dt, and the
+        default dt's margin), fidelity (the validate verdicts for the pair), locomotion against the kinematic
+        or analytic reference, shape tracking and cost (CPU seconds per simulated second, steps/s), then one
+        recommendation per creature (the bodies on the Pareto front of error against cost). A cell without
+        data names the command that fills it. The same table heads the report.""",
     "peers": """Time the peer simulators, MuJoCo's flex and PyElastica's Cosserat snake, side by side with this
         suite's bodies on matched cases, in one process and one sitting, and print the ratios. Needs the
         optional extra: pip install "bench-myriapoda[peers]". The timings are stored as a regress run.""",
@@ -71,6 +77,10 @@ EXAMPLES: dict[str, str] = {
   bench-myriapoda matrix scenarios/matrix/miller.toml --workers 2 --timeout-per-case 600
   bench-myriapoda matrix quick --executor dask --scheduler tcp://host:8786
   bench-myriapoda matrix quick --resume --retry-failed
+""",
+    "scorecard": """\
+  bench-myriapoda scorecard reports/quick
+  bench-myriapoda scorecard reports/quick --json | python3 -m json.tool
 """,
     "report": """\
   bench-myriapoda report reports/quick

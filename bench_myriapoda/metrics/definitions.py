@@ -136,11 +136,28 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("food_reached", "count", "food sources eaten", "legged creatures"),
     ("time_to_first_food_s", "s", "when the first food source was eaten (NaN if none)", "legged creatures"),
     ("food_sources", "count", "food sources in the scenario", "legged creatures"),
+    # ---- emergent walking measures (metrics/walk.py): a walk's speed is commanded, these are not
+    ("body_speed_ratio", "-", "centre-of-mass ground speed over the commanded head speed "
+     "(`controller.head_speed_m_s`)", "legged creatures"),
+    ("lateral_sway_bl", "BL", "RMS sideways deviation of the centre of mass from its line of travel",
+     "legged creatures"),
+    ("body_stretch_rel", "-", "mean relative change of the head-to-tail distance from t = 0", "legged creatures"),
+    ("cost_of_transport_mech", "-", "positive increments of total mechanical energy over (m g distance "
+     "travelled)", "legged creatures"),
     # ---- shallow water (world/water_coupling.py)
     ("wake_energy", "J", "energy of the water's motion at the end: potential plus kinetic", "water scenarios"),
     ("wake_energy_max", "J", "largest sampled estimate of the wake's energy during the run", "water scenarios"),
     ("water_points_submerged_mean", "count", "mean number of body points under the water surface",
      "water scenarios"),
+    # ---- measured over enough of the gait (harness/runner.py, metrics/locomotion.py)
+    ("steady_cycles", "cycles", "steady gait periods (walks: strides) in the window the locomotion metrics are "
+     "measured over, after the ramp and `metrics.warmup_cycles`; under `metrics.min_steady_cycles` they are "
+     "reported as too short", "every run"),
+    # ---- energy of a dropped or passive body (metrics/locomotion.py)
+    ("energy_drift_free_rel", "-", "change of total mechanical energy from t = 0 to the last sample before the "
+     "first contact, relative (the integrator's drift where no contact removes energy)", "every run"),
+    ("impact_energy_loss_rel", "-", "change of total mechanical energy from the first contact to the end of the "
+     "run, relative to its start (energy lost at impact)", "every run"),
     # ---- stable-dt (harness/stable_dt.py; stored with command = 'stable-dt')
     ("stable_dt_max_s", "s", "largest time step for which the case stayed stable over its duration (NaN when even "
      "the smallest tried was unstable)", "stable-dt"),
