@@ -401,7 +401,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     if gait not in supported_gaits:
         raise InputError("--gait", None, f"unsupported combination: creature {cre['name']!r} does not support gait "
                                          f"{gait!r}; supported: {', '.join(supported_gaits)}")
-    if body not in cdata.get("bodies", {}):
+    if body not in cdata.get("bodies", {}) and spec.default_params is None:
         raise InputError("--body", None, f"unsupported combination: creature {cre['name']!r} has no {body!r} body "
                                          f"model; available: {', '.join(sorted(cdata.get('bodies', {}))) or 'none'}")
     if "legs" in registry.GAITS[gait].requires and cre.get("legs_per_segment", 0) == 0:
@@ -417,7 +417,8 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     layers: dict[str, Any] = {
         "creature": cre,
         # the gait's own body keys ([gaits.<gait>.bodies.<body>]) win over the creature's [bodies.<body>]
-        "body": {"name": body, **cdata["bodies"][body], **gait_bodies.get(body, {})},
+        # a creature that names no [bodies.<body>] table gets the backend's declared defaults (BodySpec.default_params)
+        "body": {"name": body, **cdata.get("bodies", {}).get(body, spec.default_params), **gait_bodies.get(body, {})},
         "gait": {"name": gait, **gait_table},
         "scenario": {"name": spath.stem, **sdata["scenario"]},
     }
