@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+from .schema import GaitConfig
+
 
 @dataclass(frozen=True)
 class Footprint:
@@ -57,10 +59,14 @@ class BodySpec:
 
 @dataclass(frozen=True)
 class GaitSpec:
-    """A gait: what it needs from a body (``requires``), and the controller that drives it
-    (``controller(case) -> Controller``, ``core.protocols.Controller``)."""
+    """A gait: what it needs from a body (``requires``), the controller that drives it
+    (``controller(case) -> Controller``, ``core.protocols.Controller``) and the frozen dataclass of its
+    ``[gaits.<name>]`` keys (``config_cls``, ``case.gait``).  A gait with keys of its own declares a
+    subclass of ``GaitConfig`` next to its controller: the base's keys (period, wave, volume rule) are
+    the ones the runner, the metrics and the bodies read of every gait."""
 
     name: str
     description: str
     requires: frozenset
     controller: Callable[[Any], Any] | None = None
+    config_cls: type = GaitConfig
