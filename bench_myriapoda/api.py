@@ -16,7 +16,6 @@ import html
 import json
 import math
 import os
-import sqlite3
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Mapping
@@ -304,15 +303,11 @@ def _swept_keys(flat: list[dict[str, Any]], groups: list[tuple]) -> list[str]:
 
 
 def _read_runs(store: Path):
-    import pandas as pd
+    from .harness.store import StoreReadError, read_runs
 
     try:
-        con = sqlite3.connect(store.resolve().as_uri() + "?mode=ro", uri=True)  # reading never creates a file
-        try:
-            return pd.read_sql("SELECT * FROM runs ORDER BY id", con)
-        finally:
-            con.close()
-    except (sqlite3.DatabaseError, pd.errors.DatabaseError) as exc:
+        return read_runs(store)  # read-only: reading never creates a file
+    except StoreReadError as exc:
         raise InputError(str(store), None, f"not a bench-myriapoda results store ({exc})") from None
 
 

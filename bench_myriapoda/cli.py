@@ -795,6 +795,7 @@ def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildabl
     """(Unless --force) the case fits the resource budget and (``buildable``) its body can be built
     (core/feasibility.py)."""
     from .core.feasibility import check_budget, check_buildable
+    from .world.buildable import check_placements
 
     budget = None
     if args.memory_budget is not None:
@@ -810,6 +811,7 @@ def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildabl
                                        "even with --force")
     if buildable:
         check_buildable(case, source)
+        check_placements(case, source)
 
 
 def _check_matrix_flags(args) -> None:

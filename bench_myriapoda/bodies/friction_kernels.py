@@ -31,6 +31,8 @@ from numba import njit
 
 MILLER, COULOMB, STICK = 0, 1, 2
 FRICTION_MODELS = {"miller": MILLER, "coulomb": COULOMB, "stick": STICK}
+# what a body that applies ``ground_friction`` declares it can honour (``core.specs.BodySpec.capabilities``)
+FRICTION_CAPABILITIES = frozenset(f"friction:{name}" for name in FRICTION_MODELS)
 
 # friction parameter vector layout
 CONTACT_DISTANCE, MU_F, MU_B, MU_T, MUS_F, MUS_B, MUS_T, MU_SLIDE = range(8)

@@ -10,6 +10,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.errors import InputError
+
+DERIVED = -1.0  # the body configs' "derive from the creature" value
 
 @dataclass(frozen=True)
 class SegmentChainLayout:
@@ -37,6 +40,45 @@ class SegmentChainLayout:
     def body_length(self) -> float:
         """Head front face to tail back face [m]."""
         return self.n_rigid * self.rigid_length + (self.n_rigid - 1) * self.link_length
+
+
+def chain_sizes(cfg, creature) -> dict[str, float]:
+    """The rigid boxes' and links' sizes [m] of a chain config (-1: derived from the creature, links half a
+    segment long), unchecked: lr, wr, hr (rigid length, width, height), ll, wl, hl (link)."""
+    def pick(value: float, default: float) -> float:
+        return default if value == DERIVED else value
+    lr = pick(cfg.rigid_length_m, creature.segment_length_m)
+    wr = pick(cfg.rigid_width_m, creature.width_m)
+    hr = pick(cfg.rigid_height_m, creature.height_m)
+    return dict(lr=lr, wr=wr, hr=hr, ll=pick(cfg.link_length_m, 0.5 * lr), wl=pick(cfg.link_width_m, wr),
+                hl=pick(cfg.link_height_m, hr))
+
+
+SIZE_KEYS = {"lr": "rigid_length_m", "wr": "rigid_width_m", "hr": "rigid_height_m", "ll": "link_length_m",
+             "wl": "link_width_m", "hl": "link_height_m"}
+
+
+def check_chain_segments(case, source: str, what: str) -> None:
+    """A chain of rigid segments needs two of them (one link): ``InputError`` naming ``source`` otherwise.
+    ``what``: the body in words for the message (``"a hybrid body"``)."""
+    if case.creature.segments < 2:
+        raise InputError(source, "creature.segments", f"{case.creature.segments}: {what} needs >= 2 segments "
+                                                      "(one link)")
+
+
+def check_link_fit(case, source: str) -> None:
+    """Every size of the chain positive and the link's cross-section on the rigid face (``InputError``)."""
+    lay = chain_sizes(case.body, case.creature)
+    for key, v in lay.items():
+        if not v > 0:
+            raise InputError(source, f"body.{SIZE_KEYS[key]}", f"{v}: must be > 0 (or -1: derived from the "
+                                                               "creature)")
+    if lay["wl"] > lay["wr"]:
+        raise InputError(source, "body.link_width_m", f"{lay['wl']} m is wider than the rigid face "
+                                                      f"({lay['wr']} m); must be <= it")
+    if lay["hl"] > lay["hr"]:
+        raise InputError(source, "body.link_height_m", f"{lay['hl']} m is taller than the rigid face "
+                                                       f"({lay['hr']} m); must be <= it")
 
 
 @dataclass(frozen=True)

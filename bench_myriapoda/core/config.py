@@ -215,10 +215,11 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
         if gait not in registry.GAITS:
             raise InputError(src, f"gaits.{gait}", f"unknown gait{did_you_mean(gait, registry.GAITS)}; choose one of "
                                                    f"{', '.join(sorted(registry.GAITS))}")
+        gait_cls = registry.GAITS[gait].config_cls  # the gait's own keys (GaitSpec.config_cls)
         if not isinstance(table, dict):
-            check_section(GaitConfig, table, src, f"gaits.{gait}")  # names the bad value
+            check_section(gait_cls, table, src, f"gaits.{gait}")  # names the bad value
             continue
-        check_section(GaitConfig, {k: v for k, v in table.items() if k != GAIT_BODY_TABLE}, src, f"gaits.{gait}")
+        check_section(gait_cls, {k: v for k, v in table.items() if k != GAIT_BODY_TABLE}, src, f"gaits.{gait}")
         _check_gait_bodies(table.get(GAIT_BODY_TABLE, {}), src, gait)
     for body, table in data.get("bodies", {}).items():
         if body not in registry.BODIES:
@@ -277,9 +278,11 @@ def parse_set(item: str) -> tuple[str, Any]:
     return key, value
 
 
-def _section_cls(section: str, body_name: str):
+def _section_cls(section: str, body_name: str, gait_name: str | None = None):
     if section == "body":
         return registry.BODIES[body_name].config_cls
+    if section == "gait" and gait_name is not None:
+        return registry.GAITS[gait_name].config_cls
     return SECTIONS.get(section)
 
 
@@ -302,7 +305,7 @@ def apply_override(layers: dict[str, Any], key: str, value: Any, source: str, bo
     if len(parts) != 2:
         raise InputError(source, key, "expected SECTION.KEY (one dot)")
     section, name = parts
-    cls = _section_cls(section, body_name)
+    cls = _section_cls(section, body_name, layers.get("gait", {}).get("name"))
     if cls is None:
         raise InputError(source, key, f"unknown section {section!r}{did_you_mean(section, allowed_sections)}; "
                                       f"choose one of {', '.join(allowed_sections)}")
@@ -401,7 +404,7 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     if gait not in supported_gaits:
         raise InputError("--gait", None, f"unsupported combination: creature {cre['name']!r} does not support gait "
                                          f"{gait!r}; supported: {', '.join(supported_gaits)}")
-    if body not in cdata.get("bodies", {}):
+    if body not in cdata.get("bodies", {}) and spec.default_params is None:
         raise InputError("--body", None, f"unsupported combination: creature {cre['name']!r} has no {body!r} body "
                                          f"model; available: {', '.join(sorted(cdata.get('bodies', {}))) or 'none'}")
     if "legs" in registry.GAITS[gait].requires and cre.get("legs_per_segment", 0) == 0:
@@ -417,7 +420,8 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     layers: dict[str, Any] = {
         "creature": cre,
         # the gait's own body keys ([gaits.<gait>.bodies.<body>]) win over the creature's [bodies.<body>]
-        "body": {"name": body, **cdata["bodies"][body], **gait_bodies.get(body, {})},
+        # a creature that names no [bodies.<body>] table gets the backend's declared defaults (BodySpec.default_params)
+        "body": {"name": body, **cdata.get("bodies", {}).get(body, spec.default_params), **gait_bodies.get(body, {})},
         "gait": {"name": gait, **gait_table},
         "scenario": {"name": spath.stem, **sdata["scenario"]},
     }
@@ -444,7 +448,8 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
         raise InputError("--set", "friction.model", f"unsupported combination: body {body!r} has no {friction_model!r} friction")
     _check_after_overrides(layers, gait)
 
-    sections = {name: cls(**layers.get(name, {})) for name, cls in SECTIONS.items()}
+    section_cls = {**SECTIONS, "gait": registry.GAITS[gait].config_cls}
+    sections = {name: cls(**layers.get(name, {})) for name, cls in section_cls.items()}
     body_cfg = spec.config_cls(**layers["body"])
     scen: ScenarioConfig = sections["scenario"]
     sections["friction"] = apply_froude(sections["friction"], sections["creature"].body_length_m,

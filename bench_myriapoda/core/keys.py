@@ -114,9 +114,11 @@ def config_keys(section: str | None = None) -> list[dict[str, Any]]:
 
 
 def accepted_keys() -> set[str]:
-    """The dotted keys ``--set`` accepts (some body model's key for ``body.*``), from the config tables."""
+    """The dotted keys ``--set`` accepts (some body model's key for ``body.*``, some gait's for ``gait.*``), from
+    the config tables."""
     registry.load_all()
     keys = set(TOP_LEVEL_SCALARS)
     keys |= {f"{s}.{f.name}" for s, cls in SECTIONS.items() for f in dataclasses.fields(cls)}
     keys |= {f"body.{f.name}" for spec in registry.BODIES.values() for f in dataclasses.fields(spec.config_cls)}
+    keys |= {f"gait.{f.name}" for spec in registry.GAITS.values() for f in dataclasses.fields(spec.config_cls)}
     return keys - set(NAME_KEYS)

@@ -1,18 +1,48 @@
-"""What the catalog says of a body model backend and of a gait (``bench_myriapoda.catalog``)."""
+"""What the catalog says of a body model backend and of a gait (``bench_myriapoda.catalog``).
+
+A body backend is closed: everything the suite asks of a body model is a field of its
+:class:`BodySpec`, which the backend's own subpackage declares (``bodies/<name>/body.py``)
+and the catalog lists by name.  Config loading, feasibility and validation read these fields
+and never name a body.
+"""
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any, Callable
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+from .schema import GaitConfig
+
+
+@dataclass(frozen=True)
+class Footprint:
+    """What building a body will take, counted from its configuration (nothing built).
+
+    ``body_bytes``: memory of the body's state and scratch [bytes]; ``nodes``: positions a
+    sample holds when every node is recorded (``run --record``); ``mesh``: the size in words
+    for a refusal's message (e.g. ``"3,240 tets, 1,000 nodes"``; empty: not worth saying).
+    """
+
+    body_bytes: float
+    nodes: float
+    mesh: str = ""
 
 
 @dataclass(frozen=True)
 class BodySpec:
     """A body model backend.
 
-    ``config_cls``   frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
-    ``factory``      ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case.
-    ``capabilities`` what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
-    ``default_dt``   ``default_dt(body_config) -> float`` time step [s] when none is given.
+    ``config_cls``     frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
+    ``factory``        ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case.
+    ``capabilities``   what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
+    ``default_dt``     ``default_dt(body_config) -> float`` time step [s] when none is given.
+    ``footprint``      ``footprint(case) -> Footprint``: the memory estimate (``core.feasibility``).
+    ``check_buildable`` ``check_buildable(case, source)``: raises ``InputError`` naming ``source`` and
+                       the key for a case the factory cannot build (cheap: nothing compiled).
+    ``default_params`` the ``[bodies.<name>]`` keys of a creature whose file has no such table, or
+                       None: every creature must name its own (the backend's keys are calibrated
+                       per creature, so a missing table is refused).
+    ``checks``         validation check name -> True when ``validate --quick`` runs it on this body
+                       (``validation.registry``; a check runs on the bodies that declare it).
     """
 
     name: str
@@ -21,14 +51,22 @@ class BodySpec:
     factory: Callable[[Any], Any]
     capabilities: frozenset
     default_dt: Callable[[Any], float]
+    footprint: Callable[[Any], Footprint]
+    check_buildable: Callable[[Any, str], None]
+    default_params: Mapping[str, Any] | None = None
+    checks: Mapping[str, bool] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
 class GaitSpec:
-    """A gait: what it needs from a body (``requires``), and the controller that drives it
-    (``controller(case) -> Controller``, ``core.protocols.Controller``)."""
+    """A gait: what it needs from a body (``requires``), the controller that drives it
+    (``controller(case) -> Controller``, ``core.protocols.Controller``) and the frozen dataclass of its
+    ``[gaits.<name>]`` keys (``config_cls``, ``case.gait``).  A gait with keys of its own declares a
+    subclass of ``GaitConfig`` next to its controller: the base's keys (period, wave, volume rule) are
+    the ones the runner, the metrics and the bodies read of every gait."""
 
     name: str
     description: str
     requires: frozenset
     controller: Callable[[Any], Any] | None = None
+    config_cls: type = GaitConfig

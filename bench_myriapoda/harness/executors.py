@@ -44,7 +44,6 @@ import gc
 import multiprocessing as mp
 import os
 import signal
-import sqlite3
 import sys
 import time
 from collections import deque
@@ -56,7 +55,7 @@ from typing import Callable, Sequence
 from ..core.config import Case
 from .recorder import compact_recording, save_recording
 from .runner import RunResult, run_case
-from .store import connect, record_run
+from .store import matrix_case_statuses, read_matrix_runs, record_run
 
 EXECUTORS = ("local", "dask")
 STARTUP_GRACE_S = 120.0  # a fresh worker's imports before its first case do not count against the timeout
@@ -104,12 +103,7 @@ def done_hashes(store_path: Path | str, matrix: str, retry_failed: bool = False)
     """
     if not Path(store_path).exists():
         return set()
-    con = connect(store_path)
-    try:
-        rows = con.execute("SELECT case_hash, status FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id",
-                           (matrix,)).fetchall()
-    finally:
-        con.close()
+    rows = matrix_case_statuses(store_path, matrix)
     newest = dict(rows)  # later rows overwrite earlier ones: the newest status of each case
     return {h for h, st in newest.items() if not (retry_failed and st in FAILED)}
 
@@ -734,11 +728,4 @@ SCHEDULES = ("cost", "file")
 
 def matrix_rows(store_path: Path | str, matrix: str):
     """This matrix's rows of ``runs`` as a DataFrame, in the order they were stored."""
-    import pandas as pd
-
-    con = sqlite3.connect(store_path)
-    try:
-        return pd.read_sql("SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", con,
-                           params=(matrix,))
-    finally:
-        con.close()
+    return read_matrix_runs(store_path, matrix)

@@ -20,7 +20,6 @@ from __future__ import annotations
 import json
 import math
 import re
-import sqlite3
 import statistics
 import subprocess
 import time
@@ -29,6 +28,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..core.errors import InputError
+from .store import read_regress_history
 
 DEFAULT_REPEATS = 7
 DEFAULT_THRESHOLD = 0.10
@@ -158,13 +158,9 @@ def load_history(path: Path | str) -> pd.DataFrame:  # noqa: F821
     path = Path(path)
     df = pd.DataFrame(columns=list(HISTORY_COLUMNS))
     if path.is_file():
-        con = sqlite3.connect(path.resolve().as_uri() + "?mode=ro", uri=True)
-        try:
-            if con.execute("SELECT 1 FROM sqlite_master WHERE type='table' AND name='regress_history'").fetchone():
-                df = pd.read_sql("SELECT " + ", ".join(HISTORY_COLUMNS) + " FROM regress_history"
-                                 " ORDER BY run_id, entry", con)
-        finally:
-            con.close()
+        stored = read_regress_history(path, tuple(HISTORY_COLUMNS))
+        if stored is not None:
+            df = stored
     df["commit_short"] = [(c[:7] if isinstance(c, str) else "?") + ("+" if d == 1 else "")
                           for c, d in zip(df["git_commit"], df["git_dirty"])]
     df["label"] = [f"run {r} {c}" for r, c in zip(df["run_id"], df["commit_short"])]

@@ -323,3 +323,77 @@ def record_regress_run(path: Path | str, rows: list[dict[str, Any]]) -> int:
         + ", ".join(REGRESS_FIELDS) + ") VALUES (?,?,?,?,?," + ",".join("?" * len(REGRESS_FIELDS)) + ")",
         lambda run_id: [(run_id, commit, None if dirty is None else int(dirty), mach, stamp,
                          *(_finite(r[k]) for k in REGRESS_FIELDS)) for r in rows])
+
+
+# --------------------------------------------------------------------------- reading
+# Every query of the store is written in this module; the matrix executor, the regression history, the report
+# and the API read through these functions.  The readers open the file read-only (``mode=ro``): reading never
+# creates or changes a store.
+
+class StoreReadError(Exception):
+    """A store that exists but cannot be read as one (not SQLite, a table missing its columns, ...)."""
+
+
+def _read_only(path: Path | str) -> sqlite3.Connection:
+    return sqlite3.connect(Path(path).resolve().as_uri() + "?mode=ro", uri=True)
+
+
+def _read_sql(path: Path | str, sql: str, params: tuple = ()):
+    """``pandas.read_sql(sql)`` on the store at ``path`` opened read-only; ``StoreReadError`` when unreadable."""
+    import pandas as pd
+
+    try:
+        con = _read_only(path)
+        try:
+            return pd.read_sql(sql, con, params=params)
+        finally:
+            con.close()
+    except (sqlite3.Error, pd.errors.DatabaseError) as exc:
+        raise StoreReadError(str(exc)) from None
+
+
+def _has_table(path: Path | str, table: str) -> bool:
+    try:
+        con = _read_only(path)
+        try:
+            return con.execute("SELECT 1 FROM sqlite_master WHERE type='table' AND name=?", (table,)).fetchone() \
+                is not None
+        finally:
+            con.close()
+    except sqlite3.Error as exc:
+        raise StoreReadError(str(exc)) from None
+
+
+def read_runs(path: Path | str):
+    """Every row of ``runs`` as a DataFrame, in the order stored."""
+    return _read_sql(path, "SELECT * FROM runs ORDER BY id")
+
+
+def read_matrix_runs(path: Path | str, matrix: str):
+    """The rows of ``runs`` that matrix ``matrix`` stored, as a DataFrame, in the order stored."""
+    return _read_sql(path, "SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", (matrix,))
+
+
+def matrix_case_statuses(path: Path | str, matrix: str) -> list[tuple[str, str]]:
+    """(case_hash, status) of every row matrix ``matrix`` stored, in the order stored."""
+    con = connect(path)
+    try:
+        return con.execute("SELECT case_hash, status FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id",
+                           (matrix,)).fetchall()
+    finally:
+        con.close()
+
+
+def read_regress_history(path: Path | str, columns: tuple[str, ...]):
+    """``columns`` of ``regress_history`` ordered by run and entry, or None when the store has no such table."""
+    if not _has_table(path, "regress_history"):
+        return None
+    return _read_sql(path, "SELECT " + ", ".join(columns) + " FROM regress_history ORDER BY run_id, entry")
+
+
+def read_latest_validation(path: Path | str):
+    """The rows of the newest ``validate`` run in ``validation``, or None when there is none."""
+    if not _has_table(path, "validation"):
+        return None
+    df = _read_sql(path, "SELECT * FROM validation WHERE run_id = (SELECT MAX(run_id) FROM validation)")
+    return df if len(df) else None

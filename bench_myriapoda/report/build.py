@@ -33,7 +33,6 @@ import html
 import logging
 import os
 import shutil
-import sqlite3
 import tempfile
 import time
 from dataclasses import dataclass, field
@@ -43,6 +42,7 @@ import pandas as pd
 
 from ..core.cells import fmt
 from ..harness.recorder import series_from_recording
+from ..harness.store import StoreReadError
 from . import body_wave, schedule_section, sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
@@ -566,7 +566,7 @@ def _history(page: _Page, store: Path | None) -> None:
 
     try:
         hist = load_history(store)
-    except (sqlite3.Error, pd.errors.DatabaseError) as exc:
+    except StoreReadError as exc:
         page.p(f"Could not read the regress history in {store}: {exc}", "note")
         return
     if hist.empty:

@@ -17,7 +17,6 @@ timings.  Recordings are read on demand with :meth:`MatrixResults.recording`.
 from __future__ import annotations
 
 import json
-import sqlite3
 import zipfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -28,6 +27,7 @@ import pandas as pd
 from ..core.errors import InputError
 from ..harness.matrix import MANIFEST
 from ..harness.recorder import load_recording
+from ..harness.store import StoreReadError, read_matrix_runs
 
 AXES = ("creature", "body", "gait", "scenario", "seed")
 
@@ -77,13 +77,8 @@ def load_matrix_dir(directory: Path | str, flag: str = "DIR") -> MatrixResults:
     cases = meta["cases"]
     check_store(store, str(store), write=False, need=("runs",))
     try:
-        con = sqlite3.connect(store.resolve().as_uri() + "?mode=ro", uri=True)
-        try:
-            rows = pd.read_sql("SELECT * FROM runs WHERE command = 'matrix' AND matrix = ? ORDER BY id", con,
-                               params=(meta["name"],))
-        finally:
-            con.close()
-    except (sqlite3.Error, pd.errors.DatabaseError) as exc:
+        rows = read_matrix_runs(store, meta["name"])
+    except StoreReadError as exc:
         raise InputError(str(store), None, f"unreadable results store: {exc}") from None
     rows = rows.drop_duplicates("case_hash", keep="last")
     rows = rows[rows.case_hash.isin(cases)]

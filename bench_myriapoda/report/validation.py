@@ -20,12 +20,12 @@ import html
 import json
 import math
 import shutil
-import sqlite3
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
 
+from ..harness.store import StoreReadError, read_latest_validation
 from ..validation.core import FAIL, INFO, NA, PASS, Outcome
 
 COLORS = {PASS: "#17692a", FAIL: "#b00000", NA: "#8a6d00", INFO: "#1f4e99", "NOT VALIDATED": "#666"}
@@ -64,18 +64,10 @@ def _from_store(path: Path) -> ValidationData | None:
     if not path.is_file():
         return None
     try:
-        con = sqlite3.connect(path)
-        try:
-            have = con.execute("SELECT name FROM sqlite_master WHERE type='table' AND name='validation'").fetchone()
-            if not have:
-                return None
-            run = con.execute("SELECT MAX(run_id) FROM validation").fetchone()[0]
-            if run is None:
-                return None
-            df = pd.read_sql("SELECT * FROM validation WHERE run_id = ?", con, params=(run,))
-        finally:
-            con.close()
-    except sqlite3.Error:
+        df = read_latest_validation(path)
+    except StoreReadError:
+        return None
+    if df is None:
         return None
     rows = pd.DataFrame({
         "check": df["check_name"], "family": df["family"], "body": df["body"], "quantity": df["quantity"],

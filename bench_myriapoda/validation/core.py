@@ -17,10 +17,17 @@ import math
 from dataclasses import asdict, dataclass, field
 from typing import Any, Callable
 
+from ..core import registry
+
 PASS, FAIL, NA, INFO = "PASS", "FAIL", "NOT APPLICABLE", "INFO"
 VERDICTS = (PASS, FAIL, NA, INFO)
-ALL_BODIES = ("massspring", "fem", "hybrid")
 CROSS = "all"  # the body column of a cross-body row
+
+
+def all_bodies() -> tuple[str, ...]:
+    """Every registered body model, in the catalog's order (``core.registry``)."""
+    registry.load_all()
+    return tuple(registry.BODIES)
 
 
 @dataclass(frozen=True)
@@ -46,18 +53,35 @@ class Check:
     """One entry of the registry.
 
     name: ``family.slug``, unique; family: the module; quantity: what is measured, in words;
-    source: where the reference comes from; bodies: the body models it runs on, or ``(CROSS,)``
-    for one row comparing all bodies; quick_bodies: the bodies ``validate --quick`` runs it on;
-    measure(ctx, body) -> Outcome.
+    source: where the reference comes from; measure(ctx, body) -> Outcome; cross: one row comparing
+    all bodies (``cross_quick``: also in ``validate --quick``).
+
+    Which body models a check runs on is declared by the bodies, not here: each backend's
+    ``BodySpec.checks`` names the checks it runs and whether ``--quick`` does (``bodies``,
+    ``quick_bodies``), so a new body model brings its own rows.
     """
 
     name: str
     family: str
     quantity: str
     source: str
-    bodies: tuple[str, ...]
     measure: Callable[["Context", str], Outcome]
-    quick_bodies: tuple[str, ...] | None = None  # bodies in ``--quick``; None: all of ``bodies``; (): none
+    cross: bool = False
+    cross_quick: bool = False
+
+    @property
+    def bodies(self) -> tuple[str, ...]:
+        """The registered body models that declare this check, in the catalog's order, or ``(CROSS,)``."""
+        if self.cross:
+            return (CROSS,)
+        return tuple(b for b in all_bodies() if self.name in registry.BODIES[b].checks)
+
+    @property
+    def quick_bodies(self) -> tuple[str, ...]:
+        """The bodies ``validate --quick`` runs this check on (a cross check: ``(CROSS,)`` or none)."""
+        if self.cross:
+            return (CROSS,) if self.cross_quick else ()
+        return tuple(b for b in self.bodies if registry.BODIES[b].checks[self.name])
 
 
 @dataclass
@@ -90,9 +114,9 @@ class Context:
     distinct case once.
     """
 
-    def __init__(self, quick: bool, bodies: tuple[str, ...] = ALL_BODIES):
+    def __init__(self, quick: bool, bodies: tuple[str, ...] | None = None):
         self.quick = quick
-        self.bodies = bodies
+        self.bodies = all_bodies() if bodies is None else bodies
         self._runs: dict[tuple, Any] = {}
 
     def run(self, creature: str, body: str, scenario: str, gait: str | None = None, duration: float | None = None,

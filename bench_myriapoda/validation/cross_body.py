@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from .core import ALL_BODIES, Context, Outcome, failed_run, holds, not_applicable
+from .core import Context, Outcome, all_bodies, failed_run, holds, not_applicable
 from .paper import WALK_DURATION_S
 
 WORM_SPEED_REL_SPREAD = 0.15      # (max - min) / max of speed_bl_per_cycle over the bodies
@@ -20,7 +20,7 @@ PHASE_LAG_ABS_SPREAD = 0.03       # [cycles]
 
 
 def _bodies(ctx: Context) -> tuple[str, ...]:
-    return tuple(b for b in ALL_BODIES if b in ctx.bodies)
+    return tuple(b for b in all_bodies() if b in ctx.bodies)
 
 
 def _spread(ctx: Context, metric: str, runs: dict, tol: float, relative_spread: bool, unit: str) -> Outcome:

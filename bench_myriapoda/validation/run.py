@@ -14,7 +14,7 @@ from typing import Callable, Sequence
 
 from ..core.cells import fmt
 from ..core.errors import InputError
-from .core import ALL_BODIES, CROSS, FAIL, NA, Check, Context, Row
+from .core import CROSS, FAIL, NA, Check, Context, Row, all_bodies
 from .registry import BY_NAME, CHECKS
 
 DEFAULT_OUT = Path("reports") / "validation"
@@ -28,10 +28,11 @@ def select(check_names: Sequence[str] | None, bodies: Sequence[str] | None,
     ``check_names``: full names or family names (``analytic``); ``bodies``: body model names.
     ``quick`` keeps each check's ``quick_bodies`` only, unless the check was named explicitly.
     """
-    bodies = tuple(bodies) if bodies else ALL_BODIES
+    known = all_bodies()
+    bodies = tuple(bodies) if bodies else known
     for b in bodies:
-        if b not in ALL_BODIES:
-            raise InputError("--body", b, f"unknown body model; allowed: {', '.join(ALL_BODIES)}")
+        if b not in known:
+            raise InputError("--body", b, f"unknown body model; allowed: {', '.join(known)}")
     families = {c.family for c in CHECKS}
     named: list[Check] = []
     for n in check_names or ():
@@ -54,7 +55,7 @@ def select(check_names: Sequence[str] | None, bodies: Sequence[str] | None,
     return pairs, bodies
 
 
-def run_checks(pairs: list[tuple[Check, str]], quick: bool, bodies: tuple[str, ...] = ALL_BODIES,
+def run_checks(pairs: list[tuple[Check, str]], quick: bool, bodies: tuple[str, ...] | None = None,
                progress: Callable[[str], None] | None = None) -> list[Row]:
     """Measure every (check, body) pair; a check that raises is a FAIL row naming the exception."""
     ctx = Context(quick, bodies)

@@ -25,7 +25,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..core.errors import InputError
-from .core import ALL_BODIES, clean
+from .core import all_bodies, clean
 
 DT_FACTORS = (2.0, 1.0, 0.5, 0.25)
 REF_DT_FACTOR = 0.125
@@ -186,14 +186,15 @@ def plot(q: Quantity, curves: list[dict], path: Path) -> Path:
     return save_figure(fig, path)
 
 
-def run_work_precision(out_dir: Path, bodies=ALL_BODIES, quick: bool = False,
+def run_work_precision(out_dir: Path, bodies=None, quick: bool = False,
                        progress: Callable[[str], None] | None = None, quantities=QUANTITIES) -> dict:
     """Sweep, plot and write ``out_dir/work_precision_*.png`` and ``out_dir/work_precision.json``."""
+    bodies = all_bodies() if bodies is None else bodies
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     data, figures = {}, []
     for q in quantities:
-        curves = [sweep(q, b, quick, progress) for b in ALL_BODIES if b in bodies]
+        curves = [sweep(q, b, quick, progress) for b in all_bodies() if b in bodies]
         data[q.name] = {"title": q.title, "metric": q.metric, "curves": curves}
         figures.append(str(plot(q, curves, out_dir / f"work_precision_{q.name}.png")))
     doc = clean({"quick": quick, "quantities": data, "figures": figures})

@@ -2,8 +2,9 @@
 against the obstacle count.
 
 * ``test_bench_walk_flat_vs_cylinders``: the walking 18-segment hybrid centipede per
-  step on flat ground and among 120 low random cylinders (Fig. 13's sizes, spread over
-  the ground under and ahead of the body); target: within 1.5x of flat ground.
+  step on flat ground and among 40, 120 and 1,000 low random cylinders (Fig. 13's sizes,
+  spread over the ground under and ahead of the body at one density); target: within
+  1.5x of flat ground.
 * ``test_bench_obstacle_query``: one ``signed_distance`` + ``surface_normal`` pair per
   point for 10^5 points 0-1.5 m above the ground (where bodies and legs query) among 10,
   100 and 1,000 cylinders at Fig. 13's density (the paved square grows with the count),
@@ -46,9 +47,26 @@ def walker(overrides):
     return case, b
 
 
-@pytest.mark.parametrize("ground", ["flat", "cylinders-120"])
+def cylinders(n: int) -> list[str]:
+    """``CYLINDERS_120``'s layout with ``n`` cylinders at the same density: its region scaled about its centre by
+    sqrt(n / 120) (issue 30 asks for 40, 120 and 1,000)."""
+    if n == 120:
+        return CYLINDERS_120
+    s = math.sqrt(n / 120.0)
+    x0, x1, z0, z1 = -30.0, 15.0, -15.0, 15.0
+    cx, cz, hx, hz = 0.5 * (x0 + x1), 0.5 * (z0 + z1), 0.5 * (x1 - x0) * s, 0.5 * (z1 - z0) * s
+    region = f"scenario.obstacle_region_m=[{cx - hx:.3f}, {cx + hx:.3f}, {cz - hz:.3f}, {cz + hz:.3f}]"
+    # layout seed 5 at 1,000: with seeds 2, 3, 4 and 6 the body becomes unstable ("runaway speed") on a
+    # cylinder's edge within 3 s (the limit noted at CYLINDERS_120, not the queries'); seed 2 serves 40
+    seed = f"scenario.terrain_seed={5 if n == 1000 else 2}"
+    return [f"scenario.obstacle_cylinders={n}" if o.startswith("scenario.obstacle_cylinders=") else
+            region if o.startswith("scenario.obstacle_region_m=") else
+            seed if o.startswith("scenario.terrain_seed=") else o for o in CYLINDERS_120]
+
+
+@pytest.mark.parametrize("ground", ["flat", "cylinders-40", "cylinders-120", "cylinders-1000"])
 def test_bench_walk_flat_vs_cylinders(benchmark, ground):
-    case, b = walker(CYLINDERS_120 if ground != "flat" else [])
+    case, b = walker(cylinders(int(ground.split("-")[1])) if ground != "flat" else [])
     t = [WALK_IN_STEPS * case.dt]
 
     def chunk():

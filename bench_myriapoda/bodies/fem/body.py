@@ -26,17 +26,21 @@ from functools import cached_property
 
 import numpy as np
 
-from ...core.protocols import MUSCLES, Actuation, Observation
+from ...core.errors import InputError
+from ...core.feasibility import tet_mesh_footprint
+from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
+from ...core.specs import BodySpec, Footprint
 from ...world.terrain import terrain_from_scenario
 from .. import step_status as S
-from ..friction_kernels import friction_params
+from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
+from ..segment_chain import check_chain_segments
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
-from .mesh import cell_lumped_mass, chain_grid, signed_volumes, tetrahedralize_surface
+from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volumes, tetrahedralize_surface
 from .system import DT_PAPER, FEMSystem
 
 FROM_CREATURE = -1.0
@@ -332,3 +336,58 @@ def make_fem(case):
         from .myriapod import BodyFEMChain
         return BodyFEMChain(case)
     return BodyFEM(case)
+
+
+# --------------------------------------------------------------------------- the backend's declaration
+# Everything the suite asks of this body model (the catalog row ``fem``, ``core.specs.BodySpec``): config
+# loading, feasibility and validation read this record and never name the body.
+
+def footprint(case) -> Footprint:
+    """A grid mesh: segments (a legged chain: blocks and links) of cells of ``tets_per_cell`` tets; a surface mesh
+    tetrahedralized by fTetWild at a target edge of fac * bounding-box diagonal: about (1 / fac)^3 tets, within
+    a factor of 10."""
+    body, n = case.body, int(case.creature.segments)
+    tpc = int(body.tets_per_cell)
+    if case.creature.legs_per_segment or body.mesh == "grid":
+        cx, cy, cz = cells_per_segment(body.resolution, body.resolution_unit)
+        parts = max(1, 2 * n - 1) if case.creature.legs_per_segment else n
+        return tet_mesh_footprint(parts * cx * cy * cz * tpc, (parts * cx + 1) * (cy + 1) * (cz + 1))
+    tets = 10.0 / float(body.mesh_edge_length_fac) ** 3
+    return tet_mesh_footprint(tets, tets / 4.0)
+
+
+def check_buildable(case, source: str) -> None:
+    """A legged chain (stiff blocks and soft links in one mesh, ``fem.myriapod``) needs >= 2 segments and, with
+    the blocks' density derived, a creature heavier than its links."""
+    body, cre = case.body, case.creature
+    if not cre.legs_per_segment:
+        return
+    check_chain_segments(case, source, "a legged fem chain")
+    if not body.block_density_kg_m3 > 0:
+        ll = body.link_length_m if body.link_length_m > 0 else 0.5 * cre.segment_length_m
+        rho = body.density_kg_m3 if body.density_kg_m3 > 0 else 1.0
+        m_links = rho * (cre.segments - 1) * ll * cre.width_m * cre.height_m
+        if not cre.mass_kg > m_links:
+            raise InputError(source, "creature.mass_kg", f"{cre.mass_kg} kg is not more than the links' mass "
+                                                         f"{m_links:.4g} kg; must be larger (or set "
+                                                         "body.block_density_kg_m3)")
+
+
+# check name -> run by ``validate --quick`` (validation.registry)
+CHECKS = {"analytic.worm-eps-lambda": True, "analytic.hanging-bar": True, "analytic.cantilever": True,
+          "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True, "analytic.damping-pure-mode": True,
+          "analytic.damping-oscillating-mode": True, "analytic.slithering": False,
+          "miller.image1-worm-book": False, "miller.image2-snake-coils": False, "miller.image3-sidewinder": False,
+          "miller.image4-caterpillar-arch": False, "miller.image4-caterpillar-up": False,
+          "miller.image4-caterpillar-down": False, "paper.fig10a-hang": False, "paper.fig10d-walk": False,
+          "paper.wave-centipede": False}
+
+# The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
+# declaration, not repeated logic.
+BACKEND = BodySpec(
+    name="fem",
+    description="Fang et al. 2013 App. A: every segment a fixed-corotational tetrahedral FEM block; "
+                "muscles as active strain",
+    config_cls=FEMConfig, factory=make_fem, default_dt=default_dt,
+    capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
+    footprint=footprint, check_buildable=check_buildable, checks=CHECKS)

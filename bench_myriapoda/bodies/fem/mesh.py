@@ -139,6 +139,12 @@ def cell_lumped_mass(tets, vol, rho, tets_per_cell, n_nodes):
     return m
 
 
+def cells_per_segment(resolution: int, unit: str) -> tuple[int, int, int]:
+    """Hexahedral cells along each axis of one segment (``segment_cells`` without its checks: for estimates)."""
+    c = max(1, int(resolution) - 1) if unit == "nodes" else max(1, int(resolution))
+    return c, c, c
+
+
 def segment_cells(resolution, resolution_unit="nodes"):
     """Cells per segment (nx, ny, nz) from a resolution given in cells or in nodes per edge.
 

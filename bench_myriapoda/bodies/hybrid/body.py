@@ -75,19 +75,22 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ...core.errors import InputError
+from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
+from ...core.specs import BodySpec, Footprint
 from ...world.terrain import terrain_from_scenario
 from .. import rigid_kernels as rk
 from ..fem import kernels as FK
-from ..fem.mesh import RESOLUTION_UNITS, box_grid, segment_cells
+from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
-from ..friction_kernels import friction_params
+from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..kinematic_targets import drive_to_targets
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
-from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments
+from ..segment_chain import (CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes, check_chain_segments,
+                             check_link_fit)
 from . import kernels as K
 
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
@@ -142,13 +145,7 @@ def hybrid_layout(cfg: HybridConfig, creature) -> SegmentChainLayout:
     if creature.segments < 2:
         raise ValueError(f"a hybrid body needs at least 2 rigid segments (one link); creature "
                          f"{creature.name!r} has {creature.segments}")
-    pick = lambda value, default: default if value == DERIVED else value  # noqa: E731
-    lr = pick(cfg.rigid_length_m, creature.segment_length_m)
-    wr = pick(cfg.rigid_width_m, creature.width_m)
-    hr = pick(cfg.rigid_height_m, creature.height_m)
-    ll = pick(cfg.link_length_m, 0.5 * lr)
-    wl = pick(cfg.link_width_m, wr)
-    hl = pick(cfg.link_height_m, hr)
+    lr, wr, hr, ll, wl, hl = chain_sizes(cfg, creature).values()
     if wl > wr or hl > hr:
         raise ValueError(f"the link cross-section {hl} x {wl} m (height x width) must fit on the rigid "
                          f"face {hr} x {wr} m")
@@ -593,3 +590,60 @@ class BodyHybrid(SupportedSegments):
 def make_hybrid(case):
     """The hybrid body, for every creature (legged or not: the runner composes the controller)."""
     return BodyHybrid(case)
+
+
+# --------------------------------------------------------------------------- the backend's declaration
+# Everything the suite asks of this body model (the catalog row ``hybrid``, ``core.specs.BodySpec``): config
+# loading, feasibility and validation read this record and never name the body.
+
+def footprint(case) -> Footprint:
+    """The links' tetrahedral mesh: ``n - 1`` links of cells of ``tets_per_cell`` tets (the boxes are 13 numbers
+    each)."""
+    body = case.body
+    cx, cy, cz = cells_per_segment(body.resolution, body.resolution_unit)
+    links = max(1, int(case.creature.segments) - 1)
+    return tet_mesh_footprint(links * cx * cy * cz * int(body.tets_per_cell), links * (cx + 1) * (cy + 1) * (cz + 1))
+
+
+def check_buildable(case, source: str) -> None:
+    """>= 2 segments (one link), links that fit on the boxes' faces and, with the boxes' density derived, a
+    creature heavier than the links' free nodes."""
+    check_chain_segments(case, source, "a hybrid body")
+    check_link_fit(case, source)
+    cre = case.creature
+    if case.body.rigid_density_kg_m3 == DERIVED:
+        free = free_link_mass(case)
+        if not cre.mass_kg > free:
+            raise InputError(source, "creature.mass_kg", f"{cre.mass_kg} kg is not more than the free FEM nodes' "
+                                                         f"mass {free:.4g} kg; must be larger (or set "
+                                                         "body.rigid_density_kg_m3)")
+
+
+def free_link_mass(case) -> float:
+    """Lumped mass of the links' free nodes [kg]: the link mesh is built (numpy only; its size is bounded by
+    the resource check, which runs first) and each tet's mass shared by its four nodes."""
+    lay = hybrid_layout(case.body, case.creature)
+    m = build_mesh(lay, case.body.tets_per_cell)
+    share = np.repeat(case.body.density_kg_m3 * signed_volumes(m.nodes, m.tets) / 4.0, 4)
+    mass = np.bincount(m.tets.ravel(), weights=share, minlength=len(m.nodes))
+    return float(mass[~m.attached].sum())
+
+
+# check name -> run by ``validate --quick`` (validation.registry): the legged paper checks' quick body
+CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True, "analytic.slithering": False,
+          "miller.image1-worm-book": False, "miller.image2-snake-coils": False, "miller.image3-sidewinder": False,
+          "miller.image4-caterpillar-arch": False, "miller.image4-caterpillar-up": False,
+          "miller.image4-caterpillar-down": False, "paper.fig4-drop": True, "paper.fig10a-hang": True,
+          "paper.fig10d-walk": True, "paper.wave-centipede": True, "paper.wave-millipede": False,
+          "paper.control-turn": False, "paper.foraging": False, "paper.avoidance": False,
+          "throughput.sec6-headline": True}
+
+# The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
+# declaration, not repeated logic.
+BACKEND = BodySpec(
+    name="hybrid",
+    description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered "
+                "coupling; muscles as active strain of the links",
+    config_cls=HybridConfig, factory=make_hybrid, default_dt=default_dt,
+    capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
+    footprint=footprint, check_buildable=check_buildable, checks=CHECKS)

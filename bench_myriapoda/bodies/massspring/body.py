@@ -15,13 +15,17 @@ from functools import cached_property
 
 import numpy as np
 
-from ...core.protocols import MUSCLES, Actuation, Observation
+from ...core.errors import InputError
+from ...core.feasibility import lattice_footprint
+from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
+from ...core.specs import BodySpec, Footprint
 from ...world.terrain import terrain_from_scenario
-from ..friction_kernels import friction_params
+from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
+from ..segment_chain import chain_sizes, check_chain_segments, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
@@ -223,3 +227,51 @@ def make_massspring(case):
         from .myriapod import BodyRigidSpringChain
         return BodyRigidSpringChain(case)
     return BodyMassSpring(case)
+
+
+# --------------------------------------------------------------------------- the backend's declaration
+# Everything the suite asks of this body model (the catalog row ``massspring``, ``core.specs.BodySpec``): config
+# loading, feasibility and validation read this record and never name the body.
+
+def footprint(case) -> Footprint:
+    """Miller's lattice: four nodes per cross-section; a legged chain: four per link cross-section."""
+    n = int(case.creature.segments)
+    if case.creature.legs_per_segment:
+        return lattice_footprint(max(1, n - 1) * 4.0 * (int(case.body.link_cells) + 1))
+    return lattice_footprint(4.0 * (n + 1))
+
+
+def check_buildable(case, source: str) -> None:
+    """A legged chain (rigid boxes joined by spring cubes, ``massspring.myriapod``) needs >= 2 segments, links
+    that fit on the boxes' faces, and a creature heavier than the links' free nodes; the lattice builds anything."""
+    body, cre = case.body, case.creature
+    if not cre.legs_per_segment:
+        return
+    check_chain_segments(case, source, "a legged massspring chain")
+    check_link_fit(case, source)
+    lay = chain_sizes(body, cre)
+    cells = int(body.link_cells)
+    free = ((cre.segments - 1) * body.link_density_kg_m3 * lay["ll"] * lay["wl"] * lay["hl"]
+            * (cells - 1) / (cells + 1))
+    if not cre.mass_kg > free:
+        raise InputError(source, "creature.mass_kg", f"{cre.mass_kg} kg is not more than the free link nodes' "
+                                                     f"{free:.4g} kg; must be larger (or lower "
+                                                     "body.link_density_kg_m3)")
+
+
+# check name -> run by ``validate --quick`` (validation.registry): the lattice is the quick set's reference body
+CHECKS = {"analytic.worm-eps-lambda": True, "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True,
+          "analytic.stable-dt": True, "analytic.slithering": True, "miller.image1-worm-book": True,
+          "miller.image2-snake-coils": True, "miller.image3-sidewinder": True,
+          "miller.image4-caterpillar-arch": True, "miller.image4-caterpillar-up": False,
+          "miller.image4-caterpillar-down": False, "paper.fig10a-hang": False, "paper.fig10d-walk": False,
+          "paper.wave-centipede": False}
+
+# The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
+# declaration, not repeated logic.
+BACKEND = BodySpec(
+    name="massspring",
+    description="Miller 1988: cube lattice of point masses, edge and face-diagonal springs, directional friction",
+    config_cls=MassSpringConfig, factory=make_massspring, default_dt=default_dt,
+    capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
+    footprint=footprint, check_buildable=check_buildable, checks=CHECKS)

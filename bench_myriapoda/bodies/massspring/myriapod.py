@@ -56,26 +56,18 @@ from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
-from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments
+from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
 from .kernels import spring_forces
 from .lattice import build_lattice
 
-DERIVED = -1.0
-
 
 def chain_layout(cfg, creature) -> SegmentChainLayout:
-    """Sizes from ``[bodies.massspring]`` with defaults from the creature (-1 = derived)."""
+    """Sizes from ``[bodies.massspring]`` with defaults from the creature (-1 = derived, ``segment_chain.chain_sizes``)."""
     if creature.segments < 2:
         raise ValueError(f"a rigid-spring chain needs at least 2 segments; {creature.name!r} has {creature.segments}")
-    pick = lambda value, default: default if value == DERIVED else value  # noqa: E731
-    lr = pick(cfg.rigid_length_m, creature.segment_length_m)
-    wr = pick(cfg.rigid_width_m, creature.width_m)
-    hr = pick(cfg.rigid_height_m, creature.height_m)
-    ll = pick(cfg.link_length_m, 0.5 * lr)
-    wl = pick(cfg.link_width_m, wr)
-    hl = pick(cfg.link_height_m, hr)
+    lr, wr, hr, ll, wl, hl = chain_sizes(cfg, creature).values()
     if min(lr, wr, hr, ll, wl, hl) <= 0.0:
         raise ValueError("rigid and link sizes must be positive")
     if wl > wr or hl > hr:

@@ -1,0 +1,36 @@
+"""Before a case runs: can the world builders place what its scenario asks for?
+
+Random cylinders and food sources are drawn when the world is built; a scenario that leaves no room
+for them is refused before the run starts (an ``InputError`` naming the source and the key, as for
+any other bad value), instead of an ``error`` row after it started.  The body's own limits are
+``core.feasibility.check_buildable``.
+"""
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from .food import food_sources
+from .terrain import random_cylinders
+
+
+def check_placements(case, source: str) -> None:
+    """Random cylinders and food sources the world builders can place (they raise InputError otherwise)."""
+    sc = case.scenario
+    if sc.obstacle_cylinders:
+        x0, x1, z0, z1 = sc.obstacle_region_m
+        far = max(math.hypot(x, z) for x in (x0, x1) for z in (z0, z1))
+        if far - sc.obstacle_radius_m[0] < sc.obstacle_clear_radius_m:
+            raise InputError(source, "scenario.obstacle_clear_radius_m",
+                             f"{sc.obstacle_clear_radius_m} m: no room for random cylinders, the clear disc covers "
+                             f"obstacle_region_m {list(sc.obstacle_region_m)}; must be smaller")
+        _reattribute(lambda: random_cylinders(sc), source)
+    if case.food.count and sc.terrain != "mesh":  # on a mesh the terrain takes seconds to build: checked at run time
+        _reattribute(lambda: food_sources(sc, case.food), source)
+
+
+def _reattribute(fn, source: str) -> None:
+    try:
+        fn()
+    except InputError as exc:
+        raise InputError(source, exc.key, exc.message) from None
