@@ -133,7 +133,7 @@ LAYERS = (
     ("validation",),
     ("report",),
     ("api",),
-    ("cli", "__init__"),
+    ("cli", "cli_help", "__init__"),
 )
 LAYER_OF = {name: level for level, names in enumerate(LAYERS) for name in names}
 

@@ -38,11 +38,12 @@ from __future__ import annotations
 import heapq
 import json
 import math
-import sqlite3
 import statistics
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
+
+from .store import StoreReadError, read_case_costs, read_latest_regress_rates, read_matrix_case_walls
 
 # Per-step wall time [s] per unit of size (size_of: segments x FEM nodes per link) of each body model with warm
 # kernels, for a kind of case neither the store nor the throughput suite knows.  From the quick matrix on the
@@ -205,13 +206,8 @@ def observed_runs(store_paths: Iterable[Path | str]) -> list[Observed]:
         if p is None or not Path(p).is_file():
             continue
         try:
-            con = sqlite3.connect(f"file:{Path(p)}?mode=ro", uri=True)
-            try:
-                rows = con.execute("SELECT case_json, steps, wall_s, compile_s, steps_per_s, case_hash FROM runs "
-                                   "WHERE status IN (?, ?) AND steps > 0 AND wall_s > 0", OK_STATUSES).fetchall()
-            finally:
-                con.close()
-        except sqlite3.Error:  # not a store, or an older schema: no history from it
+            rows = read_case_costs(p, OK_STATUSES)
+        except StoreReadError:  # not a store, or an older schema: no history from it
             continue
         for case_json, steps, wall, comp, rate, case_hash in rows:
             if comp is None or not math.isfinite(comp) or not math.isfinite(wall):
@@ -230,13 +226,8 @@ def suite_rates(store_path: Path | str | None) -> dict[str, float]:
     if store_path is None or not Path(store_path).is_file():
         return {}
     try:
-        con = sqlite3.connect(f"file:{Path(store_path)}?mode=ro", uri=True)
-        try:
-            rows = con.execute("SELECT entry, steps_per_s FROM regress_history WHERE run_id = "
-                               "(SELECT MAX(run_id) FROM regress_history)").fetchall()
-        finally:
-            con.close()
-    except sqlite3.Error:
+        rows = read_latest_regress_rates(store_path)
+    except StoreReadError:
         return {}
     return {e: float(s) for e, s in rows if s and s > 0}
 
@@ -390,12 +381,7 @@ def write_run_summary(manifest: Path | str, summary: Mapping[str, Any]) -> None:
 def stored_case_walls(out_dir: Path | str, minus_compile: bool = False) -> dict[str, float]:
     """Case hash -> wall time [s] of the newest row of each case in a matrix output directory's store
     (``minus_compile``: without its compile time, what the case costs once its kernels are cached)."""
-    db = Path(out_dir) / "results.sqlite"
-    con = sqlite3.connect(f"file:{db}?mode=ro", uri=True)
-    try:
-        rows = con.execute("SELECT case_hash, wall_s, compile_s FROM runs WHERE command = 'matrix' ORDER BY id").fetchall()
-    finally:
-        con.close()
+    rows = read_matrix_case_walls(Path(out_dir) / "results.sqlite")
     out = {}
     for h, w, c in rows:
         if w is None or not math.isfinite(w):

@@ -397,3 +397,41 @@ def read_latest_validation(path: Path | str):
         return None
     df = _read_sql(path, "SELECT * FROM validation WHERE run_id = (SELECT MAX(run_id) FROM validation)")
     return df if len(df) else None
+
+
+def _fetch_all(path: Path | str, sql: str, params: tuple = ()) -> list[tuple]:
+    """Rows of ``sql`` on the store at ``path`` opened read-only; ``StoreReadError`` when unreadable."""
+    try:
+        con = _read_only(path)
+        try:
+            return con.execute(sql, params).fetchall()
+        finally:
+            con.close()
+    except sqlite3.Error as exc:
+        raise StoreReadError(str(exc)) from None
+
+
+def read_case_costs(path: Path | str, statuses: tuple[str, ...]) -> list[tuple]:
+    """(case_json, steps, wall_s, compile_s, steps_per_s, case_hash) of every run whose status is one of
+    ``statuses`` with at least one step and a positive wall time: what the matrix scheduler learns costs from."""
+    marks = ", ".join("?" for _ in statuses)
+    return _fetch_all(path, "SELECT case_json, steps, wall_s, compile_s, steps_per_s, case_hash FROM runs "
+                            f"WHERE status IN ({marks}) AND steps > 0 AND wall_s > 0", tuple(statuses))
+
+
+def read_latest_regress_rates(path: Path | str) -> list[tuple[str, float]]:
+    """(entry, steps_per_s) of the newest ``regress`` run in ``regress_history``."""
+    return _fetch_all(path, "SELECT entry, steps_per_s FROM regress_history WHERE run_id = "
+                            "(SELECT MAX(run_id) FROM regress_history)")
+
+
+def read_matrix_case_walls(path: Path | str) -> list[tuple]:
+    """(case_hash, wall_s, compile_s) of every row a matrix stored, in the order stored."""
+    return _fetch_all(path, "SELECT case_hash, wall_s, compile_s FROM runs WHERE command = 'matrix' ORDER BY id")
+
+
+def read_latest_stable_dt(path: Path | str, creature: str, body: str) -> tuple[str, str] | None:
+    """(metrics_json, timestamp) of the newest successful ``stable-dt`` run of ``creature`` on ``body``, or None."""
+    rows = _fetch_all(path, "SELECT metrics_json, timestamp FROM runs WHERE command = 'stable-dt' AND creature = ? "
+                            "AND body = ? AND status = 'ok' ORDER BY id DESC LIMIT 1", (creature, body))
+    return rows[0] if rows else None

@@ -25,13 +25,13 @@ from __future__ import annotations
 
 import json
 import math
-import sqlite3
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from ..harness.store import StoreReadError, read_latest_stable_dt
 from ..metrics.walk import EMERGENT_WALK_METRICS, commanded_metric
 from .sweeps import sweep_mask
 
@@ -186,13 +186,8 @@ def _stable_dt_from_store(store: Path | None, creature: str, body: str):
     if store is None or not Path(store).is_file():
         return None
     try:
-        con = sqlite3.connect(Path(store).resolve().as_uri() + "?mode=ro", uri=True)
-        try:
-            row = con.execute("SELECT metrics_json, timestamp FROM runs WHERE command = 'stable-dt' AND creature = ? "
-                              "AND body = ? AND status = 'ok' ORDER BY id DESC LIMIT 1", (creature, body)).fetchone()
-        finally:
-            con.close()
-    except sqlite3.Error:
+        row = read_latest_stable_dt(store, creature, body)
+    except StoreReadError:
         return None
     if row is None:
         return None
