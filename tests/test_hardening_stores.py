@@ -237,11 +237,12 @@ def test_sigterm_ends_a_matrix_like_ctrl_c_and_it_resumes(fresh):
 
 
 def test_workers_print_no_broken_pipe_after_the_main_process_is_killed(fresh):
-    p = _matrix_process(fresh, seeds=3, duration=1.0)
+    p = _matrix_process(fresh, seeds=3, duration=20.0)  # the second case still runs when the kill comes
     try:
         assert _wait_for(lambda: _stored(fresh) >= 1, 300), "no case stored"
         os.kill(p.pid, signal.SIGKILL)
-        # the worker finishes its case, finds the pipe closed and ends; its stderr is the same pipe
+        # the worker finishes its case, finds the pipe closed and ends; its stderr is the same pipe,
+        # so communicate() returns once it has ended
         out, err = p.communicate(timeout=120)
     finally:
         if p.poll() is None:
