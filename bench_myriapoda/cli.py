@@ -830,9 +830,10 @@ def cmd_peers(args) -> int:
         raise InputError("peers", None, f"needs the optional packages {', '.join(missing)}: "
                                         f"pip install {' '.join(missing)} (or the extra bench-myriapoda[peers])")
     repeats = R.check_repeats(args.repeats)
+    _check_path_flags(args, "--store")
     store = Path(args.store) if args.store else DEFAULT_STORE
-    if store.exists() and not store.is_file():
-        raise InputError("--store", None, f"{store} exists and is not a file")
+    from .harness.store import check_store
+    check_store(store, "--store")
     entries = P.peer_entries()
     tty = not args.json and sys.stderr.isatty()
     try:
@@ -841,14 +842,18 @@ def cmd_peers(args) -> int:
     except RuntimeError as exc:
         print(f"bench-myriapoda: peers failed: {exc}", file=sys.stderr)
         return EXIT_FAIL
-    run_id = record_regress_run(store, [r.row() for r in results])
     rows = P.ratios(entries, results)
+    run_id, unstored = _store_or_keep(store, "peers run", lambda: record_regress_run(store, [r.row() for r in results]),
+                                      lambda: {"entries": [r.row() for r in results], "ratios": rows})
     if args.json:
         print(json.dumps({"run_id": run_id, "store": str(store), "repeats": repeats, "entries": rows}))
     else:
         for line in P.format_rows(rows):
             print(line)
         print(f"one process, one sitting, CPU time of the timing thread; stored as regress run {run_id} in {store}")
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+        return EXIT_FAIL
     return EXIT_OK
 class _stdout_to_stderr:
     """Point file descriptor 1 at stderr inside the block (and restore it), Python's and C's writes alike."""

@@ -738,6 +738,7 @@ def test_every_listed_input_is_refused_with_one_line_before_anything_runs_or_is_
         stack.enter_context(contextlib.redirect_stdout(out))
         cwd = os.getcwd()
         os.chdir(d)
+        compiled = compiled_signatures()
         t0 = time.perf_counter()
         try:
             code = main(args)
@@ -753,5 +754,6 @@ def test_every_listed_input_is_refused_with_one_line_before_anything_runs_or_is_
         for w in case.words:
             assert w in text, (name, w, text)
         assert _lstat_listing(d) == before, (name, "wrote", set(_lstat_listing(d)) ^ set(before))
-        assert wall < 10.0, (name, wall)  # refused at once (a matrix counted, not expanded)
+        assert wall < 10.0, (name, wall)  # refused at once (a matrix counted, not expanded): a hang guard
+        assert compiled_signatures() == compiled  # refused before any numba kernel was compiled
     assert not Path("/" + "validation.json").exists() and not Path("/results.sqlite").exists()
