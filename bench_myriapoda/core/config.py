@@ -327,8 +327,6 @@ def _check_after_overrides(layers: dict[str, Any], gait: str) -> None:
     for g in cre.get("gaits", ()):
         if g not in registry.GAITS:
             raise InputError("--set", "creature.gaits", f"unknown gait {g!r}; choose from {', '.join(sorted(registry.GAITS))}")
-    if "default_gait" in cre:
-        _check_default_gait(cre["default_gait"], cre.get("gaits"), "--set")
     if "gaits" in cre and gait not in cre["gaits"]:
         raise InputError("--set", "creature.gaits", f"{list(cre['gaits'])!r} does not include the chosen gait {gait!r}")
     if "legs" in registry.GAITS[gait].requires and cre.get("legs_per_segment", 0) == 0:
@@ -425,13 +423,11 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     spec = registry.BODIES[body]
     cre = dict(cdata["creature"])
     cre.setdefault("name", cpath.stem)
-    if gait is None:  # --set creature.default_gait chooses the gait the run uses, as the file's would
-        given, value = _overridden(overrides, "creature.default_gait")
-        if given:
-            has_gaits, listed = _overridden(overrides, "creature.gaits")
-            _check_default_gait(value, listed if has_gaits and isinstance(listed, list) else cre.get("gaits"),
-                                "--set")
-            gait = value
+    given, value = _overridden(overrides, "creature.default_gait")
+    if given:  # checked here, before the gait is chosen: without --gait it chooses the gait, as the file's would
+        has_gaits, listed = _overridden(overrides, "creature.gaits")
+        _check_default_gait(value, listed if has_gaits and isinstance(listed, list) else cre.get("gaits"), "--set")
+        gait = gait or value
     gait = gait or cre.get("default_gait")
     if not gait:
         raise InputError("--gait", None, f"creature {cre['name']!r} has no default gait; pass --gait")

@@ -438,9 +438,9 @@ SECTIONS: dict[str, type] = {
     "metrics": MetricsConfig,
 }
 TOP_LEVEL_SCALARS = {
-    # 1e-9 s: four orders below the smallest dt any body model uses; a smaller one is a typo (1e-300 would be
-    # a case of 1e298 steps, refused by the step budget with a message about steps instead of dt)
-    "dt": ("float", dict(ge=1e-9, le=10.0, doc="time step [s]; default from the body model")),
+    # below 1e-14 s a step is under the float64 spacing of the simulated time after a minute (1.4e-14 s at
+    # t = 64 s): the clock would stop advancing, so such a dt is out of range, not a case of 1e298 steps
+    "dt": ("float", dict(ge=1e-14, le=10.0, doc="time step [s]; default from the body model")),
     "duration": ("float", dict(gt=0.0, doc="simulated time [s]; default from the scenario")),
     "seed": ("int", dict(ge=0, doc="random seed")),
 }

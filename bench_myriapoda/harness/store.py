@@ -180,18 +180,18 @@ def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[
     try:
         con = sqlite3.connect(path.resolve().as_uri() + "?mode=ro", uri=True, timeout=60)
         try:
-            problem = _schema_problem(con)
             tables = {n for (n,) in con.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+            problem = _schema_problem(con)
         finally:
             con.close()
     except sqlite3.DatabaseError as exc:
         raise InputError(flag, None, f"{path} is not a usable SQLite results store ({exc})") from None
-    if problem:
-        raise InputError(flag, None, f"{path}: {problem}; not a results store of bench-myriapoda (refused rather "
-                                     "than changed: give another --store path)")
     for table in need:
         if table not in tables:
             raise InputError(flag, None, f"{path} has no {table} table; not a results store of this schema")
+    if problem:
+        raise InputError(flag, None, f"{path}: {problem}; not a results store of bench-myriapoda (refused rather "
+                                     "than changed: give another path)")
     return path
 
 
