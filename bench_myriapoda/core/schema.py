@@ -437,10 +437,14 @@ SECTIONS: dict[str, type] = {
     "stability": StabilityConfig,
     "metrics": MetricsConfig,
 }
+MIN_DT = 1e-14  # [s]
+
 TOP_LEVEL_SCALARS = {
     # below 1e-14 s a step is under the float64 spacing of the simulated time after a minute (1.4e-14 s at
     # t = 64 s): the clock would stop advancing, so such a dt is out of range, not a case of 1e298 steps
-    "dt": ("float", dict(ge=1e-14, le=10.0, doc="time step [s]; default from the body model")),
+    "dt": ("float", dict(gt=0.0, le=10.0, check=lambda v: None if v >= MIN_DT else
+                         f"{v!r} is out of range; must be >= {MIN_DT} s (below it the simulated clock stops advancing)",
+                         doc="time step [s], at least 1e-14; default from the body model")),
     "duration": ("float", dict(gt=0.0, doc="simulated time [s]; default from the scenario")),
     "seed": ("int", dict(ge=0, doc="random seed")),
 }

@@ -23,7 +23,7 @@ def check_path_text(path: Path | str, flag: str) -> Path:
     """``path`` can name a file at all: not empty or blank, no NUL, every component at most
     ``NAME_MAX`` bytes and the whole at most ``PATH_MAX`` (nothing on disk is looked at)."""
     text = str(path)
-    if not text.strip() or text == ".":
+    if not text.strip():
         raise InputError(flag, None, "empty path; give a path or leave the flag out")
     if "\x00" in text:
         raise InputError(flag, None, "a path cannot contain a NUL character")
