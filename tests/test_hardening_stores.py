@@ -220,7 +220,7 @@ def _stored(fresh: Path) -> int:
 
 
 def test_sigterm_ends_a_matrix_like_ctrl_c_and_it_resumes(fresh):
-    p = _matrix_process(fresh, seeds=4, duration=0.5)
+    p = _matrix_process(fresh, seeds=4, duration=10.0)  # still running when SIGTERM comes
     try:
         assert _wait_for(lambda: _stored(fresh) >= 1, 300), "no case stored"
         p.send_signal(signal.SIGTERM)
