@@ -184,7 +184,7 @@ def build_parser() -> argparse.ArgumentParser:
     rg.add_argument("--repeats", type=int, metavar="N", default=7, help="timed repetitions per entry (default 7)")
     rg.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     rg.add_argument("--json", action="store_true", help="print exactly one JSON object on stdout")
-    rg.add_argument("--threshold", type=float, metavar="FRACTION", default=0.10,
+    rg.add_argument("--threshold", type=_fraction, metavar="FRACTION", default=0.10,
                     help="smallest drop of the normalized figure that counts as a regression (default 0.10; "
                          "raised to 3x the measured noise when that is larger)")
     rg.add_argument("--suite", nargs="+", action="extend", metavar="NAME", default=None,
@@ -213,6 +213,16 @@ def build_parser() -> argparse.ArgumentParser:
     va.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     va.add_argument("--no-store", action="store_true", help="do not record the rows in the results database")
     return p
+
+
+def _fraction(text: str) -> float:
+    """A number flag's value; one so small it reads as 0 (``5e-400``) is refused, not taken as 0."""
+    value = float(text)  # ValueError: argparse says "invalid _fraction value"
+    mantissa = text.strip().lower().split("e")[0]
+    if value == 0.0 and any(ch in "123456789" for ch in mantissa):
+        raise argparse.ArgumentTypeError(f"{text} is too small to tell from 0 (below 1e-308); give 0 or a "
+                                         "larger number")
+    return value
 
 
 def _case_arguments(p: argparse.ArgumentParser) -> None:
@@ -349,8 +359,8 @@ def cmd_run(args) -> int:
         raise InputError("--record", None, f"{args.record!r}: the file name must end in .npz")
     if args.plot_gait and not args.plot_gait.endswith(".png"):
         raise InputError("--plot-gait", None, f"{args.plot_gait!r}: the file name must end in .png")
-    _check_frame_outputs(args)
     _check_run_outputs(args)
+    _check_frame_outputs(args)
     case = _resolve(args)
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
@@ -361,12 +371,20 @@ def cmd_run(args) -> int:
                       total_s=case.duration, dt=case.dt)
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames)
     bar.close()
-    run_id = None if args.no_store else record_run(args.store or DEFAULT_STORE, result, command="run")
+    unstored = None  # from here on a failed write keeps the result (stored elsewhere, printed) and says so
+    run_id = None
+    if not args.no_store:
+        store = args.store or DEFAULT_STORE
+        run_id, unstored = _store_or_keep(store, "run", lambda: record_run(store, result, command="run"),
+                                          result.to_json_dict)
     if args.record and result.series is not None:
         extra = {}
         if "leg_timeline" in result.extra:
             extra = dict(zip(("leg_t", "leg_states", "leg_tips"), result.extra["leg_timeline"]))
-        save_npz(Path(args.record), result.series, case.to_dict(), extra)
+        try:
+            save_npz(Path(args.record), result.series, case.to_dict(), extra)
+        except OSError as exc:
+            unstored = unstored or f"could not write --record {args.record} ({exc.strerror or exc})"
     if args.plot_gait and "leg_timeline" in result.extra:
         from .report.gait_diagram import plot_gait_diagram
         t, states, _ = result.extra["leg_timeline"]
@@ -380,6 +398,9 @@ def cmd_run(args) -> int:
         print_result_table(result)
         if run_id is not None:  # where the result went (--json keeps stdout to the one object)
             print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id})")
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+        return EXIT_FAIL
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
         return EXIT_FAIL
@@ -491,8 +512,9 @@ def cmd_stable_dt(args) -> int:
     from .harness.stable_dt import find_stable_dt
     from .harness.store import DEFAULT_STORE, record_run
 
-    if not (math.isfinite(args.rel_tol) and 0 < args.rel_tol <= 10):
-        raise InputError("--rel-tol", None, f"{args.rel_tol} is out of range; must be a number > 0 and <= 10")
+    if not (math.isfinite(args.rel_tol) and 0 < args.rel_tol < 1):  # a relative bracket width: 1 would stop at once
+        raise InputError("--rel-tol", None, f"{args.rel_tol} is out of range; must be a number > 0 and < 1 "
+                                            "(the bracket's width relative to dt)")
     if not 2 <= args.max_runs <= 1000:
         raise InputError("--max-runs", None, f"{args.max_runs} is out of range; must be 2 to 1000")
     _check_path_flags(args, "--store")
@@ -513,16 +535,22 @@ def cmd_stable_dt(args) -> int:
     result = RunResult(case, "error" if res.error else "ok", metrics,
                        {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
                         "compile_s": float("nan"), "wall_s": float("nan")}, res.error)
+    d = result.to_json_dict()
+    d["trials"] = [{"dt": dt, "status": st, "t_fail_s": None if math.isnan(tf) else tf} for dt, st, tf in res.trials]
+    unstored = None
     if not args.no_store:
-        record_run(args.store or DEFAULT_STORE, result, command="stable-dt")
+        store = args.store or DEFAULT_STORE
+        _, unstored = _store_or_keep(store, "stable-dt result", lambda: record_run(store, result, command="stable-dt"),
+                                     lambda: d)
     if args.json:
-        d = result.to_json_dict()
-        d["trials"] = [{"dt": dt, "status": st, "t_fail_s": None if math.isnan(tf) else tf} for dt, st, tf in res.trials]
         print(json.dumps(d))
     else:
         for dt, st, tf in res.trials:
             print(f"  dt = {dt:.4g} s  {st}" + ("" if math.isnan(tf) else f" (failed at t = {tf:.3g} s)"))
         print(f"stable_dt_max_s = {_fmt(res.stable_dt_max_s)}   (smallest unstable dt: {_fmt(res.unstable_dt_min_s)})")
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+        return EXIT_FAIL
     if res.error:
         print(f"bench-myriapoda: stable-dt stopped: {res.error.splitlines()[0]}", file=sys.stderr)
         return EXIT_FAIL
@@ -551,8 +579,13 @@ def cmd_report(args) -> int:
         from .harness.store import check_store
         check_store(args.history_store, "--history-store", write=False)
     history = Path(args.history_store) if args.history_store else DEFAULT_STORE
-    summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold,
-                           workers=args.workers or os.cpu_count() or 1)
+    try:
+        summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold,
+                               workers=args.workers or os.cpu_count() or 1)
+    except OSError as exc:  # the disk filled while the figures were written: the old page stays as it was
+        print(f"bench-myriapoda: error: report: could not write into {args.dir} ({exc.strerror or exc})",
+              file=sys.stderr)
+        return EXIT_FAIL
     print(f"report written to {summary.index} and {summary.summary} ({len(summary.figures)} figures)")
     if args.baseline:
         print(f"{summary.regressions} regression(s) against {args.baseline}")
@@ -638,13 +671,20 @@ def cmd_matrix(args) -> int:
         bar.case_done(labels[result.case.case_hash()], result.status, result.message)
 
     from .harness.store import DEFAULT_STORE as history_store
+    from .harness.store import UnstoredError
     stats: dict = {}
     try:
-        ran = run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
-                         timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result,
-                         matrix=exp.name, resume=args.resume, series_dir=out / "series",
-                         retry_failed=args.retry_failed, schedule=getattr(args, "schedule", "cost"),
-                         history_stores=[history_store], stats=stats)
+        with _sigterm_as_interrupt():  # SIGTERM ends a matrix as Ctrl-C does: workers stopped, resumable
+            ran = run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
+                             timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result,
+                             matrix=exp.name, resume=args.resume, series_dir=out / "series",
+                             retry_failed=args.retry_failed, schedule=getattr(args, "schedule", "cost"),
+                             history_stores=[history_store], stats=stats)
+    except UnstoredError as exc:  # the cases stored so far stay; --resume runs the rest once the store is fixed
+        bar.close()
+        print(f"bench-myriapoda: error: matrix stopped: {exc}; the cases stored before it are kept "
+              f"(rerun with --resume)", file=sys.stderr)
+        return EXIT_FAIL
     finally:
         bar.close()
     if ran:
@@ -695,6 +735,31 @@ def cmd_matrix(args) -> int:
     return EXIT_FAIL if bad or missing else EXIT_OK
 
 
+class _sigterm_as_interrupt:
+    """Inside the block SIGTERM raises KeyboardInterrupt (as SIGINT does), so that a terminated matrix
+    stops its workers, keeps what it stored and prints "interrupted"; the old handler is restored after."""
+
+    def __enter__(self):
+        import signal
+
+        try:
+            self.saved = signal.signal(signal.SIGTERM, self._raise)
+        except ValueError:  # not the main thread: leave SIGTERM as it is
+            self.saved = None
+        return self
+
+    @staticmethod
+    def _raise(signum, frame):
+        raise KeyboardInterrupt
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.saved is not None:
+            signal.signal(signal.SIGTERM, self.saved)
+        return False
+
+
 def cmd_regress(args) -> int:
     """Time the throughput suite, store it in ``regress_history``, compare with the baseline run.
 
@@ -710,8 +775,6 @@ def cmd_regress(args) -> int:
     names = R.check_suite_names(args.suite)
     _check_path_flags(args, "--store", "--baseline")
     store = Path(args.store) if args.store else DEFAULT_STORE
-    if store.exists() and not store.is_file():
-        raise InputError("--store", None, f"{store} exists and is not a file")
     from .harness.store import check_store
     check_store(store, "--store")
     machine = json.dumps(machine_fingerprint(), sort_keys=True)
@@ -727,8 +790,9 @@ def cmd_regress(args) -> int:
     except RuntimeError as exc:  # a kernel stopped early: no figure to store
         print(f"bench-myriapoda: regress failed: {exc}", file=sys.stderr)
         return EXIT_FAIL
-    run_id = record_regress_run(store, [r.row() for r in results])
     rows = R.compare(results, base, threshold)
+    run_id, unstored = _store_or_keep(store, "regress run", lambda: record_regress_run(store, [r.row() for r in results]),
+                                      lambda: {"entries": [r.row() for r in results], "comparison": rows})
     regressed = [r["entry"] for r in rows if r["verdict"] == "regression"]
     commit, dirty = git_commit()
     if args.json:
@@ -751,7 +815,9 @@ def cmd_regress(args) -> int:
             print("no baseline yet")
         elif regressed:
             print(f"{len(regressed)} regression(s): {', '.join(regressed)}")
-    return EXIT_FAIL if regressed else EXIT_OK
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+    return EXIT_FAIL if regressed or unstored else EXIT_OK
 
 
 # --------------------------------------------------------------------------- validation of flags and outputs
@@ -763,12 +829,12 @@ MAX_WORKERS = 1024
 
 def _check_path_flags(args, *flags: str) -> None:
     """A path flag given as an empty (or blank) string is an error, not 'use the default'."""
+    from .core.userpaths import check_path_text
+
     for flag in flags:
         value = getattr(args, flag.lstrip("-").replace("-", "_"), None)
-        if value is not None and not value.strip():
-            raise InputError(flag, None, "empty path; give a path or leave the flag out")
-        if value is not None and "\x00" in value:
-            raise InputError(flag, None, "a path cannot contain a NUL character")
+        if value is not None:  # empty, NUL, a name longer than the file system allows
+            check_path_text(value, flag)
 
 
 def _check_run_outputs(args) -> None:
@@ -784,6 +850,29 @@ def _check_run_outputs(args) -> None:
     if args.export_frames:
         from .harness.store import check_writable_dir
         check_writable_dir(args.export_frames, "--export-frames")
+
+
+def _store_or_keep(store, what: str, write, doc) -> tuple[Any, str | None]:
+    """(``write()``'s run id, None), or when the store refused the insert after the run (a full disk, a
+    store changed meanwhile): (None, the line saying why and which fallback file keeps ``doc()``)."""
+    from .harness.store import UnstoredError, store_or_keep
+
+    try:
+        return store_or_keep(store, what, write, doc), None
+    except UnstoredError as exc:
+        return None, str(exc)
+
+
+def _check_validate_outputs(args, store: Path, out_dir: Path) -> None:
+    """``validate``: its store is opened and schema-checked and ``--out`` (with its validation.json) can be
+    written, before any check runs."""
+    from .harness.store import check_store, check_writable_dir, check_writable_file
+    from .validation.run import JSON_NAME
+
+    if not args.no_store:
+        check_store(store, "--store")
+    check_writable_dir(out_dir, "--out")
+    check_writable_file(out_dir / JSON_NAME, "--out")
 
 
 def _case_source(args) -> str:
@@ -852,9 +941,10 @@ def cmd_peers(args) -> int:
         raise InputError("peers", None, f"needs the optional packages {', '.join(missing)}: "
                                         f"pip install {' '.join(missing)} (or the extra bench-myriapoda[peers])")
     repeats = R.check_repeats(args.repeats)
+    _check_path_flags(args, "--store")
     store = Path(args.store) if args.store else DEFAULT_STORE
-    if store.exists() and not store.is_file():
-        raise InputError("--store", None, f"{store} exists and is not a file")
+    from .harness.store import check_store
+    check_store(store, "--store")
     entries = P.peer_entries()
     tty = not args.json and sys.stderr.isatty()
     try:
@@ -863,14 +953,18 @@ def cmd_peers(args) -> int:
     except RuntimeError as exc:
         print(f"bench-myriapoda: peers failed: {exc}", file=sys.stderr)
         return EXIT_FAIL
-    run_id = record_regress_run(store, [r.row() for r in results])
     rows = P.ratios(entries, results)
+    run_id, unstored = _store_or_keep(store, "peers run", lambda: record_regress_run(store, [r.row() for r in results]),
+                                      lambda: {"entries": [r.row() for r in results], "ratios": rows})
     if args.json:
         print(json.dumps({"run_id": run_id, "store": str(store), "repeats": repeats, "entries": rows}))
     else:
         for line in P.format_rows(rows):
             print(line)
         print(f"one process, one sitting, CPU time of the timing thread; stored as regress run {run_id} in {store}")
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+        return EXIT_FAIL
     return EXIT_OK
 class _stdout_to_stderr:
     """Point file descriptor 1 at stderr inside the block (and restore it), Python's and C's writes alike."""
@@ -901,12 +995,10 @@ def cmd_validate(args) -> int:
     from .validation.core import clean
 
     pairs, bodies = V.select(args.check, args.body, args.quick)
+    _check_path_flags(args, "--store", "--out")
     store = Path(args.store) if args.store else DEFAULT_STORE
-    if not args.no_store and store.exists() and not store.is_file():
-        raise InputError("--store", None, f"{store} exists and is not a file")
     out_dir = Path(args.out) if args.out else V.DEFAULT_OUT
-    if out_dir.exists() and not out_dir.is_dir():
-        raise InputError("--out", None, f"{out_dir} exists and is not a directory")
+    _check_validate_outputs(args, store, out_dir)
     tty = not args.json and sys.stderr.isatty()
     t0 = time.perf_counter()
     # compiled libraries (LAPACK on a blown-up run's NaNs) print to file descriptor 1 directly: while the
@@ -924,11 +1016,16 @@ def cmd_validate(args) -> int:
     counts = V.summary(rows)
     doc = clean({"quick": bool(args.quick), "bodies": list(bodies), "wall_s": wall, "counts": counts,
                  "rows": dicts, "work_precision": wp})
-    run_id = None
+    run_id = unstored = None
     if not args.no_store:
-        run_id = record_validation_run(store, dicts, args.quick, str(out_dir))
+        run_id, unstored = _store_or_keep(store, "validation run",
+                                          lambda: record_validation_run(store, dicts, args.quick, str(out_dir)),
+                                          lambda: doc)
     doc["run_id"] = run_id
-    V.write_json(out_dir, doc)
+    try:
+        V.write_json(out_dir, doc)
+    except OSError as exc:
+        unstored = unstored or f"could not write {out_dir / V.JSON_NAME} ({exc.strerror or exc})"
     failed = counts.get("FAIL", 0) > 0
     if args.json:
         print(json.dumps(doc, allow_nan=False))
@@ -939,12 +1036,16 @@ def cmd_validate(args) -> int:
               + (f"; stored as validation run {run_id} in {store}" if run_id else "") + f"; {out_dir / V.JSON_NAME}")
         if wp:
             print("work-precision diagrams: " + ", ".join(wp["figures"]))
-    return EXIT_FAIL if failed else EXIT_OK
+    if unstored:
+        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+    return EXIT_FAIL if failed or unstored else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
+        if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
+            raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
         parser = build_parser()
         args = parser.parse_args(argv or ["quick"])
         if args.command is None:

@@ -438,3 +438,322 @@ def test_generated_malformed_inputs_all_exit_2_with_one_line_and_write_nothing(c
               f"{100.0 * OUTCOMES[2] / max(1, total):.1f} % exit 2")
     assert total >= min(EXAMPLES, 1000) * 0.95  # hypothesis ran (about) the budget
     assert OUTCOMES[2] == total
+
+
+# =========================================================================== issue 28 part 4 and issue 32
+# Every input of the two issues' lists, one parametrized case each.  The same contract as the
+# generated inputs above: exit 2, exactly one line on stderr that names the flag, file or key (the
+# ``words``), no traceback, nothing written to the fresh directory the command runs in (its listing
+# with sizes and mtimes compared before and after), and no simulation (the stubs above fail the test).
+
+import sqlite3  # noqa: E402
+import stat  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+
+from bench_myriapoda.harness.store import SCHEMA, connect  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+RUN = ["run", *CASE, "--duration", "0.05"]
+LONG = "x" * 300  # one path component longer than the 255 bytes a Linux file system allows
+
+
+def _suite_store(p: Path, *extra_sql: str) -> None:
+    """A results store of this suite (every table), with ``extra_sql`` run on it afterwards."""
+    connect(p).close()
+    con = sqlite3.connect(p)
+    for sql in extra_sql:
+        con.executescript(sql)
+    con.commit()
+    con.close()
+
+
+def _plain_db(p: Path, *sql: str) -> None:
+    con = sqlite3.connect(p)
+    for s in sql:
+        con.executescript(s)
+    con.commit()
+    con.close()
+
+
+def _extra_not_null(p: Path) -> None:
+    """``runs`` with one more column, NOT NULL without a default: every insert of the suite fails."""
+    _plain_db(p, SCHEMA.replace("timestamp TEXT NOT NULL\n);", "timestamp TEXT NOT NULL,\n    owner_id INTEGER NOT NULL\n);", 1))
+
+
+def _truncated_store(p: Path) -> None:
+    _suite_store(p)
+    con = sqlite3.connect(p)
+    con.execute("INSERT INTO regress_history VALUES (1, 'e', 'c', 0, '{}', '2026-01-01T00:00:00Z', 1, 1, 1, 0, 1, 0, 1, '{}')")
+    con.commit()
+    con.close()
+    data = p.read_bytes()
+    p.write_bytes(data[: len(data) // 3 + 10])
+
+
+STORE_DEFECTS = {
+    # name: (make(path), words in the message)
+    "foreign-runs-schema": (lambda p: _plain_db(p, "CREATE TABLE runs (id INTEGER PRIMARY KEY, x TEXT)"), "runs"),
+    "extra-not-null-column": (_extra_not_null, "owner_id"),
+    "runs-is-a-view": (lambda p: _plain_db(p, "CREATE TABLE t (id INTEGER); CREATE VIEW runs AS SELECT id FROM t"),
+                       "view"),
+    "aborting-trigger": (lambda p: _suite_store(p, "CREATE TRIGGER no_insert BEFORE INSERT ON runs BEGIN "
+                                                   "SELECT RAISE(ABORT, 'refused'); END;"), "trigger"),
+    "validation-trigger": (lambda p: _suite_store(p, "CREATE TRIGGER no_v BEFORE INSERT ON validation BEGIN "
+                                                     "SELECT RAISE(ABORT, 'refused'); END;"), "trigger"),
+    "index-name-taken-by-a-table": (lambda p: _plain_db(p, "CREATE TABLE runs_case_hash (a INTEGER)"), "runs_case_hash"),
+    "unique-index-on-runs": (lambda p: _suite_store(p, "CREATE UNIQUE INDEX one_per_case ON runs(case_hash)"),
+                             "one_per_case"),
+    "only-a-users-table": (lambda p: _plain_db(p, "CREATE TABLE users (id INTEGER PRIMARY KEY, name TEXT)"), "users"),
+    "foreign-validation-table": (lambda p: _plain_db(p, "CREATE TABLE validation (id INTEGER, x TEXT)"), "validation"),
+    "nullable-figure-column": (lambda p: _plain_db(p, SCHEMA.replace("normalized REAL NOT NULL", "normalized REAL")),
+                               "normalized"),
+    "random-bytes": (lambda p: p.write_bytes(b"\x8f" + os.urandom(4095)), "not a SQLite"),
+    "truncated": (_truncated_store, "SQLite"),
+    "dangling-symlink": (lambda p: os.symlink(p.parent / "gone" / "r.sqlite", p), "symbolic link"),
+}
+STORE_COMMANDS = {
+    "run": lambda s: [*RUN, "--store", s],
+    "stable-dt": lambda s: ["stable-dt", *CASE, "--duration", "0.05", "--store", s],
+    "validate": lambda s: ["validate", "--check", "analytic", "--quick", "--store", s, "--out", "{d}/v"],
+    "regress": lambda s: ["regress", "--repeats", "3", "--store", s],
+}
+
+
+@dataclasses.dataclass
+class Bad:
+    """One listed input: ``argv`` (``{d}`` is the fresh directory), ``words`` the one line must hold,
+    ``setup(d)`` what the directory holds first."""
+
+    argv: list
+    words: tuple
+    setup: object = None
+    patches: dict = dataclasses.field(default_factory=dict)  # target -> value while the command runs
+
+
+def _store_cases() -> dict[str, Bad]:
+    cases = {}
+    for defect, (make, word) in STORE_DEFECTS.items():
+        for cmd, argv in STORE_COMMANDS.items():
+            cases[f"{cmd}-store-{defect}"] = Bad(argv("{d}/r.sqlite"), ("--store", word),
+                                                 lambda d, make=make: make(d / "r.sqlite"))
+        cases[f"matrix-out-store-{defect}"] = Bad(
+            ["matrix", "quick", "--out", "{d}/o"], ("--out", word),
+            lambda d, make=make: ((d / "o").mkdir(), make(d / "o" / "results.sqlite")))
+    for cmd, argv in STORE_COMMANDS.items():
+        cases[f"{cmd}-store-empty"] = Bad(argv(""), ("--store", "empty"))
+        cases[f"{cmd}-store-blank"] = Bad(argv(" "), ("--store", "empty"))
+        cases[f"{cmd}-store-long-name"] = Bad(argv("{d}/" + LONG + ".sqlite"), ("--store", "255"))
+        cases[f"{cmd}-store-read-only"] = Bad(argv("{d}/ro/r.sqlite"), ("--store", "not writable"), "ro")
+        cases[f"{cmd}-store-fifo"] = Bad(argv("{d}/fifo"), ("--store", "not a regular file"),
+                                         lambda d: os.mkfifo(d / "fifo"))
+    cases["report-history-store-foreign"] = Bad(["report", "{d}/m", "--history-store", "{d}/h.sqlite"],
+                                                ("--history-store", "users"),
+                                                lambda d: _plain_db(d / "h.sqlite", "CREATE TABLE users (id INTEGER)"))
+    return cases
+
+
+def _fifo(name):
+    return lambda d: os.mkfifo(d / name)
+
+
+def _matrix_file(text: str):
+    return lambda d: (d / "m.toml").write_text(text)
+
+
+def _seeds(n: int) -> str:
+    return "[" + ", ".join(str(i) for i in range(n)) + "]"
+
+
+def _history(timestamp: str) -> object:
+    def make(d):
+        _suite_store(d / "r.sqlite")
+        con = sqlite3.connect(d / "r.sqlite")
+        con.execute("INSERT INTO regress_history VALUES (1, 'e', 'c', 0, '{}', ?, 1, 1, 1, 0, 1, 0, 1, '{}')",
+                    (timestamp,))
+        con.commit()
+        con.close()
+    return make
+
+
+def _validation_out_json_dir(d):
+    (d / "v" / "validation.json").mkdir(parents=True)
+
+
+def _truncated_creature(d):
+    text = (ROOT / "models" / "snake.toml").read_text()
+    (d / "c.toml").write_text(text[: text.index("[bodies")])
+
+
+OTHER_CASES = {
+    # output paths, checked before the run
+    "run-record-long-name": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", "{d}/" + LONG + ".npz"], ("--record", "255")),
+    "run-animate-long-name": Bad([*RUN, "--store", "{d}/r.sqlite", "--animate", "{d}/" + LONG + ".gif"], ("--animate", "255")),
+    "run-plot-gait-long-name": Bad(["run", "--creature", "centipede", "--body", "massspring", "--scenario", "flat",
+                                    "--store", "{d}/r.sqlite", "--plot-gait", "{d}/" + LONG + ".png"],
+                                   ("--plot-gait", "255")),
+    "run-record-long-folder": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", "{d}/" + LONG + "/r.npz"], ("--record", "255")),
+    "run-record-only-a-suffix": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", ".npz"], ("--record", "suffix")),
+    "run-record-only-a-suffix-in-a-folder": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", "{d}/.npz"],
+                                                ("--record", "suffix")),
+    "run-animate-only-a-suffix": Bad([*RUN, "--store", "{d}/r.sqlite", "--animate", ".gif"], ("--animate", "suffix")),
+    "run-record-fifo": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", "{d}/f.npz"], ("--record", "not a regular file"),
+                           _fifo("f.npz")),
+    "run-animate-fifo": Bad([*RUN, "--store", "{d}/r.sqlite", "--animate", "{d}/f.gif"],
+                            ("--animate", "not a regular file"), _fifo("f.gif")),
+    "run-record-root": Bad([*RUN, "--store", "{d}/r.sqlite", "--record", "/"], ("--record",)),
+    "validate-out-long-name": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", "{d}/" + LONG],
+                                  ("--out", "255")),
+    "validate-out-read-only": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", "{d}/ro/v"],
+                                  ("--out", "not writable"), "ro"),
+    "validate-out-under-a-file": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", "{d}/afile/v"],
+                                     ("--out", "not a directory"), lambda d: (d / "afile").write_text("x")),
+    "validate-out-json-is-a-directory": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", "{d}/v"],
+                                            ("--out", "validation.json"), _validation_out_json_dir),
+    "validate-out-root": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", "/"],
+                             ("--out", "root")),
+    "validate-out-empty": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", ""], ("--out", "empty")),
+    "validate-out-blank": Bad(["validate", "--check", "analytic", "--quick", "--no-store", "--out", " "], ("--out", "empty")),
+    "matrix-out-root": Bad(["matrix", "quick", "--out", "/"], ("--out", "root")),
+    "matrix-out-long-name": Bad(["matrix", "quick", "--out", "{d}/" + LONG], ("--out", "255")),
+    "matrix-out-read-only": Bad(["matrix", "quick", "--out", "{d}/ro/o"], ("--out", "not writable"), "ro"),
+    "matrix-file-long-name": Bad(["matrix", "{d}/" + LONG + ".toml", "--out", "{d}/o"], ("255",)),
+    "matrix-file-empty": Bad(["matrix", "", "--out", "{d}/o"], ("matrix", "empty")),
+    # inputs only from regular files (a FIFO would block the read)
+    "creature-fifo": Bad(["run", "--creature", "{d}/c.toml", "--body", "massspring", "--scenario", "flat",
+                          "--store", "{d}/r.sqlite"], ("c.toml", "not a regular file"), _fifo("c.toml")),
+    "scenario-fifo": Bad(["run", "--creature", "worm", "--body", "massspring", "--scenario", "{d}/s.toml",
+                          "--store", "{d}/r.sqlite"], ("s.toml", "not a regular file"), _fifo("s.toml")),
+    "matrix-fifo": Bad(["matrix", "{d}/m.toml", "--out", "{d}/o"], ("m.toml", "not a regular file"), _fifo("m.toml")),
+    "creature-truncated": Bad(["run", "--creature", "{d}/c.toml", "--body", "massspring", "--scenario", "flat",
+                               "--store", "{d}/r.sqlite"], ("c.toml", "bodies"), _truncated_creature),
+    # sizes bounded before expansion or building
+    "matrix-200000-seeds": Bad(["matrix", "{d}/m.toml", "--out", "{d}/o"], ("m.toml", "cases"), _matrix_file(
+        f'[matrix]\ncreatures = ["worm"]\nbodies = ["massspring"]\nscenarios = ["flat"]\nseeds = {_seeds(200_000)}\n')),
+    "matrix-9M-grid-cases": Bad(["matrix", "{d}/m.toml", "--out", "{d}/o"], ("m.toml", "cases"), _matrix_file(
+        '[matrix]\ncreatures = ["worm"]\nbodies = ["massspring"]\nscenarios = ["flat"]\n'
+        f"seeds = {_seeds(300)}\n[matrix.grid]\n\"friction.mu_transverse\" = {[0.1 + i * 1e-4 for i in range(300)]}\n"
+        f"\"gait.frequency_hz\" = {[0.1 + i * 1e-3 for i in range(100)]}\n")),
+    "matrix-200-blocks-of-1000-duplicates": Bad(["matrix", "{d}/m.toml", "--out", "{d}/o"], ("m.toml", "cases"),
+                                                _matrix_file('[matrix]\ncreatures = ["worm"]\nbodies = ["massspring"]\n'
+                                                             'scenarios = ["flat"]\n' + "[[block]]\n[block.grid]\n"
+                                                             f"\"gait.frequency_hz\" = {[0.5] * 1000}\n" * 200)),
+    "fem-1000-segments-resolution-12": Bad(["run", "--creature", "worm", "--body", "fem", "--scenario", "flat",
+                                            "--set", "creature.segments=1000", "--set", "body.resolution=12",
+                                            "--store", "{d}/r.sqlite"], ("memory", "body.resolution"),
+                                           # a 16 GB machine with 12 GB available (this one may hold the case)
+                                           patches={"bench_myriapoda.core.feasibility.machine_memory_bytes": 16e9,
+                                                    "bench_myriapoda.core.feasibility.available_memory_bytes": 12e9,
+                                                    "bench_myriapoda.core.feasibility._cgroup_limit_bytes": 0.0}),
+    # flags
+    "regress-baseline-superscript-two": Bad(["regress", "--repeats", "3", "--store", "{d}/r.sqlite", "--baseline", "²"],
+                                            ("--baseline",), _history("2026-01-01T00:00:00Z")),
+    "regress-history-bad-timestamp": Bad(["regress", "--repeats", "3", "--store", "{d}/r.sqlite"],
+                                         ("r.sqlite", "regress_history.timestamp"),
+                                         _history("yesterday-ish")),
+    "regress-threshold-underflow": Bad(["regress", "--threshold", "5e-400", "--store", "{d}/r.sqlite"], ("--threshold",)),
+    "stable-dt-rel-tol-1": Bad(["stable-dt", *CASE, "--rel-tol", "1", "--store", "{d}/r.sqlite"], ("--rel-tol",)),
+    "stable-dt-rel-tol-2": Bad(["stable-dt", *CASE, "--rel-tol", "2", "--store", "{d}/r.sqlite"], ("--rel-tol",)),
+    "version-with-another-flag": Bad(["--version", "--bogus"], ("--bogus",)),
+    "dt-1e-300": Bad([*RUN, "--dt", "1e-300", "--store", "{d}/r.sqlite"], ("--dt", "out of range")),
+    # --set: exactly one TOML value of the key's type
+    "set-two-lines": Bad([*RUN, "--set", "dt=0.001\ndt=5", "--store", "{d}/r.sqlite"], ("--set", "dt")),
+    "set-value-and-a-table": Bad([*RUN, "--set", "friction.mu_forward=0.2\n[x]", "--store", "{d}/r.sqlite"],
+                                 ("--set", "friction.mu_forward")),
+    "set-float-for-an-int-key": Bad([*RUN, "--set", "creature.segments=3.0", "--store", "{d}/r.sqlite"],
+                                    ("--set", "creature.segments", "integer")),
+    "set-default-gait-empty-quoted": Bad([*RUN, "--set", 'creature.default_gait=""', "--store", "{d}/r.sqlite"],
+                                         ("--set", "creature.default_gait")),
+    "set-default-gait-empty": Bad([*RUN, "--set", "creature.default_gait=", "--store", "{d}/r.sqlite"],
+                                  ("--set", "creature.default_gait")),
+    "set-default-gait-not-the-worms": Bad([*RUN, "--set", 'creature.default_gait="sidewinding"', "--store", "{d}/r.sqlite"],
+                                          ("--set", "creature.default_gait", "sidewinding")),
+    "set-default-gait-unknown": Bad([*RUN, "--set", 'creature.default_gait="bogus"', "--store", "{d}/r.sqlite"],
+                                    ("--set", "creature.default_gait", "bogus")),
+    "set-gravity-1e300": Bad([*RUN, "--set", "scenario.gravity_m_s2=1e300", "--store", "{d}/r.sqlite"],
+                             ("--set", "scenario.gravity_m_s2")),
+    # buildability, checked with the other checks before a body is built
+    "mesh-subdivisions-hash-grid": Bad([*RUN, "--set", 'scenario.terrain="mesh"', "--set", "scenario.mesh_subdivisions=400",
+                                        "--store", "{d}/r.sqlite"], ("scenario.mesh_subdivisions", "cells")),
+    "body-mesh-unsupported-file-type": Bad(["run", "--creature", "worm", "--body", "fem", "--scenario", "flat",
+                                            "--set", 'body.mesh="/etc/passwd"', "--store", "{d}/r.sqlite"],
+                                           ("body.mesh", "passwd")),
+}
+
+LISTED = {**_store_cases(), **OTHER_CASES}
+
+
+def _lstat_listing(d: Path) -> dict:
+    """Every entry under ``d`` (a symbolic link itself, not its target) with its size and mtime."""
+    out = {}
+    for p in sorted(d.rglob("*")):
+        st = p.lstat()
+        out[str(p.relative_to(d))] = (st.st_size if stat.S_ISREG(st.st_mode) else -1, st.st_mtime_ns)
+    return out
+
+
+@contextlib.contextmanager
+def _read_only_dir(path: Path):
+    """``path`` as a directory that cannot be written: a read-only tmpfs as root (for whom permission bits
+    do not count), else mode 0555.  Skips when neither holds."""
+    path.mkdir()
+    if os.geteuid() == 0:
+        r = subprocess.run(["mount", "-t", "tmpfs", "-o", "ro,size=64k", "tmpfs", str(path)], capture_output=True)
+        if r.returncode != 0:
+            path.rmdir()
+            pytest.skip("cannot mount a read-only tmpfs as root here")
+        try:
+            yield path
+        finally:
+            subprocess.run(["umount", str(path)], check=False)
+    else:
+        path.chmod(0o555)
+        try:
+            yield path
+        finally:
+            path.chmod(0o755)
+
+
+@pytest.mark.parametrize("name", sorted(LISTED))
+def test_every_listed_input_is_refused_with_one_line_before_anything_runs_or_is_written(name, tmp_path):
+    case = LISTED[name]
+    d = tmp_path / "work"
+    d.mkdir()
+    with contextlib.ExitStack() as stack:
+        if case.setup == "ro":
+            stack.enter_context(_read_only_dir(d / "ro"))
+        elif case.setup is not None:
+            case.setup(d)
+        args = [a.replace("{d}", str(d)) for a in case.argv]
+        before = _lstat_listing(d)
+        err, out = io.StringIO(), io.StringIO()
+        for target in ("bench_myriapoda.harness.runner.run_case", "bench_myriapoda.harness.executors.run_matrix",
+                       "bench_myriapoda.harness.stable_dt.find_stable_dt", "bench_myriapoda.harness.regress.run_suite",
+                       "bench_myriapoda.validation.run.run_checks"):
+            stack.enter_context(mock.patch(target, _refuse))
+        for target, value in case.patches.items():
+            stack.enter_context(mock.patch(target, lambda v=value: v))
+        stack.enter_context(contextlib.redirect_stderr(err))
+        stack.enter_context(contextlib.redirect_stdout(out))
+        cwd = os.getcwd()
+        os.chdir(d)
+        compiled = compiled_signatures()
+        t0 = time.perf_counter()
+        try:
+            code = main(args)
+        except SystemExit as exc:
+            code = exc.code
+        finally:
+            os.chdir(cwd)
+        wall = time.perf_counter() - t0
+        text = err.getvalue()
+        assert code == 2, (name, code, text[-2000:], out.getvalue()[-500:])
+        assert text.count("\n") == 1 and text.startswith("bench-myriapoda: error: "), (name, text)
+        assert "Traceback" not in text
+        for w in case.words:
+            assert w in text, (name, w, text)
+        assert _lstat_listing(d) == before, (name, "wrote", set(_lstat_listing(d)) ^ set(before))
+        assert wall < 10.0, (name, wall)  # refused at once (a matrix counted, not expanded): a hang guard
+        assert compiled_signatures() == compiled  # refused before any numba kernel was compiled
+    assert not Path("/" + "validation.json").exists() and not Path("/results.sqlite").exists()

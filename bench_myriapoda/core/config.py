@@ -27,6 +27,7 @@ from . import registry
 from .errors import InputError
 from .paths import models_dir, scenarios_dir
 from .suggest import did_you_mean
+from .userpaths import check_input_file
 from .schema import (SECTIONS, TOP_LEVEL_SCALARS, AntennaeConfig, CollisionConfig, ControllerConfig, CreatureConfig,
                      FoodConfig, FrictionConfig, GaitConfig, LegsConfig, MetricsConfig, RecordConfig, ScenarioConfig,
                      StabilityConfig, check_range, check_section, coerce_value)
@@ -114,10 +115,8 @@ def read_toml(path: Path) -> dict[str, Any]:
     ``MAX_TOML_BYTES``, is UTF-8, parses, and nests tables and arrays at most ``MAX_TOML_DEPTH`` deep.
     """
     src = str(path)
+    p = check_input_file(path, src)  # a regular file: a FIFO would block the read
     try:
-        p = Path(path)
-        if p.is_dir():
-            raise InputError(src, None, "is a directory; expected a .toml file")
         with open(p, "rb") as fh:
             raw = fh.read(MAX_TOML_BYTES + 1)
     except FileNotFoundError:
@@ -227,7 +226,9 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
                                                     f"choose one of {', '.join(sorted(registry.BODIES))}")
         check_section(registry.BODIES[body].config_cls, table, src, f"bodies.{body}")
     c = data["creature"]
-    for gait in list(c.get("gaits", ())) + ([c["default_gait"]] if "default_gait" in c else []):
+    if "default_gait" in c:
+        _check_default_gait(c["default_gait"], c.get("gaits"), src)
+    for gait in c.get("gaits", ()):
         if gait not in registry.GAITS:
             raise InputError(src, "creature.gaits", f"unknown gait {gait!r}{did_you_mean(gait, registry.GAITS)}; "
                                                     f"choose from {', '.join(sorted(registry.GAITS))}")
@@ -271,11 +272,18 @@ def parse_set(item: str) -> tuple[str, Any]:
         raise InputError("--set", item, "expected KEY=VALUE, e.g. --set friction.mu_transverse=0.2")
     key, raw = item.split("=", 1)
     key = key.strip()
+    # exactly one value on one line: "v = {raw}" parsed as a document would take a newline and more
+    # keys or tables after the value ("dt=0.001\ndt=5") and silently drop them
+    if any(ord(ch) < 32 and ch != "\t" or ord(ch) == 127 for ch in raw):
+        raise InputError("--set", key or item, "the value must be one line: one TOML value (a number, "
+                                               "true/false, a quoted string or a list), or a bare word")
     try:
-        value = tomllib.loads(f"v = {raw}")["v"]
+        doc = tomllib.loads(f"v = {raw}")
     except tomllib.TOMLDecodeError:
-        value = raw.strip()
-    return key, value
+        return key, raw.strip()  # a bare word: --set friction.model=coulomb
+    if set(doc) != {"v"}:
+        raise InputError("--set", key, f"{raw.strip()!r} is not one TOML value")
+    return key, doc["v"]
 
 
 def _section_cls(section: str, body_name: str, gait_name: str | None = None):
@@ -319,8 +327,7 @@ def _check_after_overrides(layers: dict[str, Any], gait: str) -> None:
     """Cross-key checks that ``--set`` could break after the files passed them: the creature's gait
     names, the chosen gait still among them and still possible, and the control schedule's lengths."""
     cre = layers["creature"]
-    names = list(cre.get("gaits", ())) + ([cre["default_gait"]] if cre.get("default_gait") else [])
-    for g in names:
+    for g in cre.get("gaits", ()):
         if g not in registry.GAITS:
             raise InputError("--set", "creature.gaits", f"unknown gait {g!r}; choose from {', '.join(sorted(registry.GAITS))}")
     if "gaits" in cre and gait not in cre["gaits"]:
@@ -330,6 +337,28 @@ def _check_after_overrides(layers: dict[str, Any], gait: str) -> None:
     lens = _control_lengths(layers["scenario"])
     if len(set(lens.values())) > 1:
         raise InputError("--set", "scenario.control_*", f"the control schedule lists differ in length: {lens}")
+
+
+def _check_default_gait(value: Any, gaits: Any, source: str) -> None:
+    """``creature.default_gait``: a known gait, among the creature's ``gaits`` when it lists them."""
+    if not isinstance(value, str) or not value:
+        raise InputError(source, "creature.default_gait", f"{value!r}: expected a gait name; choose one of "
+                                                          f"{', '.join(gaits or sorted(registry.GAITS))}")
+    if value not in registry.GAITS:
+        raise InputError(source, "creature.default_gait", f"unknown gait {value!r}{did_you_mean(value, registry.GAITS)}; "
+                                                          f"choose one of {', '.join(gaits or sorted(registry.GAITS))}")
+    if gaits is not None and value not in gaits:
+        raise InputError(source, "creature.default_gait", f"{value!r} is not among the creature's gaits "
+                                                          f"({', '.join(gaits)}); choose one of them")
+
+
+def _overridden(overrides: Iterable[str], key: str) -> tuple[bool, Any]:
+    """(True, value) when ``--set key=...`` is among ``overrides`` (the last one wins), else (False, None)."""
+    found, value = False, None
+    for item in overrides:
+        if "=" in item and item.split("=", 1)[0].strip() == key:
+            found, value = True, parse_set(item)[1]
+    return found, value
 
 
 def _control_lengths(sc: Mapping[str, Any]) -> dict[str, int]:
@@ -397,6 +426,11 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     spec = registry.BODIES[body]
     cre = dict(cdata["creature"])
     cre.setdefault("name", cpath.stem)
+    given, value = _overridden(overrides, "creature.default_gait")
+    if given:  # checked here, before the gait is chosen: without --gait it chooses the gait, as the file's would
+        has_gaits, listed = _overridden(overrides, "creature.gaits")
+        _check_default_gait(value, listed if has_gaits and isinstance(listed, list) else cre.get("gaits"), "--set")
+        gait = gait or value
     gait = gait or cre.get("default_gait")
     if not gait:
         raise InputError("--gait", None, f"creature {cre['name']!r} has no default gait; pass --gait")
@@ -404,6 +438,9 @@ def resolve_case(creature: str, body: str, scenario: str, gait: str | None = Non
     if gait not in supported_gaits:
         raise InputError("--gait", None, f"unsupported combination: creature {cre['name']!r} does not support gait "
                                          f"{gait!r}; supported: {', '.join(supported_gaits)}")
+    if not cdata.get("bodies"):  # (a truncated or unfinished file): name the file and the missing table
+        raise InputError(str(cpath), f"bodies.{body}", f"missing table [bodies.{body}]: a creature file needs a "
+                                                       "[bodies.BODY] table for each body model it runs on")
     if body not in cdata.get("bodies", {}) and spec.default_params is None:
         raise InputError("--body", None, f"unsupported combination: creature {cre['name']!r} has no {body!r} body "
                                          f"model; available: {', '.join(sorted(cdata.get('bodies', {}))) or 'none'}")

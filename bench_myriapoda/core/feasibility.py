@@ -52,10 +52,43 @@ def machine_memory_bytes() -> float:
         return 0.0
 
 
+def _cgroup_limit_bytes() -> float:
+    """The memory limit of this process's cgroup (a container's) [bytes]; 0 when there is none."""
+    for path in ("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"):
+        try:
+            with open(path) as fh:
+                text = fh.read().strip()
+        except OSError:
+            continue
+        if text.isdigit() and int(text) < 2 ** 60:  # "max" or a huge number: no limit
+            return float(text)
+    return 0.0
+
+
+def available_memory_bytes() -> float:
+    """Memory a new allocation can get now [bytes]: MemAvailable of /proc/meminfo (0 when unknown)."""
+    try:
+        with open("/proc/meminfo") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return float(line.split()[1]) * 1024.0
+    except (OSError, ValueError, IndexError):
+        pass
+    return 0.0
+
+
 def default_memory_budget() -> float:
-    """Half of the machine's memory [bytes] (8 GB when it cannot be read)."""
+    """Half of the memory this process may have [bytes] -- the machine's, or its container's limit when
+    smaller -- and at most what is available now (on a shared machine the memory other processes hold
+    is not the case's: a case beyond it is killed by the operating system instead of refused here).
+    8 GB when none of it can be read."""
     total = machine_memory_bytes()
-    return 0.5 * total if total > 0 else 8.0e9
+    limit = _cgroup_limit_bytes()
+    if limit > 0:
+        total = min(total, limit) if total > 0 else limit
+    budget = 0.5 * total if total > 0 else 8.0e9
+    avail = available_memory_bytes()
+    return min(budget, avail) if avail > 0 else budget
 
 
 @dataclass

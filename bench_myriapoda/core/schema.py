@@ -309,7 +309,9 @@ class ScenarioConfig:
     start_height_m: float = rng(0.0, ge=0.0, doc="clearance of the body's underside above the surface at t=0 [m]")
     start_x_m: float = rng(0.0, doc="x of the head at t=0 (creatures face +x) [m]")
     perturbation_m: float = rng(0.0, ge=0.0, doc="random displacement (std) of every node at t=0, seeded by seed [m]")
-    gravity_m_s2: float = rng(9.81, ge=0.0, doc="gravitational acceleration, pointing down (-y) [m/s^2]")
+    gravity_m_s2: float = rng(9.81, ge=0.0, le=300.0,  # the Sun's surface: 274; Jupiter's 24.8
+                             doc="gravitational acceleration, pointing down (-y) [m/s^2]; 0 to 300 (the Sun's "
+                                 "surface has 274)")
     passive: bool = rng(False, doc="muscles off (for energy checks)")
     suspended: bool = rng(False, doc="the head is held fixed and the body hangs straight down from it (paper Fig. 10)")
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
@@ -438,8 +440,14 @@ SECTIONS: dict[str, type] = {
     "stability": StabilityConfig,
     "metrics": MetricsConfig,
 }
+MIN_DT = 1e-14  # [s]
+
 TOP_LEVEL_SCALARS = {
-    "dt": ("float", dict(gt=0.0, doc="time step [s]; default from the body model")),
+    # below 1e-14 s a step is under the float64 spacing of the simulated time after a minute (1.4e-14 s at
+    # t = 64 s): the clock would stop advancing, so such a dt is out of range, not a case of 1e298 steps
+    "dt": ("float", dict(gt=0.0, le=10.0, check=lambda v: None if v >= MIN_DT else
+                         f"{v!r} is out of range; must be >= {MIN_DT} s (below it the simulated clock stops advancing)",
+                         doc="time step [s], at least 1e-14; default from the body model")),
     "duration": ("float", dict(gt=0.0, doc="simulated time [s]; default from the scenario")),
     "seed": ("int", dict(ge=0, doc="random seed")),
 }
@@ -467,7 +475,7 @@ def field_types(cls) -> dict[str, Any]:
 
 
 def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
-    """Check ``value`` against type ``tp``; ints are accepted for floats, lists for tuples."""
+    """Check ``value`` against type ``tp``; ints are accepted for floats (not floats for ints), lists for tuples."""
     if tp is float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
@@ -479,11 +487,8 @@ def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
             raise InputError(source, key, f"expected a finite number, got {value!r}")
         return value
     if tp is int:
-        if isinstance(value, bool) or not isinstance(value, int):
-            if isinstance(value, float) and value.is_integer():
-                value = int(value)
-            else:
-                raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
+        if isinstance(value, bool) or not isinstance(value, int):  # 3.0 too: TOML tells 3 from 3.0
+            raise InputError(source, key, f"expected {_type_name(tp)}, got {_short(value)}")
         if not -MAX_INT <= value <= MAX_INT:
             raise InputError(source, key, f"{value} is out of range; must be within +-{MAX_INT}")
         return value

@@ -55,7 +55,8 @@ from typing import Callable, Sequence
 from ..core.config import Case
 from .recorder import compact_recording, save_recording
 from .runner import RunResult, run_case
-from .store import matrix_case_statuses, read_matrix_runs, record_run
+from .store import (STORE_WRITE_ERRORS, UnstoredError, keep_unstored, matrix_case_statuses, read_matrix_runs,
+                    record_run)
 
 EXECUTORS = ("local", "dask")
 STARTUP_GRACE_S = 120.0  # a fresh worker's imports before its first case do not count against the timeout
@@ -170,15 +171,18 @@ def _worker_main(conn) -> None:
         if msg is None:
             return
         index, case, compile_only = msg
-        conn.send(("started", index))
-        if compile_only:
-            try:
-                compile_case(case)
-            except Exception:  # noqa: BLE001 -- the case's own run reports the error
-                pass
-            conn.send(("compiled", index))
-        else:
-            conn.send(("done", slim_result(run_case(case, progress=_WarmSignal(conn, index)))))
+        try:
+            conn.send(("started", index))
+            if compile_only:
+                try:
+                    compile_case(case)
+                except Exception:  # noqa: BLE001 -- the case's own run reports the error
+                    pass
+                conn.send(("compiled", index))
+            else:
+                conn.send(("done", slim_result(run_case(case, progress=_WarmSignal(conn, index)))))
+        except (BrokenPipeError, ConnectionResetError, EOFError):  # the parent is gone (killed): end quietly
+            return
 
 
 class _WarmSignal:
@@ -702,9 +706,16 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
     def emit(result: RunResult) -> None:
         e0 = time.perf_counter()
         recording = result.extra.pop("recording", None)
-        if series_dir is not None and recording is not None:
-            save_recording(Path(series_dir) / f"{result.case.case_hash()}.npz", recording)
-        record_run(store_path, result, command="matrix", matrix=matrix)
+        series = None if series_dir is None else Path(series_dir) / f"{result.case.case_hash()}.npz"
+        try:
+            if series is not None and recording is not None:
+                save_recording(series, recording)
+            record_run(store_path, result, command="matrix", matrix=matrix)
+        except STORE_WRITE_ERRORS as exc:  # keep the result, leave no recording without its row, stop the matrix
+            if series is not None and recording is not None:
+                series.unlink(missing_ok=True)
+            raise UnstoredError(store_path, f"matrix case {result.case.case_hash()}", exc,
+                                keep_unstored(store_path, "matrix case", result.to_json_dict(), exc)) from exc
         emit_s[0] += time.perf_counter() - e0
         results.append(result)
         if on_result is not None:

@@ -42,6 +42,7 @@ import dataclasses
 import itertools
 import json
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -52,6 +53,7 @@ from ..core.config import Case, creature_names, read_tables, resolve_case, scena
 from ..core.errors import InputError
 from ..core.paths import scenarios_dir
 from ..core.suggest import did_you_mean
+from ..core.userpaths import check_path_text
 
 AXIS_KEYS = {"creatures": "creature", "bodies": "body", "gaits": "gait", "scenarios": "scenario", "seeds": "seed"}
 BLOCK_KEYS = set(AXIS_KEYS) | {"grid", "set", "duration"}
@@ -115,8 +117,10 @@ def matrix_paths() -> dict[str, Path]:
 
 def locate_matrix(name_or_path: str) -> Path:
     """A matrix file from a path or a name in ``scenarios/matrix/``."""
-    p = Path(name_or_path)
-    if p.suffix == ".toml" or p.exists():
+    if not name_or_path.strip():
+        raise InputError("matrix", None, "empty matrix name; give a .toml path or a name in scenarios/matrix/")
+    p = check_path_text(name_or_path, "matrix")
+    if p.suffix == ".toml" or os.path.lexists(p):
         return p
     known = matrix_paths()
     if name_or_path not in known:
@@ -138,6 +142,9 @@ def _check_list(src: str, key: str, value: Any, item_type: type | tuple) -> list
 
 SCALARS = (bool, int, float, str)
 MAX_GRID_POINTS = 100_000
+# Cases of a whole matrix, counted from its blocks before any is resolved (resolution takes ~1 ms a case,
+# a run seconds): 200,000 seeds or 200 blocks of 1,000 duplicate points are refused at once, not expanded.
+MAX_MATRIX_CASES = 20_000
 SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 
 
@@ -232,6 +239,7 @@ def load_matrix(path: Path | str) -> dict[str, Any]:
         blk.setdefault("gaits", [DEFAULT_GAIT])
         blk["_prefix"] = prefix
         blocks.append(blk)
+    _check_case_count(src, blocks)
     excludes = data.get("exclude", [])
     if not isinstance(excludes, list) or not all(isinstance(e, dict) and e for e in excludes):
         raise InputError(src, "exclude", "expected an array of non-empty tables [[exclude]]")
@@ -244,6 +252,18 @@ def load_matrix(path: Path | str) -> dict[str, Any]:
     name = base.get("name", path.stem)
     _check_name(src, "matrix.name" if "name" in base else "matrix (file name)", name)
     return {"name": name, "description": base.get("description", ""), "blocks": blocks, "exclude": excludes}
+
+
+def _check_case_count(src: str, blocks: list[dict]) -> None:
+    """The matrix's grid points (before exclusions and duplicates) are at most ``MAX_MATRIX_CASES``."""
+    total = 0
+    for blk in blocks:
+        n = math.prod(len(blk.get(k, [None])) for k in ("creatures", "bodies", "gaits", "scenarios", "seeds"))
+        total += n * math.prod(len(v) for v in blk.get("grid", {}).values())
+    if total > MAX_MATRIX_CASES:
+        raise InputError(src, "matrix", f"{total:,} cases (every block's product of creatures, bodies, gaits, "
+                                        f"scenarios, seeds and grid values, before exclusions and duplicates); "
+                                        f"at most {MAX_MATRIX_CASES:,}: split the matrix into several files")
 
 
 def _check_exclude_value(src: str, key: str, axis: str, want: Any, blocks: list[dict]) -> None:

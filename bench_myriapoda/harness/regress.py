@@ -164,8 +164,28 @@ def load_history(path: Path | str) -> pd.DataFrame:  # noqa: F821
     df["commit_short"] = [(c[:7] if isinstance(c, str) else "?") + ("+" if d == 1 else "")
                           for c, d in zip(df["git_commit"], df["git_dirty"])]
     df["label"] = [f"run {r} {c}" for r, c in zip(df["run_id"], df["commit_short"])]
-    df["time"] = pd.to_datetime(df["timestamp"], utc=True) if len(df) else pd.Series(dtype="datetime64[ns, UTC]")
+    _check_history_rows(df, path)
+    df["time"] = pd.to_datetime(df["timestamp"], utc=True, format="ISO8601") if len(df) else \
+        pd.Series(dtype="datetime64[ns, UTC]")
     return df
+
+
+def _check_history_rows(df, path: Path) -> None:
+    """Every stored row has a timestamp this suite writes (ISO 8601) and its figures; a store edited by
+    hand or by another program is an InputError naming the store, run and column, not a traceback."""
+    import pandas as pd
+
+    for col in ("run_id", "timestamp", "steps_per_s", "reference_ops_per_s", "normalized"):
+        bad = df[df[col].isna()]
+        if len(bad):
+            raise InputError(str(path), f"regress_history.{col}", f"run {bad.iloc[0].run_id} entry "
+                                                                  f"{bad.iloc[0].entry!r} has no value (NULL)")
+    stamps = pd.to_datetime(df["timestamp"], utc=True, format="ISO8601", errors="coerce")
+    if stamps.isna().any():
+        row = df[stamps.isna()].iloc[0]
+        raise InputError(str(path), "regress_history.timestamp", f"run {row.run_id} entry {row.entry!r}: "
+                                                                 f"{str(row.timestamp)[:40]!r} is not a timestamp "
+                                                                 "(YYYY-MM-DDTHH:MM:SSZ)")
 
 
 regress_history = load_history  # the name the CLI docs use
@@ -220,7 +240,7 @@ def resolve_baseline(store: Path | str, spec: str | None, machine_json: str, nam
     spec = spec.strip()
     if hist.empty:
         raise InputError("--baseline", None, f"{spec!r}: the store {store} has no regress run yet")
-    if spec.isdigit() and int(spec) in {int(r) for r in hist.run_id}:
+    if re.fullmatch(r"[0-9]+", spec) and int(spec) in {int(r) for r in hist.run_id}:  # ASCII digits ('²'.isdigit())
         return _baseline_of(hist, int(spec))
     commits = hist.git_commit.fillna("")
     match = hist.iloc[0:0]

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..core.errors import InputError
+from ..core.userpaths import check_path_text, is_only_a_suffix, is_root
 from .machine import git_commit, machine_fingerprint
 
 DEFAULT_STORE = Path("reports") / "results.sqlite"
@@ -108,31 +109,52 @@ def connect(path: Path | str = DEFAULT_STORE) -> sqlite3.Connection:
     return con
 
 
-# The columns a store's tables must have (a store from an older release gains LATER_COLUMNS on open).
-REQUIRED_COLUMNS = {
-    "runs": {"id", "case_hash", "creature", "body", "gait", "scenario", "status", "message", "case_json",
-             "metrics_json", "timings_json", "steps", "steps_per_s", "realtime_factor", "compile_s", "wall_s",
-             "git_commit", "git_dirty", "machine_json", "timestamp"},
-    "metrics": {"run_id", "name", "value"},
-    "regress_history": {"run_id", "entry", "machine_json", "timestamp", "steps_per_rep", "repeats", "steps_per_s",
-                        "spread", "reference_ops_per_s", "reference_spread", "normalized"},
-}
 SQLITE_MAGIC = b"SQLite format 3\x00"
+# Objects SQLite makes by itself: the AUTOINCREMENT counter, ANALYZE's statistics, PRIMARY KEY indexes.
+SQLITE_INTERNAL = ("sqlite_sequence", "sqlite_stat1", "sqlite_stat2", "sqlite_stat3", "sqlite_stat4")
+# Below this much free space on its file system a store is refused before a run: the run's row and the
+# journal need a few hundred kB, and a run that cannot be stored after it was computed is a lost run.
+MIN_FREE_BYTES = 1 << 20
+
+
+def _expected_schema() -> dict[str, Any]:
+    """This suite's tables (column -> (declared type, NOT NULL, default, primary-key position)) and indexes
+    (name -> table), read from ``SCHEMA`` built in memory (with the columns later releases added)."""
+    con = sqlite3.connect(":memory:")
+    try:
+        con.executescript(SCHEMA)
+        _add_missing_columns(con)
+        tables = {t: {r[1]: (r[2].upper(), r[3], r[4], r[5]) for r in con.execute(f"PRAGMA table_info({t})")}
+                  for (t,) in con.execute("SELECT name FROM sqlite_master WHERE type = 'table'")
+                  if t not in SQLITE_INTERNAL}
+        indexes = {n: t for n, t in con.execute("SELECT name, tbl_name FROM sqlite_master WHERE type = 'index' "
+                                                "AND sql IS NOT NULL")}
+    finally:
+        con.close()
+    return {"tables": tables, "indexes": indexes}
 
 
 def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[str, ...] = ()) -> Path:
     """Check a results store before anything runs; an ``InputError`` naming ``flag`` if it is unusable.
 
-    The path must be a SQLite database whose tables (those present) have this schema's columns, or
-    not exist yet; with ``write`` it (or, if it does not exist, its nearest existing folder) must be
-    writable.  ``need`` names tables that must exist (a report reading ``runs``).  Nothing is
-    created or changed here: the store is opened read-only.
+    The path must not exist yet, or be an empty file, or a SQLite database that is this suite's store:
+    only its tables (``runs``, ``metrics``, ``regress_history``, ``validation``), each with exactly its
+    columns, types and NOT NULL constraints (an older store may lack the columns ``connect`` adds), its
+    indexes and no other object -- no view, no trigger, no unique index, no other program's table that
+    the suite's inserts could fail on or that the suite would extend.  With ``write`` the file and its
+    folder (SQLite's journal goes beside it) must be writable and the file system not full.  ``need``
+    names tables that must exist (a report reading ``runs``).  Nothing is created or changed here: the
+    store is opened read-only.
     """
-    path = Path(path)
-    if str(path) in ("", "."):
-        raise InputError(flag, None, "empty path; give the path of a SQLite results file")
-    if path.exists() and not path.is_file():
+    path = check_path_text(path, flag)
+    if os.path.islink(path) and not path.exists():
+        raise InputError(flag, None, f"{path} is a dangling symbolic link (to {os.readlink(path)}); "
+                                     "give the path of a SQLite results file")
+    if path.is_dir():
         raise InputError(flag, None, f"{path} exists and is not a file; give the path of a SQLite results file")
+    if path.exists() and not path.is_file():
+        raise InputError(flag, None, f"{path} is not a regular file (a FIFO, socket or device); give the path of "
+                                     "a SQLite results file")
     if not path.exists():
         if need:
             raise InputError(flag, None, f"{path}: no such results store")
@@ -141,29 +163,25 @@ def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[
         return path
     try:
         with open(path, "rb") as fh:
-            head = fh.read(len(SQLITE_MAGIC))
+            header = fh.read(100)
     except OSError as exc:
         raise InputError(flag, None, f"{path}: cannot read ({exc.strerror})") from None
-    if head and head != SQLITE_MAGIC:
+    if header and header[: len(SQLITE_MAGIC)] != SQLITE_MAGIC:
         raise InputError(flag, None, f"{path} is not a SQLite database (a results store written by bench-myriapoda)")
-    if write and (not os.access(path, os.W_OK) or _read_only_mount(path)):
-        raise InputError(flag, None, f"{path} is not writable")
-    if not head:  # an empty file: SQLite makes it a database on first write
+    if write:
+        if not os.access(path, os.W_OK) or _read_only_mount(path):
+            raise InputError(flag, None, f"{path} is not writable")
+        check_writable_dir(path.parent, flag, what=f"the folder of {path} (SQLite writes its journal there)")
+    if not header:  # an empty file: SQLite makes it a database on first write
         if need:
             raise InputError(flag, None, f"{path} is an empty file, not a results store")
         return path
+    _check_not_truncated(path, header, flag)
     try:
         con = sqlite3.connect(path.resolve().as_uri() + "?mode=ro", uri=True, timeout=60)
         try:
             tables = {n for (n,) in con.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
-            for table, cols in REQUIRED_COLUMNS.items():
-                if table not in tables:
-                    continue
-                have = {row[1] for row in con.execute(f"PRAGMA table_info({table})")}
-                missing = sorted(cols - have)
-                if missing:
-                    raise InputError(flag, None, f"{path}: table {table} lacks columns {', '.join(missing)}; "
-                                                 "not a results store of this schema")
+            problem = _schema_problem(con)
         finally:
             con.close()
     except sqlite3.DatabaseError as exc:
@@ -171,20 +189,80 @@ def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[
     for table in need:
         if table not in tables:
             raise InputError(flag, None, f"{path} has no {table} table; not a results store of this schema")
+    if problem:
+        raise InputError(flag, None, f"{path}: {problem}; not a results store of bench-myriapoda (refused rather "
+                                     "than changed: give another path)")
     return path
 
 
+def _check_not_truncated(path: Path, header: bytes, flag: str) -> None:
+    """The file is as long as its header says (page size x page count): a cut copy is refused, not read."""
+    if len(header) < 100:
+        raise InputError(flag, None, f"{path} is a truncated SQLite file ({len(header)} bytes)")
+    page = int.from_bytes(header[16:18], "big")
+    page = 65536 if page == 1 else page
+    pages = int.from_bytes(header[28:32], "big")
+    valid = header[24:28] == header[92:96]  # the page count is valid when the change counters agree
+    size = path.stat().st_size
+    if valid and pages and size < page * pages:
+        raise InputError(flag, None, f"{path} is a truncated SQLite file ({size:,} bytes; its header says "
+                                     f"{page * pages:,})")
+
+
+def _schema_problem(con: sqlite3.Connection) -> str | None:
+    """What in an existing database is not this suite's schema (None: nothing)."""
+    want = _expected_schema()
+    objects = con.execute("SELECT type, name, tbl_name, sql FROM sqlite_master").fetchall()
+    # views and triggers first: either can make an insert fail (or do something else) behind the suite's back
+    objects.sort(key=lambda o: o[0] not in ("view", "trigger"))
+    for kind, name, table, sql in objects:
+        if name in SQLITE_INTERNAL or (kind == "index" and sql is None):
+            continue  # SQLite's own: the AUTOINCREMENT counter, statistics, PRIMARY KEY indexes
+        if kind == "table" and name in want["tables"]:
+            continue
+        if kind == "index" and want["indexes"].get(name) == table:
+            continue
+        if kind in ("view", "trigger"):
+            return f"has a {kind} {name!r}" + (f" on table {table}" if kind == "trigger" else "") + \
+                f" (the suite's store has no {kind}s)"
+        if kind == "index":
+            return f"has an index {name!r} on table {table} that is not the suite's"
+        return f"has a {kind} {name!r} that is not one of the suite's tables ({', '.join(sorted(want['tables']))})"
+    for table, cols in want["tables"].items():
+        have = {r[1]: (r[2].upper(), r[3], r[4], r[5]) for r in con.execute(f"PRAGMA table_info({table})")}
+        if not have:
+            continue  # a table a later run adds
+        missing = sorted(set(cols) - set(have) - ({n for n, _ in LATER_COLUMNS} if table == "runs" else set()))
+        if missing:
+            return f"table {table} lacks columns {', '.join(missing)}"
+        extra = sorted(set(have) - set(cols))
+        if extra:
+            return f"table {table} has columns the suite's lacks: {', '.join(extra)}"
+        for col, spec in have.items():
+            if spec[:2] != cols[col][:2] or bool(spec[3]) != bool(cols[col][3]):
+                return (f"column {table}.{col} is {spec[0] or 'untyped'}{' NOT NULL' if spec[1] else ''}"
+                        f"{' PRIMARY KEY' if spec[3] else ''}; the suite's is {cols[col][0]}"
+                        f"{' NOT NULL' if cols[col][1] else ''}{' PRIMARY KEY' if cols[col][3] else ''}")
+    return None
+
+
 def check_writable_file(path: Path | str, flag: str) -> Path:
-    """An output file path that can be created or replaced: not a directory, in a writable folder.
+    """An output file path that can be created or replaced: a regular file or nothing yet, with a real
+    name (not only a suffix such as ``.npz``), in a writable folder on a file system that is not full.
 
     Checks without writing anything: the nearest existing ancestor folder must be writable (the
     missing folders between it and the file are created later, when the file is written).
     """
-    path = Path(path)
-    if str(path) in ("", "."):
-        raise InputError(flag, None, "empty path; give a file name")
-    if path.is_dir():
+    path = check_path_text(path, flag)
+    if path.is_dir() or is_root(path):
         raise InputError(flag, None, f"{path} is a directory; give a file name")
+    if is_only_a_suffix(path.name):
+        raise InputError(flag, None, f"{str(path)!r} is only a suffix; give a file name such as "
+                                     f"out{path.name}")
+    if os.path.islink(path) and not path.exists():
+        raise InputError(flag, None, f"{path} is a dangling symbolic link (to {os.readlink(path)})")
+    if path.exists() and not path.is_file():
+        raise InputError(flag, None, f"{path} is not a regular file (a FIFO, socket or device); give a file name")
     if path.exists() and (not os.access(path, os.W_OK) or _read_only_mount(path)):
         raise InputError(flag, None, f"{path} is not writable")
     check_writable_dir(path.parent, flag, what=f"the folder of {path}")
@@ -192,19 +270,37 @@ def check_writable_file(path: Path | str, flag: str) -> Path:
 
 
 def check_writable_dir(path: Path | str, flag: str, what: str | None = None) -> Path:
-    """A directory that exists and is writable, or can be created (its nearest existing ancestor is)."""
-    path = Path(path)
+    """A directory that exists and is writable, or can be created (its nearest existing ancestor is),
+    on a file system that is not full; never the file-system root (an output folder there would spread
+    the suite's files into /)."""
+    path = check_path_text(path, flag)
     what = what or str(path)
+    if is_root(path):
+        raise InputError(flag, None, f"{what}: the file-system root is not an output folder; give a folder "
+                                     "such as reports/NAME")
     probe = path
-    while not probe.exists():
+    while not os.path.lexists(probe):
         if probe.parent == probe:
             break
         probe = probe.parent
-    if probe.exists() and not probe.is_dir():
+    if os.path.lexists(probe) and not probe.is_dir():
         raise InputError(flag, None, f"{what}: {probe} exists and is not a directory")
     if not os.access(probe, os.W_OK | os.X_OK) or _read_only_mount(probe):
         raise InputError(flag, None, f"{what}: {probe} is not writable")
+    free = _free_bytes(probe)
+    if free is not None and free < MIN_FREE_BYTES:
+        raise InputError(flag, None, f"{what}: the file system of {probe} is full ({free:,} bytes free); "
+                                     f"free some space or write elsewhere")
     return path
+
+
+def _free_bytes(path: Path) -> int | None:
+    """Bytes an unprivileged writer may still use on ``path``'s file system (None when unknown)."""
+    try:
+        st = os.statvfs(path)
+    except OSError:
+        return None
+    return st.f_bavail * st.f_frsize
 
 
 def _read_only_mount(path: Path) -> bool:
@@ -435,3 +531,60 @@ def read_latest_stable_dt(path: Path | str, creature: str, body: str) -> tuple[s
     rows = _fetch_all(path, "SELECT metrics_json, timestamp FROM runs WHERE command = 'stable-dt' AND creature = ? "
                             "AND body = ? AND status = 'ok' ORDER BY id DESC LIMIT 1", (creature, body))
     return rows[0] if rows else None
+
+
+# --------------------------------------------------------------------------- a result the store could not take
+# Everything a run computed is kept even when its insert fails after the simulation (a disk that filled, a
+# store changed by another program while the run ran): the command prints its result as usual and says where
+# this file is, instead of ending in a traceback with the result lost.
+
+STORE_WRITE_ERRORS = (sqlite3.Error, OSError)
+
+
+class UnstoredError(Exception):
+    """A result was computed but could not be stored; ``fallback`` is the file that keeps it (or None)."""
+
+    def __init__(self, store: Path | str, what: str, error: BaseException, fallback: Path | None):
+        self.store, self.what, self.error, self.fallback = Path(store), what, error, fallback
+        kept = (f"the result is kept in {fallback}" if fallback is not None
+                else "it could not be kept in a file either (the result is printed on stdout)")
+        super().__init__(f"could not store the {what} in {store} ({type(error).__name__}: {error}); {kept}")
+
+
+def fallback_dirs(store: Path | str) -> list[Path]:
+    """Where an unstored result goes, first that works: ``unsaved/`` beside the store, then the
+    temporary directory (``$TMPDIR``), when the store's own folder is the one that is full or read-only."""
+    import tempfile
+
+    return [Path(store).parent / "unsaved", Path(tempfile.gettempdir()) / "bench-myriapoda-unsaved"]
+
+
+def keep_unstored(store: Path | str, what: str, doc: Any, error: BaseException) -> Path | None:
+    """Write ``doc`` (JSON-able: the result as ``--json`` prints it) to a fallback file; its path, or None
+    when no fallback folder could be written either."""
+    stamp = time.strftime("%Y%m%dT%H%M%SZ", time.gmtime())
+    body = json.dumps({"store": str(store), "error": f"{type(error).__name__}: {error}", "what": what,
+                       "result": doc}, default=str)
+    for folder in fallback_dirs(store):
+        path = folder / f"{what.replace(' ', '-')}-{stamp}-{os.getpid()}.json"
+        tmp = path.with_suffix(".json.tmp")
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            tmp.write_text(body)
+            os.replace(tmp, path)
+            return path
+        except OSError:
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+    return None
+
+
+def store_or_keep(store: Path | str, what: str, write, doc) -> Any:
+    """``write()`` (an insert into ``store``); when it fails with a database or file-system error, keep
+    ``doc()`` in a fallback file and raise :class:`UnstoredError` naming it."""
+    try:
+        return write()
+    except STORE_WRITE_ERRORS as exc:
+        raise UnstoredError(store, what, exc, keep_unstored(store, what, doc(), exc)) from exc

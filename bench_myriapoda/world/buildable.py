@@ -11,11 +11,14 @@ import math
 
 from ..core.errors import InputError
 from .food import food_sources
+from .meshes import MAX_HASH_CELLS, mesh_file_problem, skull_hash_cells
 from .terrain import random_cylinders
 
 
 def check_placements(case, source: str) -> None:
-    """Random cylinders and food sources the world builders can place (they raise InputError otherwise)."""
+    """Random cylinders and food sources the world builders can place (they raise InputError otherwise), and
+    the surfaces they can build (:func:`check_surfaces`)."""
+    check_surfaces(case, source)
     sc = case.scenario
     if sc.obstacle_cylinders:
         x0, x1, z0, z1 = sc.obstacle_region_m
@@ -34,3 +37,20 @@ def _reattribute(fn, source: str) -> None:
         fn()
     except InputError as exc:
         raise InputError(source, exc.key, exc.message) from None
+
+
+def check_surfaces(case, source: str) -> None:
+    """The terrain mesh's spatial hash fits its cell limit and a body surface file is a mesh type trimesh
+    reads -- found by the world and body builders only after seconds of building otherwise."""
+    sc, body = case.scenario, case.body
+    if sc.terrain == "mesh" and sc.mesh == "skull":
+        cells = skull_hash_cells(sc.mesh_subdivisions, sc.mesh_scale, sc.mesh_cell_edges, sc.mesh_band_m)
+        if cells > MAX_HASH_CELLS:
+            raise InputError(source, "scenario.mesh_subdivisions",
+                             f"{sc.mesh_subdivisions}: the terrain's hash grid would have about {cells:,.0f} cells; "
+                             f"at most {MAX_HASH_CELLS:,}: lower scenario.mesh_subdivisions or raise "
+                             "scenario.mesh_cell_edges")
+    if getattr(body, "mesh", None) not in (None, "grid", "capsule"):
+        problem = mesh_file_problem(body.mesh)
+        if problem:
+            raise InputError(source, "body.mesh", f"{problem}; or use 'grid' or 'capsule'")

@@ -206,6 +206,9 @@ def load_closed_mesh(path, scale: float = 1.0, translate=(0.0, 0.0, 0.0)):
     path = Path(path)
     if not path.is_file():
         raise MeshError(f"{path}: file not found")
+    problem = mesh_file_problem(path)
+    if problem:
+        raise MeshError(problem)
     st = path.stat()
     v, f = _load_checked(str(path.resolve()), st.st_mtime_ns, st.st_size)
     return transformed(trimesh.Trimesh(vertices=v.copy(), faces=f.copy(), process=False), scale, translate)
@@ -369,6 +372,65 @@ def _normalise(a: np.ndarray) -> np.ndarray:
     return a / n[:, None]
 
 
+MAX_HASH_CELLS = 50_000_000  # 400 MB of int64 cell starts; beyond it the build itself takes minutes
+
+
+def hash_grid(v: np.ndarray, fc: np.ndarray, cell_edges: float, band_m: float | None):
+    """(h [m], band [m], origin (3,) [m], dims (3,) int) of a mesh's spatial hash: cells of ``cell_edges``
+    mean edge lengths over the bounding box padded by the band and a cell.  v: (V, 3); fc: (T, 3)."""
+    tri = v[fc]
+    e = np.concatenate([tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 1], tri[:, 0] - tri[:, 2]])
+    mean_edge = float(np.linalg.norm(e, axis=1).mean())
+    h = float(cell_edges) * mean_edge
+    vmin, vmax = v.min(axis=0), v.max(axis=0)
+    diag = float(np.linalg.norm(vmax - vmin))
+    band = DEFAULT_BAND_FRACTION * diag if band_m is None or band_m <= 0 else float(band_m)
+    band = max(band, 2.0 * h)
+    pad = band + h
+    dims = np.ceil((vmax - vmin + 2 * pad) / h).astype(np.int64) + 1
+    return h, band, vmin - pad, dims
+
+
+def skull_hash_cells(subdivisions: int, scale: float, cell_edges: float, band_m: float) -> float:
+    """About how many cells the skull terrain's hash grid has at ``subdivisions``, without building that
+    mesh: the grid's cells per axis grow linearly with the subdivisions (the mean edge, so the cell, shrinks
+    as 1 / subdivisions while the padded box stays), so they are counted on 16- and 32-subdivision skulls
+    and extrapolated per axis (a given band_m [m] is scaled like the mesh: the count is scale-free)."""
+    n = int(subdivisions)
+    band = band_m / scale if band_m > 0 else None
+
+    def dims(k: int) -> np.ndarray:
+        m = skull_mesh(k)
+        return hash_grid(np.asarray(m.vertices, dtype=float), np.asarray(m.faces), cell_edges, band)[3].astype(float)
+
+    if n <= 32:
+        return float(np.prod(dims(n)))
+    d16, d32 = dims(16), dims(32)
+    return float(np.prod(d32 + (d32 - d16) * (n - 32) / 16.0))
+
+
+def mesh_file_problem(path) -> str | None:
+    """Why ``path`` cannot be a mesh file trimesh loads (not a regular file, a file type trimesh does not
+    read), or None; checked on the name and the file's kind without reading it."""
+    import os
+    import stat
+
+    import trimesh
+
+    try:
+        st = os.stat(path)
+    except OSError as exc:
+        return f"{path}: {exc.strerror or 'cannot be read'}"
+    if not stat.S_ISREG(st.st_mode):
+        return f"{path}: not a regular file"
+    suffix = Path(path).suffix.lower().lstrip(".")
+    formats = sorted(trimesh.available_formats())
+    if suffix not in formats:
+        return f"{path}: the file type {suffix or '(none)'!r} is not a mesh format trimesh reads; one of " + \
+            ", ".join(f for f in ("stl", "obj", "ply", "off", "glb", "gltf") if f in formats) + ", ..."
+    return None
+
+
 def mesh_block(vertices, faces, cell_edges: float | None = None, band_m: float | None = None,
                name: str = "mesh", exact_cells: float | None = None) -> np.ndarray:
     """The MESH data block (layout in ``terrain_kernels``) of a closed mesh, offsets relative to its start.
@@ -384,20 +446,11 @@ def mesh_block(vertices, faces, cell_edges: float | None = None, band_m: float |
     exact_cells = DEFAULT_EXACT_CELLS if exact_cells is None else float(exact_cells)
     v, fc = check_closed(vertices, faces, name)
     tri = v[fc]  # (T, 3, 3)
-    # order triangles along the grid for memory locality (by centroid cell, row-major)
-    e = np.concatenate([tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 1], tri[:, 0] - tri[:, 2]])
-    mean_edge = float(np.linalg.norm(e, axis=1).mean())
-    h = float(cell_edges) * mean_edge
-    vmin, vmax = v.min(axis=0), v.max(axis=0)
-    diag = float(np.linalg.norm(vmax - vmin))
-    band = DEFAULT_BAND_FRACTION * diag if band_m is None or band_m <= 0 else float(band_m)
-    band = max(band, 2.0 * h)
-    pad = band + h
-    origin = vmin - pad
-    dims = np.ceil((vmax - vmin + 2 * pad) / h).astype(np.int64) + 1
+    h, band, origin, dims = hash_grid(v, fc, cell_edges, band_m)
     n_cells = int(np.prod(dims))
-    if n_cells > 50_000_000:
+    if n_cells > MAX_HASH_CELLS:
         raise MeshError(f"{name}: the hash grid would have {n_cells} cells; use a smaller band or larger cells")
+    # order triangles along the grid for memory locality (by centroid cell, row-major)
     cen = tri.mean(axis=1)
     cidx = np.floor((cen - origin) / h).astype(np.int64)
     order = np.argsort((cidx[:, 0] * dims[1] + cidx[:, 1]) * dims[2] + cidx[:, 2], kind="stable")
