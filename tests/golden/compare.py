@@ -32,11 +32,11 @@ import numpy as np
 #   whole-run statistics (relative)           2.2e-10
 #   metrics (relative)                        2.2e-10
 #
-# (native and haswell-avx512 are bit for bit equal except in the FEM walk, 9e-14 m; the mass-spring walk is
-# bit for bit equal in all four.)  The tolerances are about 100 times the measured distance: a machine's
-# own code generation (another vector width, another FMA contraction, another numpy SIMD kernel) moves the
-# bits differently but not by orders of magnitude more, while a change of the physics moves them far more.
-# MEASURED-HASWELL
+# The worst pairs are all against generic (no FMA); native, haswell and haswell-avx512 are bit for bit equal
+# except in the FEM walk (at most 8.8e-14 m), and the mass-spring walk is bit for bit equal in all four.  The
+# tolerances are about 100 times the measured distance: another machine's code generation (vector width, FMA
+# contraction, numpy SIMD kernels, CPU tuning) moves the bits differently but not by orders of magnitude more,
+# while a change of the physics moves them far more.
 
 HORIZON_S = 0.5
 """Seconds of simulated time whose samples a golden keeps value by value (``head``).
