@@ -75,13 +75,16 @@ def test_wave_off_and_collision_off_equal_the_golden(name):
 def _perturbed(golden: dict, where: str, factor: float) -> dict:
     """A copy of ``golden`` with one recorded value moved by ``factor`` times its tolerance: the last head
     sample's first coordinate of the segment centres, the first coordinate's whole-run mean of the leg tips,
-    or the metric ``speed_m_per_s``."""
+    the whole-run fraction of the first leg state, or the metric ``speed_m_per_s``."""
     g = copy.deepcopy(golden)
     if where == "head":
         g["arrays"]["segment_centers"]["head"][-1][0][0] += factor * G.HEAD_ATOL_M
     elif where == "stat":
         v = g["arrays"]["leg_tips"]["stats"]["mean"][0]
         g["arrays"]["leg_tips"]["stats"]["mean"][0] = v + factor * (G.STAT_ATOL_M + G.STAT_RTOL * abs(v))
+    elif where == "states":
+        fractions = g["arrays"]["leg_states"]["stats"]["fraction"]
+        fractions[min(fractions)] += factor * G.STATE_FRACTION_ATOL
     else:
         v = g["metrics"]["speed_m_per_s"]
         g["metrics"]["speed_m_per_s"] = v + factor * (G.METRIC_ATOL + G.METRIC_RTOL * abs(v))
@@ -91,7 +94,7 @@ def _perturbed(golden: dict, where: str, factor: float) -> dict:
 @pytest.mark.slow
 @pytest.mark.golden
 @pytest.mark.parametrize("name", CASE_IDS)
-@pytest.mark.parametrize("where", ["head", "stat", "metric"])
+@pytest.mark.parametrize("where", ["head", "stat", "states", "metric"])
 def test_a_golden_moved_just_past_its_tolerance_fails_and_well_inside_passes(name, where):
     """The tolerances are not vacuous: the same run against its golden with one recorded value moved by 1.5
     times the tolerance fails, naming that value; moved by 0.1 times it (on top of the run's own distance
@@ -100,7 +103,8 @@ def test_a_golden_moved_just_past_its_tolerance_fails_and_well_inside_passes(nam
     golden = _golden(name)
     assert not G.compare_to_golden(_perturbed(golden, where, 0.1), arrays, metrics, bitwise=False)
     problems = G.compare_to_golden(_perturbed(golden, where, 1.5), arrays, metrics, bitwise=False)
-    key = {"head": "segment_centers: first", "stat": "leg_tips: whole-run mean", "metric": "metric speed_m_per_s"}
+    key = {"head": "segment_centers: first", "stat": "leg_tips: whole-run mean",
+           "states": "leg_states: whole-run fraction", "metric": "metric speed_m_per_s"}
     assert len(problems) == 1 and problems[0].startswith(key[where]), problems
 
 

@@ -51,10 +51,16 @@ HEAD_ATOL_M = 1e-8
 
 STAT_RTOL = 1e-7
 """Relative tolerance of the whole-run statistics (mean, std, min and max of each coordinate of the segment
-centres and leg tips; the fraction of leg states in each state).  Measured: at most 2.2e-10."""
+centres and leg tips).  Measured: at most 2.2e-10."""
 
 STAT_ATOL_M = 1e-8
 """Absolute floor [m] of the statistics' tolerance, for statistics near zero (measured: at most 1.6e-10 m)."""
+
+STATE_FRACTION_ATOL = 1e-3
+"""Largest allowed change of the fraction of leg-state entries (all samples x legs) in each state over the whole
+run.  Measured: no leg state ever differed (0 of 32,400 entries in the hybrid walks).  One entry is 3e-5 of
+the fractions, so this admits one leg's transition some 30 samples (0.1 s) late, or a few shorter ones,
+while a changed gait moves the fractions by percents."""
 
 METRIC_RTOL = 1e-7
 """Relative tolerance of the run's metrics, all computed over the whole run.  Measured: at most 2.2e-10
@@ -110,7 +116,7 @@ def _stats(a: np.ndarray) -> dict:
         return {"mean": flat.mean(axis=0).tolist(), "std": flat.std(axis=0).tolist(),
                 "min": flat.min(axis=0).tolist(), "max": flat.max(axis=0).tolist()}
     states, counts = np.unique(a, return_counts=True)
-    return {"fraction": {str(int(s)): c / a.size for s, c in zip(states, counts)}}
+    return {"fraction": {str(int(s)): float(c / a.size) for s, c in zip(states, counts)}}
 
 
 def golden_record(arrays: dict, metrics: dict, case: dict) -> dict:
@@ -151,7 +157,8 @@ def compare_to_golden(golden: dict, arrays: dict, metrics: dict, bitwise: bool |
             problems.append(f"{key}: not bit for bit the golden on the build it was captured with")
         if key == "leg_t":
             if not _close([a[0], a[-1]], [g["first"], g["last"]], METRIC_RTOL, METRIC_ATOL):
-                problems.append(f"{key}: samples from {a[0]!r} to {a[-1]!r} s, golden {g['first']!r} to {g['last']!r}")
+                problems.append(f"{key}: samples from {a[0]!r} to {a[-1]!r} s, "
+                                f"golden {g['first']!r} to {g['last']!r}")
             continue
         head = _head(a, np.asarray(arrays[TIME_OF[key]]), g["head_stride"])
         want = np.asarray(g["head"], dtype=a.dtype)
@@ -166,14 +173,15 @@ def compare_to_golden(golden: dict, arrays: dict, metrics: dict, bitwise: bool |
         st = _stats(a)
         for name, want_s in g["stats"].items():
             got_s = st[name]
-            if isinstance(want_s, dict):  # state fractions: the same states, each fraction close
-                got_s = [got_s.get(s, 0.0) for s in sorted(set(want_s) | set(got_s))]
-                want_s = [want_s.get(s, 0.0) for s in sorted(set(want_s) | set(st[name]))]
-                ok = _close(got_s, want_s, STAT_RTOL, STAT_RTOL)
+            if isinstance(want_s, dict):  # state fractions: each state's fraction close (absent: 0)
+                states = sorted(set(want_s) | set(got_s))
+                got_s, want_s = [got_s.get(k, 0.0) for k in states], [want_s.get(k, 0.0) for k in states]
+                ok = _close(got_s, want_s, 0.0, STATE_FRACTION_ATOL)
             else:
                 ok = _close(got_s, want_s, STAT_RTOL, STAT_ATOL_M)
             if not ok:
-                problems.append(f"{key}: whole-run {name} {got_s}, golden {want_s} (STAT_RTOL {STAT_RTOL:g})")
+                problems.append(f"{key}: whole-run {name} {got_s}, golden {want_s} (STAT_RTOL {STAT_RTOL:g}, "
+                                f"STATE_FRACTION_ATOL {STATE_FRACTION_ATOL:g})")
     for key, want in golden["metrics"].items():
         got = metrics.get(key, float("nan"))
         if want is None or not math.isfinite(got):
