@@ -22,21 +22,21 @@ import os
 import numpy as np
 
 # Measured with measure_cpu_divergence.py on one machine (Intel Xeon "emeraldrapids", AVX-512; numba 0.68.1,
-# llvmlite 0.50.0, numpy 2.4.6), between four code generations, each compiled into a fresh NUMBA_CACHE_DIR:
-# native (AVX-512), haswell (NUMBA_CPU_NAME=haswell NUMBA_CPU_FEATURES=, AVX2 + FMA), generic
-# (NUMBA_CPU_NAME=generic: SSE2, no FMA) and haswell-avx512 (NUMBA_CPU_NAME=haswell alone, which keeps the
-# host's AVX-512).  The largest distance between any two of them, over the four golden runs:
+# llvmlite 0.50.0, numpy 2.4.6), between five code generations, each compiled into a fresh NUMBA_CACHE_DIR:
+# native (AVX-512), haswell (NUMBA_CPU_NAME=haswell NUMBA_CPU_FEATURES=, AVX2 + FMA), znver3 (likewise, AMD
+# Zen 3), generic (NUMBA_CPU_NAME=generic: SSE2, no FMA) and haswell-avx512 (NUMBA_CPU_NAME=haswell alone,
+# which keeps the host's AVX-512).  The largest distance between any two of them, over the four golden runs:
 #
 #   segment centre or leg tip [m], up to t =  0.1 s   0.25 s   0.5 s    1 s      3 s (whole run)
 #                                             6.4e-14  8.8e-11  1.3e-10  3.9e-9   5.7e-9
 #   whole-run statistics (relative)           2.2e-10
 #   metrics (relative)                        2.2e-10
 #
-# The worst pairs are all against generic (no FMA); native, haswell and haswell-avx512 are bit for bit equal
-# except in the FEM walk (at most 8.8e-14 m), and the mass-spring walk is bit for bit equal in all four.  The
-# tolerances are about 100 times the measured distance: another machine's code generation (vector width, FMA
-# contraction, numpy SIMD kernels, CPU tuning) moves the bits differently but not by orders of magnitude more,
-# while a change of the physics moves them far more.
+# The worst pairs are all against generic (no FMA); native, haswell, znver3 and haswell-avx512 are bit for bit
+# equal except in the FEM walk (at most 8.8e-14 m; haswell and znver3 equal there too), and the mass-spring walk
+# is bit for bit equal in all five.  The tolerances are about 100 times the measured distance, meant to cover
+# other machines' code generation (CPU tuning, C library), which was not measured; a change of the physics
+# moves the bits far more.
 
 HORIZON_S = 0.5
 """Seconds of simulated time whose samples a golden keeps value by value (``head``).
