@@ -1,47 +1,45 @@
 """Capture the golden runs of tests/test_body_wave.py (``python3 tests/golden/capture_myriapod_golden.py``).
 
-The goldens were captured from the code *before* issue 16 (commit fcb6297): the
-centipede on the three bodies walking on flat ground, and the hybrid among the
-Fig. 13 cylinders.  tests/test_body_wave.py reruns the same cases with the body
-wave off and the legs' obstacle collision off and asserts bitwise equality, so
-neither the new options nor the obstacle grid change anything when unused.
-Rerun this only to re-baseline deliberately.
+The cases: the centipede on the three bodies walking on flat ground, and the hybrid among the Fig. 13
+cylinders, with the configuration's defaults (body wave and leg collision off).  tests/test_body_wave.py
+reruns them with the body wave and the legs' obstacle collision explicitly off and compares them with
+``compare.compare_to_golden``: at the tolerances measured between code generations on any machine, bit for
+bit on the build that captured them.  Rerun this only to re-baseline deliberately.
 
-Bitwise equality needs no copy of the arrays: each case keeps, in ``NAME.arrays.json``, every array's
-dtype, shape and SHA-256 of its bytes (``array_digest``), and in ``NAME.json`` the run's metrics.
+History: first captured from the code before issue 16 (commit fcb6297), then kept as SHA-256 digests
+(88a970f); re-captured for issue 28 as values (``compare.golden_record``) from main at eb54d20, whose arrays
+are bit for bit those digests (checked: every digest equal on the capturing Xeon) and whose metrics are
+main's, including the three redefined since (path_following_error_bl, tracking_error_mean_m,
+body_undulation_amp_bl of the mass-spring walk).
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import pathlib
 import sys
-
-import numpy as np
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import run_case
 
 HERE = pathlib.Path(__file__).parent
+sys.path.insert(0, str(HERE))
+from compare import golden_record  # noqa: E402
+
 # (name, body, scenario, duration [s]): short, but past ADJUSTMENT into the walk
 GOLDEN_CASES = [("walk-hybrid", "hybrid", "walk", 3.0), ("walk-massspring", "massspring", "walk", 1.5),
                 ("walk-fem", "fem", "walk", 1.0), ("fig13-hybrid", "hybrid", "fig13-cylinders", 3.0)]
 
 
 def run_arrays(body: str, scenario: str, duration: float, overrides=()) -> tuple[dict, dict]:
-    """(arrays, metrics) of one run: segment centres (T, n, 3), leg states (T', n_legs), tips (T', n_legs, 3)."""
+    """(arrays, metrics) of one run: sample times t (T,) [s] and segment centres (T, n, 3) [m]; leg sample
+    times leg_t (T',) [s], leg states (T', n_legs) and tips (T', n_legs, 3) [m]."""
     r = run_case(resolve_case("centipede", body, scenario, duration=duration, overrides=list(overrides)))
     if r.status != "ok":
         raise RuntimeError(f"{body}/{scenario}: {r.status} {r.message}")
     t, states, tips = r.extra["leg_timeline"]
-    arrays = {"segment_centers": r.series.segment_centers, "leg_t": t, "leg_states": states, "leg_tips": tips}
+    arrays = {"t": r.series.t, "segment_centers": r.series.segment_centers, "leg_t": t, "leg_states": states,
+              "leg_tips": tips}
     return arrays, r.metrics
-
-
-def array_digest(a: np.ndarray) -> dict:
-    """dtype, shape and SHA-256 of the C-ordered bytes of ``a``: equal digests <=> bit-for-bit equal arrays."""
-    a = np.ascontiguousarray(a)
-    return {"dtype": a.dtype.str, "shape": list(a.shape), "sha256": hashlib.sha256(a.tobytes()).hexdigest()}
 
 
 def main() -> None:
@@ -50,10 +48,8 @@ def main() -> None:
         if name not in names:
             continue
         arrays, metrics = run_arrays(body, scenario, duration)
-        (HERE / f"{name}.arrays.json").write_text(json.dumps({k: array_digest(a) for k, a in arrays.items()},
-                                                              indent=1, sort_keys=True))
-        (HERE / f"{name}.json").write_text(json.dumps({k: (v if np.isfinite(v) else None) for k, v in
-                                                        metrics.items()}, indent=1, sort_keys=True))
+        case = {"name": name, "creature": "centipede", "body": body, "scenario": scenario, "duration_s": duration}
+        (HERE / f"{name}.json").write_text(json.dumps(golden_record(arrays, metrics, case), sort_keys=True) + "\n")
         print(name, arrays["segment_centers"].shape)
 
 
