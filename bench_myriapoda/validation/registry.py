@@ -34,7 +34,10 @@ CHECKS: tuple[Check, ...] = (
     Check("analytic.damping-oscillating-mode", "analytic", "per-step amplitude factor of an underdamped mode",
           "1 / sqrt(1 + c h) (eigenvalues of the linearized step)", (FEM,), A.damping_oscillating_mode),
     Check("analytic.slithering", "analytic", "snake forward speed over mu_t/mu_f [BL/cycle]",
-          "Hu et al. 2009 kinematic model", ALL_BODIES, M.slithering, (MS,)),
+          "Hu et al. 2009 kinematic model at the commanded shape", ALL_BODIES, M.slithering, (MS,)),
+    Check("analytic.slithering-measured-shape", "analytic", "snake forward speed over mu_t/mu_f [BL/cycle] (INFO)",
+          "Hu et al. 2009 kinematic model at the body's measured shape", ALL_BODIES, M.slithering_measured_shape,
+          (MS,)),
     # ---- Miller 1988, image by image
     Check("miller.image1-worm-book", "miller", "worm on the book: impact, contact, bending over, sliding off",
           "Miller 1988 Images 1a-1d", ALL_BODIES, M.image_run("worm-book"), (MS,)),
