@@ -16,20 +16,26 @@ The default run holds ratio 1 and 5 on the lattice and ratio 5 on the fem body; 
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
+import json
 import math
 import os
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from bench_myriapoda.controllers.muscle_waves import fill_activation, wave_table
 from bench_myriapoda.controllers.shape_tracking import measured_curvature, track_tick
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.core.protocols import MUSCLES
+from bench_myriapoda.core.series import Series
 from bench_myriapoda.harness.runner import Creature, run_case
-from bench_myriapoda.metrics.shape_tracking import SHAPE_ERROR_THRESHOLD
+from bench_myriapoda.metrics.shape_tracking import (SHAPE_ERROR_THRESHOLD, commanded_curvature, shape_tracking_error,
+                                                    shape_tracking_metrics)
 from bench_myriapoda.reference.slithering import steady_slithering
+from bench_myriapoda.report.tables import comparison_tables
 
 COMMAND = 7.0
 MU_F = 0.05
@@ -116,6 +122,60 @@ def test_a_command_beyond_the_muscle_strength_is_clipped_counted_and_does_not_wi
     assert np.all(np.hypot(a, b) < 0.1)
 
 
+def commanded_centre_line(case, t: np.ndarray, phase_shift: float = 0.0, scale: float = 1.0) -> Series:
+    """A centre line bent exactly to ``scale`` x the commanded ground curvature (``commanded_curvature``), its
+    phase shifted by ``phase_shift`` [rad]: 50 centres one pitch apart, integrated from the head."""
+    cre = case.creature
+    pitch = cre.segment_length_m
+    ds = pitch / 20.0
+    s_fine = np.arange(0.0, cre.body_length_m + ds / 2, ds)
+    shifted = case.gait.phase_deg + math.degrees(phase_shift)
+    g = dataclasses.replace(case.gait, phase_deg=shifted)
+    kappa = scale * commanded_curvature(dataclasses.replace(case, gait=g), s_fine, t)
+    phi = np.concatenate([np.zeros((len(t), 1)), np.cumsum(0.5 * (kappa[:, 1:] + kappa[:, :-1]) * ds, axis=1)], axis=1)
+    # walked from the head toward -x; a left turn (positive curvature) rotates the walking direction about +y
+    dx, dz = -np.cos(phi), np.sin(phi)
+    x = np.concatenate([np.zeros((len(t), 1)), np.cumsum(0.5 * (dx[:, 1:] + dx[:, :-1]) * ds, axis=1)], axis=1)
+    z = np.concatenate([np.zeros((len(t), 1)), np.cumsum(0.5 * (dz[:, 1:] + dz[:, :-1]) * ds, axis=1)], axis=1)
+    idx = np.round((0.5 + np.arange(cre.segments)) * pitch / ds).astype(int)
+    c = np.stack([x[:, idx], np.zeros((len(t), len(idx))), z[:, idx]], axis=2)
+    head = np.stack([x[:, 0], np.zeros(len(t)), z[:, 0]], axis=1)
+    return Series(t=t, com=c.mean(axis=1), head=head, tail=c[:, -1], segment_centers=c, energy=np.zeros((len(t), 3)),
+                  nodes=None)
+
+
+def test_the_shape_error_is_zero_for_the_commanded_shape_and_grows_with_what_is_missing():
+    case = snake_case("massspring", 1.0, "gait.frequency_hz=0.5", "gait.ramp_s=0")
+    t = np.linspace(0.0, 4.0, 81)
+    exact = commanded_centre_line(case, t)
+    assert shape_tracking_error(exact, case, 0, len(t) - 1) < 0.02
+    assert shape_tracking_metrics(exact, case, 0, len(t) - 1)["shape_not_achieved"] == 0.0
+    straight = commanded_centre_line(case, t, scale=0.0)
+    assert shape_tracking_error(straight, case, 0, len(t) - 1) == pytest.approx(1.0 / math.sqrt(2), abs=0.03)
+    lagging = commanded_centre_line(case, t, phase_shift=math.pi / 2)  # sqrt(2) sin(pi / 4) = 1
+    assert shape_tracking_error(lagging, case, 0, len(t) - 1) == pytest.approx(1.0, abs=0.03)
+    small = commanded_centre_line(case, t, scale=0.8)  # 20 % of the amplitude missing: flagged
+    assert shape_tracking_error(small, case, 0, len(t) - 1) == pytest.approx(0.2 / math.sqrt(2), abs=0.01)
+    assert shape_tracking_metrics(small, case, 0, len(t) - 1)["shape_not_achieved"] == 1.0
+    mirrored = commanded_centre_line(case, t, scale=-1.0)  # the opposite bend: the sign is measured
+    assert shape_tracking_error(mirrored, case, 0, len(t) - 1) == pytest.approx(2.0 / math.sqrt(2), abs=0.05)
+    worm = resolve_case("worm", "massspring", "flat")
+    assert shape_tracking_metrics(exact, worm, 0, len(t) - 1) == {}
+
+
+def test_the_comparison_table_says_a_run_did_not_reach_its_shape():
+    row = {"creature": "snake", "body": "massspring", "gait": "lateral-undulation", "scenario": "flat", "seed": 0,
+           "status": "ok", "metric.speed_bl_per_cycle": 0.001, "metric.shape_tracking_error": 0.6,
+           "metric.shape_not_achieved": 1.0}
+    ok = dict(row, body="fem", **{"metric.speed_bl_per_cycle": 0.39, "metric.shape_tracking_error": 0.05,
+                                  "metric.shape_not_achieved": 0.0})
+    table = comparison_tables(pd.DataFrame([row, ok]))["snake"]
+    speed = table.table.columns.get_loc("speed [BL/cycle]")
+    notes = dict(zip(table.table["body"], table.notes.iloc[:, speed]))
+    assert notes == {"massspring": "shape", "fem": ""} and "shape_not_achieved" in table.footnotes["shape"]
+    assert dict(zip(table.table["body"], table.table["shape error"])) == {"massspring": 0.6, "fem": 0.05}
+
+
 # ----------------------------------------------------------------------------- the controller on every body
 
 def test_the_closed_loop_is_the_default_and_the_open_loop_key_is_the_old_controller():
@@ -195,3 +255,22 @@ def test_the_fem_snake_reaches_the_commanded_shape_and_the_reference_speed():
 @pytest.mark.parametrize("ratio", RATIOS)
 def test_every_body_reaches_the_commanded_shape_over_the_friction_grid(body, ratio):
     check_tracks_and_moves(body, ratio)
+
+
+def test_the_friction_sweep_figure_draws_every_body_against_the_reference(tmp_path):
+    from bench_myriapoda.report import friction_sweep
+
+    rows = []
+    for body, speeds in (("massspring", (0.0, 0.17, 0.39)), ("fem", (0.0, 0.16, 0.001))):
+        for ratio, v in zip((1.0, 2.0, 5.0), speeds):
+            case = snake_case(body, ratio)
+            rows.append({"creature": "snake", "body": body, "status": "ok", "case_json": json.dumps(case.to_dict()),
+                         "grid.friction.mu_transverse": ratio * MU_F, "metric.speed_bl_per_cycle": v,
+                         "metric.shape_not_achieved": float(v == 0.001)})
+    df = pd.DataFrame(rows)
+    assert friction_sweep.has_friction_sweep(df, ["friction.mu_transverse"])
+    assert not friction_sweep.has_friction_sweep(df, ["dt"])
+    cases = friction_sweep.sweep_cases(df)
+    assert sorted(set(cases["ratio"].round(9))) == [1.0, 2.0, 5.0]
+    path = friction_sweep.plot_speed_vs_friction_ratio(df, tmp_path / "sweep.png")
+    assert path.exists() and path.stat().st_size > 10_000
