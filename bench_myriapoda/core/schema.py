@@ -133,7 +133,7 @@ class GaitConfig:
                                  "segment's LATERAL strain (calibrated feed-forward + proportional + per-segment "
                                  "integral of the wave's in-phase and quadrature error); 'open_loop': the calibrated "
                                  "gain alone, as before issue 27")
-    shape_control_rate_hz: float = rng(100.0, gt=0.0, le=10000.0,
+    shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
     shape_gain_p: float = rng(2.0, ge=0.0, le=100.0,
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
