@@ -135,7 +135,7 @@ class GaitConfig:
                                  "gain alone, as before issue 27")
     shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
-    shape_gain_p: float = rng(2.0, ge=0.0, le=100.0,
+    shape_gain_p: float = rng(0.0, ge=0.0, le=100.0,
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
                                   "curvature error [-]")
     shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
