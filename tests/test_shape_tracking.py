@@ -12,8 +12,8 @@ table).  Closed loop, measured on this 2-core machine under load (reference at r
   lattice, gait.shape_gain_p = 2: ratio 1 -0.012, error 0.049; ratio 2 0.166, error 0.068; ratio 5 0.390,
   error 0.064; ratio 10 0.516, error 0.075 (43 s; ratios 2 and 10 at 100 Hz ticks, 1 and 5 at 100 and 250 Hz);
   lattice without the proportional term: ratio 5 0.333, error 0.20; ratio 1 diverged (error 4.6, saturated);
-  fem and hybrid, gait.shape_gain_p = 0, ratio 5: 0.387 (error 0.072) and 0.388 (error 0.065) in 22 s runs
-  with 2 warm-up cycles; any proportional gain tried blew the fem snake up.
+  fem, gait.shape_gain_p = 0, ratio 5: 0.378, error 0.039 (43 s; 0.387, error 0.072 in a 22 s run with 2
+  warm-up cycles); hybrid likewise, 22 s: 0.388, error 0.065; any proportional gain tried blew the fem snake up.
 These tests set each body's working gain (``CLOSED``).
 
 The default run holds ratio 1 and 5 on the lattice and ratio 5 on the fem body; the whole grid
