@@ -94,7 +94,10 @@ MU_B_OVER_MU_F = 1.5
 SETTINGS = ("creature.segments=20", "creature.mass_kg=0.4", "gait.wavelength_bl=1.0",
             f"gait.curvature_amplitude={COMMAND}", "gait.frequency_hz=0.25", "gait.ramp_s=2.0",
             "metrics.warmup_cycles=1", "friction.froude=0.1", "friction.mu_forward=1",
-            f"friction.mu_backward={MU_B_OVER_MU_F}")
+            f"friction.mu_backward={MU_B_OVER_MU_F}",
+            # issue 27: this file measures the open-loop calibrated gain (bodies/curvature_calibration.py) at a load
+            # it reaches the shape under, with the figures above; the closed loop is tests/test_shape_tracking.py's
+            "gait.shape_control=open_loop")
 DURATION_S = 12.0  # 3 periods: ramp within the first, warm-up, two measured
 
 

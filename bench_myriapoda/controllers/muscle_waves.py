@@ -137,10 +137,17 @@ def fill_activation(waves, ramp_s, s_seg, t0, dt, n_rows, out):
 
 
 class MuscleWaveController:
-    """Miller's travelling muscle waves as an open-loop controller (rectilinear, lateral undulation,
-    sidewinding, arching; ``wave_table``).  Works on any body with muscles: the waves are evaluated
-    at the body's own muscle segments (``body_info["muscle_s"]``, rest arc length from the head [m]),
-    with the wavelength measured in the creature's body length."""
+    """Miller's travelling muscle waves (rectilinear, lateral undulation, sidewinding, arching;
+    ``wave_table``).  Works on any body with muscles: the waves are evaluated at the body's own muscle
+    segments (``body_info["muscle_s"]``, rest arc length from the head [m]), with the wavelength
+    measured in the creature's body length.
+
+    Open loop (every gait without a commanded curvature, and any gait with ``gait.shape_control =
+    "open_loop"``): the controller fills whole chunks (``fill``).  A bending gait that commands its
+    shape (``curvature_amplitude`` > 0) with ``shape_control = "closed_loop"`` is a closed-loop
+    controller instead (``open_loop`` False, ``rate_hz`` = ``gait.shape_control_rate_hz``): at every
+    tick ``step`` measures the ground curvature of the segment frames and corrects each segment's
+    LATERAL strain (``controllers.shape_tracking``); the other channels stay the open-loop waves."""
 
     requires = frozenset({MUSCLES})
     open_loop = True
@@ -151,6 +158,14 @@ class MuscleWaveController:
         self.waves = wave_table(case.gait, case.creature.body_length_m, passive=case.scenario.passive)
         self.ramp_s = float(case.gait.ramp_s)
         self.s_seg = np.zeros(0)
+        self.tracker = None
+        gait = case.gait
+        if (gait.shape_control == "closed_loop" and gait.name in CURVATURE_GAITS and gait.curvature_amplitude > 0.0
+                and not case.scenario.passive):
+            from .shape_tracking import ShapeTracker  # noqa: PLC0415 (one concept per module; no cycle)
+            self.tracker = ShapeTracker(case)
+            self.open_loop = False
+            self.rate_hz = float(gait.shape_control_rate_hz)
 
     def reset(self, case, body_info, rng=None) -> None:
         self.s_seg = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
@@ -165,6 +180,12 @@ class MuscleWaveController:
                 return
             self.waves = wave_table(gait, case.creature.body_length_m, passive=case.scenario.passive,
                                     strain_per_curvature=float(gain))
+            if self.tracker is not None:
+                self.tracker.reset(body_info, float(gain))
+
+    def metrics(self) -> dict[str, float]:
+        """The closed loop's muscle figures (``shape_tracking.ShapeTracker.metrics``); none in open loop."""
+        return self.tracker.metrics() if self.tracker is not None and self.tracker.ready else {}
 
     def fill(self, t0: float, dt: float, n_steps: int, act: Actuation) -> None:
         act.ensure_rows(n_steps)
@@ -172,6 +193,12 @@ class MuscleWaveController:
         act.muscles_on = bool(np.any(self.waves[:, AMP] != 0.0))
 
     def step(self, obs: Observation, t: float, act: Actuation) -> None:
+        if self.tracker is not None and self.tracker.ready:
+            act.ensure_rows(1)
+            segment_activation(self.waves, self.ramp_s, self.s_seg, t, act.muscle[0])
+            self.tracker.command(obs, t, self.waves, self.ramp_s, self.s_seg, act.muscle[0])
+            act.muscles_on = True
+            return
         self.fill(t, 0.0, 1, act)
 
 

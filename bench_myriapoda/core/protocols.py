@@ -33,6 +33,10 @@ import numpy as np
 # has stretch 1 + axial + lateral z_s + dorsal y_s.
 AXIAL, LATERAL, DORSAL = 0, 1, 2
 N_CHANNELS = 3
+# A positive LATERAL strain bends the body toward its left; walked from head to tail its centre line then
+# turns right: a negative ground curvature in ``metrics.body_shape.ground_curvature``'s sign (left turn
+# positive).  The commanded curvature profile on the ground is this sign x the strain wave's.
+LATERAL_GROUND_SIGN = -1.0
 
 # Capabilities a body declares and a controller may require.
 MUSCLES = "muscles"      # reads actuation.muscle (per-segment channel strains)

@@ -29,6 +29,7 @@ from ..core.protocols import LEGS, SEGMENTS, Actuation, Observation, controller_
 from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
+from ..metrics.shape_tracking import shape_flag_reason
 from ..world.water_coupling import WaterCoupling, has_water
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
@@ -320,6 +321,11 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         if monitor is None:  # shape, roll, contact and posture_fault of a legless body
             metrics.update(legless_metrics(series, case, length))
         metrics.update(body.extra_metrics())
+        controller_metrics = getattr(creature.controller, "metrics", None)  # e.g. the shape tracker's saturation
+        if callable(controller_metrics):
+            metrics.update(controller_metrics())
+        if metrics.get("shape_not_achieved") == 1.0 and status == "ok":
+            message = shape_flag_reason(metrics, case)
         extra = {}
         if monitor is not None:
             metrics.update(monitor.metrics())

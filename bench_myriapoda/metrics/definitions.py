@@ -136,6 +136,16 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("food_reached", "count", "food sources eaten", "legged creatures"),
     ("time_to_first_food_s", "s", "when the first food source was eaten (NaN if none)", "legged creatures"),
     ("food_sources", "count", "food sources in the scenario", "legged creatures"),
+    # ---- the commanded shape, achieved or not (metrics/shape_tracking.py, controllers/shape_tracking.py)
+    ("shape_tracking_error", "-", "RMS over the steady window and the interior centre-line points of (measured - "
+     "commanded ground curvature) x body length / commanded amplitude (`gait.curvature_amplitude`); 0.71 for a "
+     "straight body", "bending gaits"),
+    ("shape_not_achieved", "0/1", "1 when `shape_tracking_error` is above 0.10: the body did not make the "
+     "commanded shape, so its locomotion is not comparable across bodies", "bending gaits"),
+    ("muscle_saturation_fraction", "-", "share of steady-window (segment, control tick) strain commands clipped at "
+     "`gait.max_muscle_strain` (closed-loop shape control only)", "bending gaits"),
+    ("muscle_strain_peak", "-", "largest |lateral strain| commanded in the steady window (closed-loop shape control "
+     "only)", "bending gaits"),
     # ---- emergent walking measures (metrics/walk.py): a walk's speed is commanded, these are not
     ("body_speed_ratio", "-", "centre-of-mass ground speed over the commanded head speed "
      "(`controller.head_speed_m_s`)", "legged creatures"),

@@ -1,7 +1,7 @@
 """Comparison tables: one per creature, a row per case, the body models side by side.
 
-The columns are the suite's headline metrics in four groups -- speed, gait,
-stability, throughput -- and a column is shown for a creature only when at
+The columns are the suite's headline metrics in five groups -- speed, gait,
+shape, stability, throughput -- and a column is shown for a creature only when at
 least one of its cases has a value (a worm has no leg-wave metrics, a legged
 creature no muscle-wave speed).  Every case is a row, the cases of parameter
 sweeps too, each naming its grid point; a metric that means nothing for a case
@@ -39,6 +39,8 @@ COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("metric.duty_factor_mean", "duty factor", "gait"),
     ("metric.stride_frequency_hz", "stride freq. [Hz]", "gait"),
     ("metric.walking_cycle_leg_fraction", "legs in walking cycle", "gait"),
+    ("metric.shape_tracking_error", "shape error", "shape"),
+    ("metric.muscle_saturation_fraction", "muscle saturation", "shape"),
     ("metric.t_fail_s", "t_fail [s]", "stability"),
     ("metric.posture_fault", "posture fault", "stability"),
     ("metric.max_penetration_m", "max penetration [m]", "stability"),
@@ -71,6 +73,11 @@ NOT_APPLICABLE: tuple[tuple[str, tuple[str, ...], str], ...] = (
     ("legged", ("metric.speed_bl_per_cycle",),
      "legged: the body has no muscle-wave cycle (the gait's frequency_hz is unused); the legs' cycle is "
      "the stride frequency"),
+    ("shape", ("metric.speed_m_per_s", "metric.speed_bl_per_s", "metric.speed_bl_per_cycle",
+               "metric.travel_angle_deg", "metric.slip_ratio"),
+     "shape_not_achieved: the body did not bend as commanded (shape error > 10 %, metrics/shape_tracking.py); "
+     "its locomotion is that of another shape and is not compared across bodies (the values stay in the results "
+     "store and --json)"),
 )
 
 
@@ -127,7 +134,7 @@ def not_applicable_reason(row, column: str) -> str | None:
     if isinstance(case_json, str):
         legged = bool(json.loads(case_json).get("creature", {}).get("legs_per_segment", 0))
     applies = {"passive": gait == "passive", "suspended": scenario == "hang", "driven": gait != "passive",
-               "legged": legged}
+               "legged": legged, "shape": row.get("metric.shape_not_achieved") == 1.0}
     for key, columns, _ in NOT_APPLICABLE:
         if column in columns and applies[key]:
             return key

@@ -34,7 +34,9 @@ CHECKS: tuple[Check, ...] = (
     Check("analytic.damping-oscillating-mode", "analytic", "per-step amplitude factor of an underdamped mode",
           "1 / sqrt(1 + c h) (eigenvalues of the linearized step)", A.damping_oscillating_mode),
     Check("analytic.slithering", "analytic", "snake forward speed over mu_t/mu_f [BL/cycle]",
-          "Hu et al. 2009 kinematic model", M.slithering),
+          "Hu et al. 2009 kinematic model at the commanded shape", M.slithering),
+    Check("analytic.slithering-measured-shape", "analytic", "snake forward speed over mu_t/mu_f [BL/cycle] (INFO)",
+          "Hu et al. 2009 kinematic model at the body's measured shape", M.slithering_measured_shape),
     # ---- Miller 1988, image by image
     Check("miller.image1-worm-book", "miller", "worm on the book: impact, contact, bending over, sliding off",
           "Miller 1988 Images 1a-1d", M.image_run("worm-book")),

@@ -377,6 +377,7 @@ def check_buildable(case, source: str) -> None:
 CHECKS = {"analytic.worm-eps-lambda": True, "analytic.hanging-bar": True, "analytic.cantilever": True,
           "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True, "analytic.damping-pure-mode": True,
           "analytic.damping-oscillating-mode": True, "analytic.slithering": False,
+          "analytic.slithering-measured-shape": False,
           "miller.image1-worm-book": False, "miller.image2-snake-coils": False, "miller.image3-sidewinder": False,
           "miller.image4-caterpillar-arch": False, "miller.image4-caterpillar-up": False,
           "miller.image4-caterpillar-down": False, "paper.fig10a-hang": False, "paper.fig10d-walk": False,

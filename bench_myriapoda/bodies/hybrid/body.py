@@ -631,6 +631,7 @@ def free_link_mass(case) -> float:
 
 # check name -> run by ``validate --quick`` (validation.registry): the legged paper checks' quick body
 CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True, "analytic.slithering": False,
+          "analytic.slithering-measured-shape": False,
           "miller.image1-worm-book": False, "miller.image2-snake-coils": False, "miller.image3-sidewinder": False,
           "miller.image4-caterpillar-arch": False, "miller.image4-caterpillar-up": False,
           "miller.image4-caterpillar-down": False, "paper.fig4-drop": True, "paper.fig10a-hang": True,

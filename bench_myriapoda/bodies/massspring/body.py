@@ -261,7 +261,8 @@ def check_buildable(case, source: str) -> None:
 
 # check name -> run by ``validate --quick`` (validation.registry): the lattice is the quick set's reference body
 CHECKS = {"analytic.worm-eps-lambda": True, "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True,
-          "analytic.stable-dt": True, "analytic.slithering": True, "miller.image1-worm-book": True,
+          "analytic.stable-dt": True, "analytic.slithering": True,
+          "analytic.slithering-measured-shape": True, "miller.image1-worm-book": True,
           "miller.image2-snake-coils": True, "miller.image3-sidewinder": True,
           "miller.image4-caterpillar-arch": True, "miller.image4-caterpillar-up": False,
           "miller.image4-caterpillar-down": False, "paper.fig10a-hang": False, "paper.fig10d-walk": False,

@@ -1,0 +1,175 @@
+"""Closed-loop tracking of a commanded bending wave: the body bends to the commanded shape under load.
+
+A bending gait commands a shape, ``gait.curvature_amplitude`` (peak curvature x body length L) and
+``gait.wavelength_bl``: the curvature at rest arc length s from the head is
+
+    kappa_cmd(s, t) = r(t) (A / L) sin(k s - omega t + phi),    r(t) the start ramp (0 -> 1).
+
+The open-loop controller turns it into LATERAL fibre strain with the body's calibrated gain g
+(``bodies/curvature_calibration.py``: strain per unit of curvature x L, measured on a weightless body
+on no ground).  Under lateral friction the body does not reach that shape: the muscles' bending
+moment must also carry the friction's, and a soft body (the lattice snake at mu_t / mu_f = 5) bent
+to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz`` ticks per second:
+
+1. **measure**: the heading psi_j of every segment frame seen from above (``Observation.seg_rot``,
+   the segment's x axis, left turn positive about +y) gives the curvature between neighbouring
+   segments, (psi_{j+1} - psi_j) / pitch, at the midpoint of their rest centres; it is interpolated
+   to the muscle segments' arc positions (``muscle_s``).  For the hybrid body the midpoints of the
+   boxes are exactly its links, where its muscles are.  Nothing here knows which body it drives;
+2. **compare**: both are in strain units, e_i = g L (kappa_cmd - kappa_meas)(s_i, t);
+3. **correct**: u_i = r A_s sin(theta_i) + a_i sin(theta_i) + b_i cos(theta_i) + K_p e_i, with
+   theta_i = k s_i - omega t + phi and A_s = A g the feed-forward (the open loop's own strain).
+   (a_i, b_i) integrate the error's in-phase and quadrature components at the wave frequency,
+   da_i/dt = K_i 2 e_i sin(theta_i), db_i/dt = K_i 2 e_i cos(theta_i), K_i = gain per cycle x f:
+   over a cycle they remove the error in the wave's amplitude and phase, segment by segment, which a
+   plain integral of a sinusoidal error cannot (it averages to zero).  K_p (``gait.shape_gain_p``) is 0
+   by default: on the lattice 2 helped (error 0.064 against 0.20 at mu_t / mu_f = 5), but on the fem body
+   every proportional gain tried (0.5, 2; unfiltered or low-passed) blew the run up, for a reason not yet
+   found (docs/explanation/shape-tracking.md);
+4. **muscle strength**: |u_i| is clipped at ``gait.max_muscle_strain``, the largest active fibre
+   strain the muscle can produce.  A clipped command stops its integral from growing further
+   (anti-windup) and is counted: ``muscle_saturation_fraction`` is the share of (segment, tick)
+   commands clipped over the steady window (after ``metrics.warmup_cycles``).  A body that needs a
+   stronger muscle to reach the shape says so there, and its ``shape_tracking_error`` (measured from
+   the recorded centres, ``metrics.shape_tracking``) flags ``shape_not_achieved``.
+
+The command is held between ticks (one actuation row, ``core.protocols.Actuation``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..core.protocols import LATERAL_GROUND_SIGN
+
+# wave table columns (controllers.muscle_waves; repeated here to keep this module free of that import)
+_AMP, _WAVENUMBER, _OMEGA, _PHASE = 0, 1, 2, 3
+_LATERAL = 1
+
+
+
+@njit(cache=True, error_model="numpy")
+def segment_headings(seg_rot, out):
+    """OVERWRITE out (n,) with the heading [rad] of each segment's x axis on the ground, right-handed about
+    +y (left turn positive), unwrapped along the body.  seg_rot: (n, 3, 3) segment -> world."""
+    prev = 0.0
+    for j in range(seg_rot.shape[0]):
+        psi = math.atan2(-seg_rot[j, 2, 0], seg_rot[j, 0, 0])
+        if j > 0:
+            while psi - prev > math.pi:
+                psi -= 2.0 * math.pi
+            while psi - prev < -math.pi:
+                psi += 2.0 * math.pi
+        out[j] = psi
+        prev = psi
+
+
+@njit(cache=True, error_model="numpy")
+def measured_curvature(seg_rot, s_centre, s_muscle, psi, out):
+    """OVERWRITE out (n_m,) with the ground curvature [1/m] at the muscle segments' rest arc positions
+    s_muscle (n_m,) [m], from the segment frames seg_rot (n, 3, 3) whose rest centres are s_centre (n,) [m]:
+    the turn between neighbouring frames over their rest distance, at the midpoint, interpolated linearly
+    (held beyond the first and last midpoint).  psi: (n,) scratch."""
+    segment_headings(seg_rot, psi)
+    n = s_centre.shape[0]
+    j = 0
+    for i in range(s_muscle.shape[0]):
+        s = s_muscle[i]
+        # midpoints m_j = (s_j + s_{j+1}) / 2, j = 0 .. n - 2; find m_j <= s < m_{j+1}
+        while j < n - 3 and 0.5 * (s_centre[j + 1] + s_centre[j + 2]) <= s:
+            j += 1
+        k0 = (psi[j + 1] - psi[j]) / (s_centre[j + 1] - s_centre[j])
+        if n < 3:
+            out[i] = k0
+            continue
+        k1 = (psi[j + 2] - psi[j + 1]) / (s_centre[j + 2] - s_centre[j + 1])
+        m0 = 0.5 * (s_centre[j] + s_centre[j + 1])
+        m1 = 0.5 * (s_centre[j + 1] + s_centre[j + 2])
+        w = min(1.0, max(0.0, (s - m0) / (m1 - m0)))
+        out[i] = (1.0 - w) * k0 + w * k1
+
+
+@njit(cache=True, error_model="numpy")
+def track_tick(kappa, s_muscle, waves, ramp_s, t, dt_tick, strain_per_kappa, kp, ki, umax, a, b, lateral, counting,
+               counts):
+    """One control tick of the tracker (module docstring, steps 2-4).
+
+    kappa: (n_m,) measured ground curvature [1/m]; s_muscle: (n_m,) [m]; waves: (3, 5) wave table whose
+    LATERAL row is the feed-forward; strain_per_kappa = g L [strain m] (sign included: the strain of a
+    unit ground curvature); a, b: (n_m,) integral state [strain], updated; lateral: (n_m,) OVERWRITTEN with
+    the clipped LATERAL strain; counts: (3,) += (commands, clipped commands, peak |u| so far) when counting.
+    """
+    r = 1.0
+    if ramp_s > 0.0 and t < ramp_s:
+        r = max(t, 0.0) / ramp_s
+    amp = waves[_LATERAL, _AMP]
+    k = waves[_LATERAL, _WAVENUMBER]
+    om = waves[_LATERAL, _OMEGA]
+    ph = waves[_LATERAL, _PHASE]
+    for i in range(s_muscle.shape[0]):
+        th = k * s_muscle[i] - om * t + ph
+        sn, cs = math.sin(th), math.cos(th)
+        ref = r * amp * sn
+        e = ref - strain_per_kappa * kappa[i]
+        u = ref + a[i] * sn + b[i] * cs + kp * e
+        clipped = abs(u) > umax
+        if not clipped or e * u < 0.0:  # anti-windup: a clipped command's integral only unwinds
+            a[i] += ki * dt_tick * 2.0 * e * sn
+            b[i] += ki * dt_tick * 2.0 * e * cs
+        if clipped:
+            u = umax if u > 0.0 else -umax
+        lateral[i] = u
+        if counting:
+            counts[0] += 1.0
+            if clipped:
+                counts[1] += 1.0
+            counts[2] = max(counts[2], abs(u))
+
+
+class ShapeTracker:
+    """The closed loop of a commanded bending wave (module docstring) for one run."""
+
+    def __init__(self, case):
+        g = case.gait
+        self.kp = float(g.shape_gain_p)
+        self.ki = float(g.shape_gain_i_per_cycle) * float(g.frequency_hz)
+        self.umax = float(g.max_muscle_strain)
+        self.dt_tick = 1.0 / float(g.shape_control_rate_hz)
+        self.t_steady = float(case.metrics.warmup_cycles) * g.period_s
+        self.body_length = float(case.creature.body_length_m)
+        self.ready = False
+
+    def reset(self, body_info, strain_per_curvature: float) -> None:
+        """Prepare for a body: its muscle arc positions, pitch and the calibrated gain [strain per curvature x L]."""
+        self.s_muscle = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
+        self.pitch = float(body_info["segment_pitch_m"])
+        self.strain_per_kappa = LATERAL_GROUND_SIGN * strain_per_curvature * self.body_length
+        n = self.s_muscle.shape[0]
+        self.a, self.b = np.zeros(n), np.zeros(n)
+        self.kappa = np.zeros(n)
+        self.lateral = np.zeros(n)
+        self.counts = np.zeros(3)
+        self.s_centre = None
+        self.ready = True
+
+    def command(self, obs, t: float, waves, ramp_s: float, s_seg, row) -> None:
+        """Overwrite the LATERAL column of ``row`` (n_m, 3) with the tracked strain for the tick from t [s]."""
+        if self.s_centre is None or self.s_centre.shape[0] != obs.seg_rot.shape[0]:
+            # rest centres: the head segment's half length, then one pitch apart (the hybrid's boxes too)
+            n = obs.seg_rot.shape[0]
+            self.s_centre = float(obs.seg_half[0, 0]) + self.pitch * np.arange(n, dtype=np.float64)
+            self.psi = np.zeros(n)
+        measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
+        track_tick(self.kappa, self.s_muscle, waves, ramp_s, t, self.dt_tick, self.strain_per_kappa, self.kp,
+                   self.ki, self.umax, self.a, self.b, self.lateral, t >= self.t_steady, self.counts)
+        row[:, _LATERAL] = self.lateral
+
+    def metrics(self) -> dict[str, float]:
+        """muscle_saturation_fraction [-]: share of the steady window's (segment, tick) LATERAL commands
+        clipped at max_muscle_strain; muscle_strain_peak [-]: the largest |LATERAL strain| commanded there."""
+        n, clipped, peak = self.counts
+        if n == 0:
+            return {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")}
+        return {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}

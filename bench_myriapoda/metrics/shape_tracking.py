@@ -1,0 +1,107 @@
+"""How closely a body followed the commanded bending wave: ``shape_tracking_error`` and ``shape_not_achieved``.
+
+A bending gait with ``gait.curvature_amplitude`` A > 0 commands the ground curvature profile
+
+    kappa_cmd(s, t) = sign r(t) (A / L) sin(k s - omega t + phi)
+
+(``controllers.muscle_waves.wave_table``'s LATERAL wave; ``core.protocols.LATERAL_GROUND_SIGN``, L the
+creature's body length, s the rest arc length from the head).  Over the steady window
+(``locomotion.measurement_window``) the measured profile is the signed discrete curvature of the
+recorded centre line on the ground (``body_shape.ground_curvature``), taken through points one
+segment pitch apart (a body whose centres alternate between two kinds, the hybrid's boxes and links,
+is read through every other centre: its bends sit in the links, and alternating centres make the
+three-point curvature uneven).  Then
+
+* ``shape_tracking_error`` [-] = RMS over the window's samples and the interior points of
+  (kappa_meas - kappa_cmd) x L / A: 0 for the commanded shape; 1 / sqrt(2) = 0.71 for a straight
+  body; f / sqrt(2) for a wave of the right phase short of a fraction f of its amplitude; sqrt(2)
+  sin(delta / 2) for a pure phase lag delta.  The threshold 0.10 is 14 % of the amplitude missing or
+  8 degrees of lag: the lag the issue-11 bodies showed open loop at low load stays inside it, the
+  lattice's 80 % loss at mu_t / mu_f = 5 (error 0.63) is far outside;
+* ``shape_not_achieved`` = 1 when the error exceeds ``SHAPE_ERROR_THRESHOLD`` (0.10): the speed and
+  every other locomotion figure of the run are then those of another shape, not comparable with a
+  body that bent as commanded.  ``shape_flag_reason`` says why, for the run's message.
+
+The achieved amplitude and wavelength are ``body_shape``'s ``curvature_amplitude`` and
+``body_wavelength_bl``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.protocols import LATERAL_GROUND_SIGN
+from ..core.series import Series
+from .body_shape import ground_curvature
+
+SHAPE_ERROR_THRESHOLD = 0.10
+BENDING_GAITS = ("lateral-undulation", "sidewinding")
+
+
+def commands_a_shape(case) -> bool:
+    """True for a bending gait that commands its curvature (the gait's ``curvature_amplitude`` > 0)."""
+    g = case.gait
+    return g.name in BENDING_GAITS and g.curvature_amplitude > 0.0 and not case.scenario.passive
+
+
+def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(T, n) commanded ground curvature [1/m] at rest arc lengths s (n,) [m] and times t (T,) [s]."""
+    g = case.gait
+    L = float(case.creature.body_length_m)
+    direction = 1.0 if g.direction == "head-to-tail" else -1.0
+    k = direction * 2.0 * math.pi / (g.wavelength_bl * L)
+    omega = 2.0 * math.pi * g.frequency_hz
+    ramp = np.ones_like(t) if g.ramp_s <= 0 else np.clip(t / g.ramp_s, 0.0, 1.0)
+    theta = k * s[None, :] - omega * t[:, None] + math.radians(g.phase_deg)
+    return LATERAL_GROUND_SIGN * ramp[:, None] * (g.curvature_amplitude / L) * np.sin(theta)
+
+
+def pitch_stride(centers0: np.ndarray, pitch_m: float) -> int:
+    """Every how many recorded centres one segment pitch is: 1, or 2 for a body listing two centres per pitch."""
+    chord = np.linalg.norm(np.diff(centers0, axis=0), axis=1)
+    med = float(np.median(chord)) if len(chord) else 0.0
+    return max(1, int(round(pitch_m / med))) if med > 0 else 1
+
+
+def shape_tracking_error(series: Series, case, i0: int, i1: int) -> float:
+    """RMS (measured - commanded) ground curvature x L / A over samples [i0, i1] (module docstring); NaN when
+    the run has too few samples or centres."""
+    centers = series.segment_centers
+    if centers is None or i1 - i0 < 2:
+        return float("nan")
+    stride = pitch_stride(centers[0], case.creature.segment_length_m)
+    pts = centers[:, ::stride]
+    if pts.shape[1] < 4:
+        return float("nan")
+    # rest arc length of each point from the head: the head end face to the first point, then the chords at t = 0
+    first = float(np.linalg.norm(pts[0, 0] - series.head[0]))
+    s = first + np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pts[0], axis=0), axis=1))])
+    t = series.t[i0:i1 + 1]
+    kappa, _ = ground_curvature(pts[i0:i1 + 1])
+    diff = kappa - commanded_curvature(case, s[1:-1], t)
+    L = float(case.creature.body_length_m)
+    return float(np.sqrt(np.mean(diff ** 2)) * L / case.gait.curvature_amplitude)
+
+
+def shape_flag_reason(metrics: dict[str, float], case) -> str:
+    """The run message of a ``shape_not_achieved`` run: the error, the achieved shape, the muscles' saturation."""
+    parts = [f"shape_not_achieved: shape_tracking_error {metrics['shape_tracking_error']:.3f} > "
+             f"{SHAPE_ERROR_THRESHOLD:g}",
+             f"curvature_amplitude {metrics.get('curvature_amplitude', float('nan')):.3g} of "
+             f"{case.gait.curvature_amplitude:g} commanded"]
+    sat = metrics.get("muscle_saturation_fraction")
+    if sat is not None and math.isfinite(sat):
+        parts.append(f"muscle_saturation_fraction {sat:.3f} at max_muscle_strain {case.gait.max_muscle_strain:g}")
+    elif case.gait.shape_control == "open_loop":
+        parts.append("open-loop shape control (gait.shape_control)")
+    return "; ".join(parts) + ": locomotion metrics are those of another shape, not comparable across bodies"
+
+
+def shape_tracking_metrics(series: Series, case, i0: int, i1: int) -> dict[str, float]:
+    """shape_tracking_error and shape_not_achieved (1.0 / 0.0) of a gait that commands its shape; {} otherwise."""
+    if not commands_a_shape(case):
+        return {}
+    err = shape_tracking_error(series, case, i0, i1)
+    return {"shape_tracking_error": err,
+            "shape_not_achieved": float(not (math.isfinite(err) and err <= SHAPE_ERROR_THRESHOLD))}
