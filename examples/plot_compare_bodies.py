@@ -16,7 +16,9 @@ import matplotlib.pyplot as plt
 import bench_myriapoda as bm
 
 SCALE = float(os.environ.get("BENCH_MYRIAPODA_EXAMPLE_SCALE", "1"))
-DURATION = max(4.0, 8.0 * SCALE)          # simulated seconds per run (the worm's wave has a 2 s period)
+# simulated seconds per run: the worm's wave has a 2 s period, the ramp and metrics.warmup_cycles take the first
+# 4 s, and a speed needs metrics.min_steady_cycles = 2 steady cycles after them (else it is reported too short)
+DURATION = max(8.0, 10.0 * SCALE)
 store = Path(tempfile.mkdtemp()) / "bodies.sqlite"
 
 fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
