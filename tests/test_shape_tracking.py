@@ -180,7 +180,9 @@ def test_the_comparison_table_says_a_run_did_not_reach_its_shape():
            "metric.shape_not_achieved": 1.0}
     ok = dict(row, body="fem", **{"metric.speed_bl_per_cycle": 0.39, "metric.shape_tracking_error": 0.05,
                                   "metric.shape_not_achieved": 0.0})
-    table = comparison_tables(pd.DataFrame([row, ok]))["snake"]
+    # the creature's tables (title, table): the one with the speeds is its locomotion table
+    table = next(t for _, t in comparison_tables(pd.DataFrame([row, ok]))["snake"]
+                 if t is not None and "speed [BL/cycle]" in t.table.columns)
     speed = table.table.columns.get_loc("speed [BL/cycle]")
     notes = dict(zip(table.table["body"], table.notes.iloc[:, speed]))
     assert notes == {"massspring": "shape", "fem": ""} and "shape_not_achieved" in table.footnotes["shape"]

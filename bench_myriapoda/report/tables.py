@@ -51,7 +51,7 @@ COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("steps_per_s", "steps/s", "throughput"),
     ("realtime_factor", "x realtime", "throughput"),
 )
-TABLE_GROUPS = (("", ("stability", "contact", "throughput")), ("locomotion and gait", ("speed", "gait")))
+TABLE_GROUPS = (("", ("stability", "contact", "throughput")), ("locomotion and gait", ("speed", "shape", "gait")))
 SWEEP_GROUPS = ("stability", "throughput")  # a sweep's rows are short runs: their speeds are not shown
 CASE_COLUMNS = ("body", "gait", "scenario", "seed")
 SWEPT_COLUMN = "swept values"
