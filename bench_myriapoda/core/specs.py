@@ -31,18 +31,18 @@ class Footprint:
 class BodySpec:
     """A body model backend.
 
-    ``config_cls``     frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
-    ``factory``        ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case.
-    ``capabilities``   what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
-    ``default_dt``     ``default_dt(body_config) -> float`` time step [s] when none is given.
-    ``footprint``      ``footprint(case) -> Footprint``: the memory estimate (``core.feasibility``).
-    ``check_buildable`` ``check_buildable(case, source)``: raises ``InputError`` naming ``source`` and
-                       the key for a case the factory cannot build (cheap: nothing compiled).
-    ``default_params`` the ``[bodies.<name>]`` keys of a creature whose file has no such table, or
-                       None: every creature must name its own (the backend's keys are calibrated
-                       per creature, so a missing table is refused).
-    ``checks``         validation check name -> True when ``validate --quick`` runs it on this body
-                       (``validation.registry``; a check runs on the bodies that declare it).
+    - ``config_cls``: frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
+    - ``factory``: ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case.
+    - ``capabilities``: what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
+    - ``default_dt``: ``default_dt(body_config) -> float``, the time step [s] when none is given.
+    - ``footprint``: ``footprint(case) -> Footprint``, the memory estimate (``core.feasibility``).
+    - ``check_buildable``: ``check_buildable(case, source)`` raises ``InputError`` naming ``source`` and
+      the key for a case the factory cannot build (cheap: nothing compiled).
+    - ``default_params``: the ``[bodies.<name>]`` keys of a creature whose file has no such table, or
+      None: every creature must name its own (the backend's keys are calibrated per creature, so a
+      missing table is refused).
+    - ``checks``: validation check name -> True when ``validate --quick`` runs it on this body
+      (``validation.registry``; a check runs on the bodies that declare it).
     """
 
     name: str
