@@ -273,3 +273,59 @@ def test_shape_tracking_is_shown_when_measured_and_marks_the_speed_comparison():
     short = row.copy()
     short["labels_json"] = json.dumps({"too_short": "too short: 1.00 steady cycles"})
     assert locomotion_group(short).value is None and "too short: 1.00" in locomotion_group(short).reason
+
+
+def test_fidelity_ranks_rows_by_the_share_of_their_tolerance_not_by_an_error_against_a_bound():
+    """A row whose measured value is itself an error ("<= 1e-10") has no deviation from its reference; the row
+    closest to its own tolerance is named, with the share of it used."""
+    from bench_myriapoda.report.scorecard import fidelity_group, tolerance_used
+    from bench_myriapoda.report.validation import ValidationData
+
+    assert tolerance_used(8.9e-16, 0.458, "<= 1e-10")[:2] == (pytest.approx(8.9e-6), None)
+    assert tolerance_used(0.956, 1.0, "5 % relative")[:2] == (pytest.approx(0.88), pytest.approx(0.044))
+    assert tolerance_used(0.694, 0.5, ">= 0.5")[0] == pytest.approx(0.5 / 0.694)
+    assert tolerance_used("4/4 behaviours", "all 4", "every described behaviour")[0] is None
+    rows = pd.DataFrame([
+        {"check": "analytic.damping-pure-mode", "body": "fem", "measured": 8.9e-16, "reference": 0.458,
+         "tolerance": "<= 1e-10", "verdict": "PASS"},
+        {"check": "analytic.cantilever", "body": "fem", "measured": 0.956, "reference": 1.0,
+         "tolerance": "5 % relative", "verdict": "PASS"},
+        {"check": "analytic.hanging-bar", "body": "fem", "measured": 0.99, "reference": 1.0,
+         "tolerance": "5 % relative", "verdict": "PASS"}])
+    g = fidelity_group(ValidationData(rows, "test rows"), "worm", "fem")
+    assert g.details["worst_check"] == "analytic.cantilever" and g.value == 0.0
+    assert g.details["worst_tolerance_used"] == pytest.approx(0.88)
+    assert "closest to its tolerance: analytic.cantilever (4.4 % off), 88 % of its tolerance" in g.text
+
+
+def test_the_snakes_speed_is_judged_at_the_commanded_wave_and_a_missed_shape_is_named_in_the_recommendation():
+    """Issue 27: a body that bent less than commanded is compared with the speed of the commanded wave; the
+    reference at its own measured wave is a detail, and the recommendation warns that the motions differ."""
+    from bench_myriapoda.reference.slithering import steady_slithering
+    from bench_myriapoda.report.scorecard import Group, Row, locomotion_group, recommend
+
+    fr = {"model": "coulomb", "mu_forward": 0.05, "mu_backward": 0.075, "mu_transverse": 0.25}
+    case = {"gait": {"curvature_amplitude": 7.0, "wavelength_bl": 1.0}, "friction": fr}
+    row = pd.Series({"creature": "snake", "body": "massspring", "gait": "lateral-undulation", "scenario": "flat",
+                     "status": "ok", "case_json": json.dumps(case), "labels_json": "{}",
+                     "metric.speed_bl_per_cycle": 0.01, "metric.curvature_amplitude": 1.4,
+                     "metric.body_wavelength_bl": 1.0, "metric.shape_tracking_error": 0.6,
+                     "metric.shape_not_achieved": 1.0})
+    at = lambda curv: steady_slithering(curv, 1.0, 0.05, 0.075, 0.25, n_points=100, n_time=48).speed_bl_per_cycle  # noqa: E731
+    g = locomotion_group(row)
+    assert g.details["reference_bl_per_cycle"] == pytest.approx(at(7.0))
+    assert g.details["reference_at_measured_shape_bl_per_cycle"] == pytest.approx(at(1.4))
+    assert "commanded wave" in g.details["reference"] and g.value == pytest.approx(abs(0.01 - at(7.0)) / at(7.0))
+    raw = row.copy()  # a raw-strain gait commands no shape: its own measured wave is the reference
+    raw["case_json"] = json.dumps({"gait": {"curvature_amplitude": 0.0, "wavelength_bl": 1.0}, "friction": fr})
+    assert locomotion_group(raw).details["reference_bl_per_cycle"] == pytest.approx(at(1.4))
+
+    def pair(body, err, cost, shape_err):
+        none = Group(None, "-")
+        shape = Group(shape_err, "", None, {"shape_not_achieved": shape_err > 0.1})
+        return Row("snake", body, none, none, Group(err, ""), Group(cost, ""), shape, err, "speed error")
+
+    line = recommend("snake", [pair("fem", 0.05, 1.0, 0.04), pair("massspring", 0.9, 0.1, 0.6)])
+    assert "Caution: not at the commanded shape (massspring 0.6 shape_tracking_error" in line
+    assert "fem 0.04" not in line
+    assert "Caution" not in recommend("snake", [pair("fem", 0.05, 1.0, 0.04)])
