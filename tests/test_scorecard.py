@@ -120,6 +120,9 @@ def test_scorecard_json_gives_each_pair_four_groups_each_a_number_or_a_reason(qu
     for body in ("massspring", "fem"):
         st = worm[body]["stability"]
         assert st["value"] > 0 and st["details"]["margin"] >= 1.0, st
+    # every headline pair of the quick matrix has a dt sweep: every stability cell is a number
+    assert all(isinstance(p["stability"]["value"], float) for p in doc["pairs"]), [
+        (p["creature"], p["body"], p["stability"]) for p in doc["pairs"]]
     # where a cell has no data, the reason names the command that fills it
     assert all("bench-myriapoda validate" in p["fidelity"]["reason"] for p in doc["pairs"]
                if p["fidelity"]["value"] is None and "no validate results" in p["fidelity"]["reason"])

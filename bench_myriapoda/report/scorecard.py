@@ -168,7 +168,9 @@ def stability_group(df: pd.DataFrame, grid_keys, creature: str, body: str, defau
         best = max(stable)
         above = [d for d in unstable if d > best]
         margin = best / default_dt if default_dt else None
-        text = f"{best:.3g} s" + (f" ({margin:.3g}x default)" if margin is not None else "")
+        # no blow-up above the largest swept stable dt: the true limit lies higher, the cell says "at least"
+        at_least = "" if above else ">= "
+        text = f"{at_least}{best:.3g} s" + (f" ({at_least}{margin:.3g}x default)" if margin is not None else "")
         return Group(best, text, None, {"source": f"matrix dt sweep{note}", "largest_stable_dt_s": best,
                                          "smallest_unstable_dt_s": min(above) if above else None,
                                          "default_dt_s": default_dt, "margin": margin,
