@@ -19,8 +19,9 @@ recorded series:
 ``steady_cycles``          [strides] strides in the window (window length x stride frequency)
 
 With fewer than ``metrics.min_steady_cycles`` strides the four measures are NaN and
-``walk_too_short_reason`` says why.  ``foot_slip_mean_m`` (``metrics.gait``) is the fifth
-emergent measure of a walk.
+``walk_too_short_reason`` says why.  ``foot_slip_mean_m`` (``metrics.gait``) is not among them: with
+the paper's kinematic legs a planted tip is held at its touchdown point, so it is 0 on every body (it
+stays a metric, for a controller or body whose feet can slide).
 """
 from __future__ import annotations
 

@@ -354,7 +354,9 @@ def locomotion_group(row) -> Group:
         return Group(None, "does not travel", "a passive body (dropped or hanging): no locomotion to compare")
     if _legged(row):
         cmd = commanded_metric("speed_m_per_s", True)
-        emergent = {k: _num(row.get(f"metric.{k}")) for k in (*EMERGENT_WALK_METRICS, "foot_slip_mean_m")}
+        # foot_slip_mean_m is left out: the paper's legs are kinematic, a planted tip is held at its touchdown
+        # point, so it reads 0 on every body and tells none apart
+        emergent = {k: _num(row.get(f"metric.{k}")) for k in EMERGENT_WALK_METRICS}
         shown = ", ".join(f"{k} {v:.3g}" for k, v in emergent.items() if v is not None)
         why = labels.get("too_short") or ""
         return Group(None, "speed commanded" + (f"; {shown}" if shown else ""),
