@@ -6,18 +6,12 @@ L f^2 / (g mu_f) = 0.1), mu_b = 1.5 mu_f, Coulomb friction, 3 warm-up cycles and
 (43 s).  The reference is ``reference.slithering.steady_slithering`` at the COMMANDED shape and the
 belly's width (0.05 m = 0.02 BL; tests/test_slithering_bodies.py says why the width).
 
-Open loop (still the default), the lattice bent to 1.42 of 7 at ratio 5 and did not move (issue 27's
-table).  Closed loop, measured on this 2-core machine under load (reference at ratio 1 / 2 / 5 / 10:
-0.009 / 0.161 / 0.384 / 0.523 BL/cycle):
-  lattice, gait.shape_gain_p = 2: ratio 1 -0.012, error 0.049; ratio 2 0.166, error 0.068; ratio 5 0.390,
-  error 0.064; ratio 10 0.516, error 0.075 (43 s; ratios 2 and 10 at 100 Hz ticks, 1 and 5 at 100 and 250 Hz);
-  lattice without the proportional term: ratio 5 0.333, error 0.20; ratio 1 diverged (error 4.6, saturated);
-  fem, gait.shape_gain_p = 0, ratio 5: 0.378, error 0.039 (43 s; 0.387, error 0.072 in a 22 s run with 2
-  warm-up cycles); hybrid likewise, 22 s: 0.388, error 0.065; any proportional gain tried blew the fem snake up.
-These tests set each body's working gain (``CLOSED``).
-
-The default run holds ratio 1 and 5 on the lattice and ratio 5 on the fem body; the whole grid
-(three bodies x six ratios) runs with BENCH_LONG_TESTS=1.
+Open loop (``gait.shape_control = "open_loop"``), the lattice bent to 1.42 of 7 at ratio 5 and did not
+move (issue 27's table).  The closed loop is the default, at each body's own proportional gain
+(``BodySpec.shape_gain_p``: 2 on the lattice, 0.5 on the fem and hybrid bodies; why in
+docs/explanation/shape-tracking.md).  The default run holds ratio 1 and 5 on the lattice (5 cycles) and
+ratio 5 on the fem body (6 cycles); the whole grid (three bodies x six ratios, 6 cycles each, as
+scenarios/matrix/slithering.toml) runs with BENCH_LONG_TESTS=1.
 """
 from __future__ import annotations
 
@@ -52,7 +46,7 @@ SETTINGS = (f"gait.curvature_amplitude={COMMAND}", "gait.wavelength_bl=1", "gait
             "metrics.warmup_cycles=3")
 DURATION_S = 43.0  # 6 periods of 7.14 s: 3 warm-up (the ramp and the integral's settling), 3 measured
 SUBSET_S = 35.7  # the default run's subset: 5 periods, 3 warm-up and 2 measured
-GRID_S = 78.5  # issue 27's set-up for the whole grid: 11 periods, 3 warm-up and 8 measured
+GRID_S = DURATION_S  # the whole grid: as scenarios/matrix/slithering.toml
 SPEED_REL_TOL = 0.15
 ISOTROPIC_MAX_BL_PER_CYCLE = 0.03
 RATIOS = (1.0, 1.5, 2.0, 3.0, 5.0, 10.0)
@@ -209,7 +203,7 @@ def test_the_closed_loop_key_makes_a_closed_loop_controller_and_the_open_loop_is
     assert worm.controller.open_loop and worm.controller.tracker is None
 
 
-@pytest.mark.parametrize("body, gain", [("massspring", 2.0), ("fem", 0.0), ("hybrid", 0.0)])
+@pytest.mark.parametrize("body, gain", [("massspring", 2.0), ("fem", 0.5), ("hybrid", 0.5)])
 def test_the_closed_loop_is_the_default_at_each_bodys_own_gain(body, gain):
     from bench_myriapoda.core import registry
 

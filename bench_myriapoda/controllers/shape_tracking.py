@@ -22,10 +22,16 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
    (a_i, b_i) integrate the error's in-phase and quadrature components at the wave frequency,
    da_i/dt = K_i 2 e_i sin(theta_i), db_i/dt = K_i 2 e_i cos(theta_i), K_i = gain per cycle x f:
    over a cycle they remove the error in the wave's amplitude and phase, segment by segment, which a
-   plain integral of a sinusoidal error cannot (it averages to zero).  K_p (``gait.shape_gain_p``) is 0
-   by default: on the lattice 2 helped (error 0.064 against 0.20 at mu_t / mu_f = 5), but on the fem body
-   every proportional gain tried (0.5, 2; unfiltered or low-passed) blew the run up, for a reason not yet
-   found (docs/explanation/shape-tracking.md);
+   plain integral of a sinusoidal error cannot (it averages to zero).  The error e_i is first smoothed
+   along the body (``smooth_along_body``, ``SMOOTHING_PASSES`` binomial passes): the tracker corrects
+   the shape of a few waves per body; finer content is the body's own.  Without it a proportional term
+   fed the fem body's element-scale bending waves (about 5 segments long, ~40 Hz, lightly damped by
+   eq. 13's damping): the command held over a tick lags them, so the term pushed them in phase with
+   their velocity, and the fem snake blew up within 0.4 s at K_p = 2.  K_p (``gait.shape_gain_p``;
+   -1, the default, takes the body's own ``BodySpec.shape_gain_p``) is 2 on the lattice and 0.5 on the
+   fem and hybrid bodies: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
+   until it rolled onto its back, where the muscles' sign on the ground is reversed and the loop locks
+   at full strength (docs/explanation/shape-tracking.md);
 4. **muscle strength**: |u_i| is clipped at ``gait.max_muscle_strain``, the largest active fibre
    strain the muscle can produce.  A clipped command stops its integral from growing further
    (anti-windup) and is counted: ``muscle_saturation_fraction`` is the share of (segment, tick)

@@ -647,4 +647,7 @@ BACKEND = BodySpec(
                 "coupling; muscles as active strain of the links",
     config_cls=HybridConfig, factory=make_hybrid, default_dt=default_dt,
     capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
-    footprint=footprint, check_buildable=check_buildable, checks=CHECKS)
+    footprint=footprint, check_buildable=check_buildable, checks=CHECKS,
+    # the proportional shape gain its lightly damped element-scale bending waves tolerate once the error is
+    # smoothed along the body (controllers/shape_tracking.py; 2 curled the snake onto its back)
+    shape_gain_p=0.5)
