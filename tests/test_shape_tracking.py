@@ -128,7 +128,8 @@ def test_a_command_beyond_the_muscle_strength_is_clipped_counted_and_does_not_wi
     a, b, lateral, counts = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3)
     straight = np.zeros(n)  # the body does not bend at all
     for tick in range(200):
-        track_tick(straight, s, waves, 0.0, 0.01 * tick, 0.01, -0.1, 2.0, 5.0, 0.02, a, b, lateral, True, counts)
+        track_tick(straight, s, waves, 0.0, 0.01 * tick, 0.01, -0.1, 2.0, 5.0, 0.02, a, b, lateral, True, counts,
+                   np.zeros(n), np.zeros(n), 0)
         assert np.all(np.abs(lateral) <= 0.02)
     assert counts[0] == 200 * n and counts[1] > 0.9 * counts[0] and counts[2] == 0.02
     # the integral stopped growing once clipped: far below what 2 s of this error would integrate to
@@ -223,7 +224,7 @@ def test_smoothing_along_the_body_keeps_the_commanded_wave_and_removes_element_s
     n = 50
     i = np.arange(n)
     for period, low, high in ((50, 0.95, 1.0), (25, 0.85, 0.9), (6, 0.05, 0.15), (4, 0.0, 0.01), (2, 0.0, 1e-9)):
-        x = np.sin(2 * math.pi * i / period)
+        x = np.cos(2 * math.pi * i / period)
         y = x.copy()
         smooth_along_body(y, SMOOTHING_PASSES, np.zeros(n))
         inner = slice(12, n - 12)  # away from the mirrored ends

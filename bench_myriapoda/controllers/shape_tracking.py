@@ -59,7 +59,6 @@ _LATERAL = 1
 SMOOTHING_PASSES = 8
 
 
-
 @njit(cache=True, error_model="numpy")
 def segment_headings(seg_rot, out):
     """OVERWRITE out (n,) with the heading [rad] of each segment's x axis on the ground, right-handed about
@@ -104,8 +103,8 @@ def measured_curvature(seg_rot, s_centre, s_muscle, psi, out):
 @njit(cache=True, error_model="numpy")
 def smooth_along_body(x, passes, tmp):
     """Apply ``passes`` times the binomial filter (1, 2, 1) / 4 along the body to x (n,), in place; the end
-    points are mirrored (x[-1] = x[1]), so an alternating profile is removed there too.  tmp: (n,) scratch.  Its response
-    to a profile of period P segments is cos(pi / P)^(2 passes): 0 at P = 2."""
+    points are mirrored (x[-1] = x[1]), so an alternating profile is removed there too.  tmp: (n,) scratch.
+    Its response to a profile of period P segments is cos(pi / P)^(2 passes): 0 at P = 2."""
     n = x.shape[0]
     if n < 3:
         return
@@ -128,7 +127,7 @@ def track_tick(kappa, s_muscle, waves, ramp_s, t, dt_tick, strain_per_kappa, kp,
     unit ground curvature); a, b: (n_m,) integral state [strain], updated; lateral: (n_m,) OVERWRITTEN with
     the clipped LATERAL strain; counts: (3,) += (commands, clipped commands, peak |u| so far) when counting;
     err, tmp: (n_m,) scratch; passes: binomial smoothing passes of the error along the body before the
-    proportional term (``smooth_along_body``; module docstring, step 3).
+    proportional and integral terms (``smooth_along_body``; module docstring, step 3).
     """
     r = 1.0
     if ramp_s > 0.0 and t < ramp_s:
