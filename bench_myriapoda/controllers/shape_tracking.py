@@ -28,8 +28,8 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
    fed the fem body's element-scale bending waves (about 5 segments long, ~40 Hz, lightly damped by
    eq. 13's damping): the command held over a tick lags them, so the term pushed them in phase with
    their velocity, and the fem snake blew up within 0.4 s at K_p = 2.  K_p (``gait.shape_gain_p``;
-   -1, the default, takes the body's own ``BodySpec.shape_gain_p``) is 2 on the lattice and 0.5 on the
-   fem and hybrid bodies: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
+   -1, the default, takes the body's own ``BodySpec.shape_gain_p``) is 2 on the lattice, 0.5 on the
+   fem body and 0.25 on the hybrid: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
    until it rolled onto its back, where the muscles' sign on the ground is reversed and the loop locks
    at full strength (docs/explanation/shape-tracking.md);
 4. **muscle strength**: |u_i| is clipped at ``gait.max_muscle_strain``, the largest active fibre

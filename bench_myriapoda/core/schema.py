@@ -139,7 +139,7 @@ class GaitConfig:
     shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
                                   "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
-                                  "2 on massspring, 0.5 on fem and hybrid)")
+                                  "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
     shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
                                         doc="closed_loop: integral gain of the wave's amplitude and phase error per "
                                             "gait cycle [-] (rate = this x frequency_hz)")
