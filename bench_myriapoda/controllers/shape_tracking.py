@@ -22,10 +22,16 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
    (a_i, b_i) integrate the error's in-phase and quadrature components at the wave frequency,
    da_i/dt = K_i 2 e_i sin(theta_i), db_i/dt = K_i 2 e_i cos(theta_i), K_i = gain per cycle x f:
    over a cycle they remove the error in the wave's amplitude and phase, segment by segment, which a
-   plain integral of a sinusoidal error cannot (it averages to zero).  K_p (``gait.shape_gain_p``) is 0
-   by default: on the lattice 2 helped (error 0.064 against 0.20 at mu_t / mu_f = 5), but on the fem body
-   every proportional gain tried (0.5, 2; unfiltered or low-passed) blew the run up, for a reason not yet
-   found (docs/explanation/shape-tracking.md);
+   plain integral of a sinusoidal error cannot (it averages to zero).  The error e_i is first smoothed
+   along the body (``smooth_along_body``, ``SMOOTHING_PASSES`` binomial passes): the tracker corrects
+   the shape of a few waves per body; finer content is the body's own.  Without it a proportional term
+   fed the fem body's element-scale bending waves (about 5 segments long, ~40 Hz, lightly damped by
+   eq. 13's damping): the command held over a tick lags them, so the term pushed them in phase with
+   their velocity, and the fem snake blew up within 0.4 s at K_p = 2.  K_p (``gait.shape_gain_p``;
+   -1, the default, takes the body's own ``BodySpec.shape_gain_p``) is 2 on the lattice, 0.5 on the
+   fem body and 0.25 on the hybrid: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
+   until it rolled onto its back, where the muscles' sign on the ground is reversed and the loop locks
+   at full strength (docs/explanation/shape-tracking.md);
 4. **muscle strength**: |u_i| is clipped at ``gait.max_muscle_strain``, the largest active fibre
    strain the muscle can produce.  A clipped command stops its integral from growing further
    (anti-windup) and is counted: ``muscle_saturation_fraction`` is the share of (segment, tick)
@@ -47,7 +53,10 @@ from ..core.protocols import LATERAL_GROUND_SIGN
 # wave table columns (controllers.muscle_waves; repeated here to keep this module free of that import)
 _AMP, _WAVENUMBER, _OMEGA, _PHASE = 0, 1, 2, 3
 _LATERAL = 1
-
+# Binomial passes of the error along the body before it is used (module docstring, step 3): the response
+# cos(pi / P)^16 to a profile of period P segments passes the commanded wave (P = 50 or 25 on the snake:
+# 0.97, 0.88) and stops the element-scale bending waves (P = 6: 0.10; P <= 4: < 0.004)
+SMOOTHING_PASSES = 8
 
 
 @njit(cache=True, error_model="numpy")
@@ -92,14 +101,33 @@ def measured_curvature(seg_rot, s_centre, s_muscle, psi, out):
 
 
 @njit(cache=True, error_model="numpy")
+def smooth_along_body(x, passes, tmp):
+    """Apply ``passes`` times the binomial filter (1, 2, 1) / 4 along the body to x (n,), in place; the end
+    points are mirrored (x[-1] = x[1]), so an alternating profile is removed there too.  tmp: (n,) scratch.
+    Its response to a profile of period P segments is cos(pi / P)^(2 passes): 0 at P = 2."""
+    n = x.shape[0]
+    if n < 3:
+        return
+    for _ in range(passes):
+        for i in range(n):
+            tmp[i] = x[i]
+        x[0] = 0.5 * (tmp[0] + tmp[1])  # the profile mirrored about each end: (1, 2, 1) with x[-1] = x[1]
+        x[n - 1] = 0.5 * (tmp[n - 1] + tmp[n - 2])
+        for i in range(1, n - 1):
+            x[i] = 0.25 * (tmp[i - 1] + 2.0 * tmp[i] + tmp[i + 1])
+
+
+@njit(cache=True, error_model="numpy")
 def track_tick(kappa, s_muscle, waves, ramp_s, t, dt_tick, strain_per_kappa, kp, ki, umax, a, b, lateral, counting,
-               counts):
+               counts, err, tmp, passes):
     """One control tick of the tracker (module docstring, steps 2-4).
 
     kappa: (n_m,) measured ground curvature [1/m]; s_muscle: (n_m,) [m]; waves: (3, 5) wave table whose
     LATERAL row is the feed-forward; strain_per_kappa = g L [strain m] (sign included: the strain of a
     unit ground curvature); a, b: (n_m,) integral state [strain], updated; lateral: (n_m,) OVERWRITTEN with
-    the clipped LATERAL strain; counts: (3,) += (commands, clipped commands, peak |u| so far) when counting.
+    the clipped LATERAL strain; counts: (3,) += (commands, clipped commands, peak |u| so far) when counting;
+    err, tmp: (n_m,) scratch; passes: binomial smoothing passes of the error along the body before the
+    proportional and integral terms (``smooth_along_body``; module docstring, step 3).
     """
     r = 1.0
     if ramp_s > 0.0 and t < ramp_s:
@@ -108,11 +136,16 @@ def track_tick(kappa, s_muscle, waves, ramp_s, t, dt_tick, strain_per_kappa, kp,
     k = waves[_LATERAL, _WAVENUMBER]
     om = waves[_LATERAL, _OMEGA]
     ph = waves[_LATERAL, _PHASE]
-    for i in range(s_muscle.shape[0]):
+    n = s_muscle.shape[0]
+    for i in range(n):
+        th = k * s_muscle[i] - om * t + ph
+        err[i] = r * amp * math.sin(th) - strain_per_kappa * kappa[i]
+    smooth_along_body(err, passes, tmp)
+    for i in range(n):
         th = k * s_muscle[i] - om * t + ph
         sn, cs = math.sin(th), math.cos(th)
         ref = r * amp * sn
-        e = ref - strain_per_kappa * kappa[i]
+        e = err[i]
         u = ref + a[i] * sn + b[i] * cs + kp * e
         clipped = abs(u) > umax
         if not clipped or e * u < 0.0:  # anti-windup: a clipped command's integral only unwinds
@@ -133,7 +166,8 @@ class ShapeTracker:
 
     def __init__(self, case):
         g = case.gait
-        self.kp = float(g.shape_gain_p)
+        self.kp_key = float(g.shape_gain_p)  # < 0: the body's own (``BodySpec.shape_gain_p``), set in ``reset``
+        self.kp = max(self.kp_key, 0.0)
         self.ki = float(g.shape_gain_i_per_cycle) * float(g.frequency_hz)
         self.umax = float(g.max_muscle_strain)
         self.dt_tick = 1.0 / float(g.shape_control_rate_hz)
@@ -146,11 +180,13 @@ class ShapeTracker:
         self.s_muscle = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
         self.pitch = float(body_info["segment_pitch_m"])
         self.strain_per_kappa = LATERAL_GROUND_SIGN * strain_per_curvature * self.body_length
+        self.kp = self.kp_key if self.kp_key >= 0.0 else float(body_info.get("shape_gain_p", 0.0))
         n = self.s_muscle.shape[0]
         self.a, self.b = np.zeros(n), np.zeros(n)
         self.kappa = np.zeros(n)
         self.lateral = np.zeros(n)
         self.counts = np.zeros(3)
+        self.err, self.tmp = np.zeros(n), np.zeros(n)
         self.s_centre = None
         self.ready = True
 
@@ -163,7 +199,8 @@ class ShapeTracker:
             self.psi = np.zeros(n)
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
         track_tick(self.kappa, self.s_muscle, waves, ramp_s, t, self.dt_tick, self.strain_per_kappa, self.kp,
-                   self.ki, self.umax, self.a, self.b, self.lateral, t >= self.t_steady, self.counts)
+                   self.ki, self.umax, self.a, self.b, self.lateral, t >= self.t_steady, self.counts,
+                   self.err, self.tmp, SMOOTHING_PASSES)
         row[:, _LATERAL] = self.lateral
 
     def metrics(self) -> dict[str, float]:

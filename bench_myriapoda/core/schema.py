@@ -127,18 +127,19 @@ class GaitConfig:
     ramp_s: float = rng(0.5, ge=0.0, doc="amplitude ramps linearly from 0 over this time [s]")
     # Shape control of a commanded bending wave (curvature_amplitude > 0; controllers/muscle_waves.py,
     # docs/explanation/shape-tracking.md).
-    shape_control: str = rng("open_loop", choices=("closed_loop", "open_loop"),
-                             doc="lateral undulation, sidewinding with curvature_amplitude > 0: 'closed_loop' measures "
-                                 "the ground curvature of the segment frames at shape_control_rate_hz and corrects each "
-                                 "segment's LATERAL strain (calibrated feed-forward + proportional + per-segment "
-                                 "integral of the wave's in-phase and quadrature error); 'open_loop' (default): the "
-                                 "calibrated gain alone, as before issue 27 (docs/explanation/shape-tracking.md says "
-                                 "why the closed loop is not yet the default)")
+    shape_control: str = rng("closed_loop", choices=("closed_loop", "open_loop"),
+                             doc="lateral undulation, sidewinding with curvature_amplitude > 0: 'closed_loop' (default) "
+                                 "measures the ground curvature of the segment frames at shape_control_rate_hz and "
+                                 "corrects each segment's LATERAL strain (calibrated feed-forward + proportional + "
+                                 "per-segment integral of the wave's in-phase and quadrature error); 'open_loop': the "
+                                 "calibrated gain alone, bit for bit as before issue 27 "
+                                 "(docs/explanation/shape-tracking.md)")
     shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
-    shape_gain_p: float = rng(0.0, ge=0.0, le=100.0,
+    shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
-                                  "curvature error [-]")
+                                  "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
+                                  "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
     shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
                                         doc="closed_loop: integral gain of the wave's amplitude and phase error per "
                                             "gait cycle [-] (rate = this x frequency_hz)")

@@ -43,6 +43,9 @@ class BodySpec:
       missing table is refused).
     - ``checks``: validation check name -> True when ``validate --quick`` runs it on this body
       (``validation.registry``; a check runs on the bodies that declare it).
+    - ``shape_gain_p``: the proportional gain [-] of the closed-loop shape tracking of a bending wave
+      (``controllers.shape_tracking``) that this body's own dynamics tolerate; ``gait.shape_gain_p = -1``
+      (the default) takes it.  0: the tracker corrects the wave's amplitude and phase only.
     """
 
     name: str
@@ -55,6 +58,7 @@ class BodySpec:
     check_buildable: Callable[[Any, str], None]
     default_params: Mapping[str, Any] | None = None
     checks: Mapping[str, bool] = field(default_factory=dict)
+    shape_gain_p: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,8 @@ def needs_curvature_gain(case) -> bool:
 
 
 def calibrated_body_info(body, case) -> dict[str, Any]:
-    """``body_info`` plus ``strain_per_curvature`` [-] when the gait commands a curvature."""
+    """``body_info`` plus ``strain_per_curvature`` [-] and the body's ``shape_gain_p`` [-] (``BodySpec``) when
+    the gait commands a curvature."""
     info = body_info(body, case.dt)
     if needs_curvature_gain(case) and MUSCLES in body.capabilities:
         registry.load_all()
@@ -34,4 +35,5 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         # and blows up in its own run, where that is recorded as ``unstable``
         cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
         info["strain_per_curvature"] = lateral_gain(spec.factory, cal_case)
+        info["shape_gain_p"] = float(spec.shape_gain_p)
     return info

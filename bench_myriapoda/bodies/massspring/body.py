@@ -275,4 +275,7 @@ BACKEND = BodySpec(
     description="Miller 1988: cube lattice of point masses, edge and face-diagonal springs, directional friction",
     config_cls=MassSpringConfig, factory=make_massspring, default_dt=default_dt,
     capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
-    footprint=footprint, check_buildable=check_buildable, checks=CHECKS)
+    footprint=footprint, check_buildable=check_buildable, checks=CHECKS,
+    # the lattice's proportional shape gain (controllers/shape_tracking.py): without it the tracked snake
+    # diverged at mu_t / mu_f = 1 and missed the shape by 0.20 at 5 (docs/explanation/shape-tracking.md)
+    shape_gain_p=2.0)
