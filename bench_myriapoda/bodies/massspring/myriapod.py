@@ -37,6 +37,7 @@ nodes weigh ``creature.mass_kg``.
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -51,7 +52,9 @@ from ..friction_kernels import CONTACT_DISTANCE, friction_params
 from ..hybrid.kernels import (rigid_segments_step, ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
                               N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
                               VEL_ITERATIONS, VEL_TOLERANCE, link_spines, place_attached_nodes)
+from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
+from ..legged_chunk import register
 from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
@@ -320,15 +323,26 @@ class BodyRigidSpringChain(SupportedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        rb = self.rigid
-        return advance_chain(self.x, self.v, self.mass, self.free, self.fixed, self.att_body, self.att_local,
-                             self.mesh.node_link, self.springs, self.stiffness, self.damping, self.rest,
-                             rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
-                             rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
-                             self.phys, int(n_steps), self._f_work, self.scratch.f_att, self.scratch.x_att, self.scratch.x_pred,
-                             self.scratch.residual, self.scratch.spine, rb.force, rb.torque, self.scratch.Rb, self.scratch.R, self.scratch.Iw,
-                             self.scratch.corner_of, self.scratch.lin, self.scratch.ang, self.scratch.resp, self.scratch.kn, self.scratch.kt, self.scratch.target,
-                             self.scratch.lam, self.acc)
+        head, tail = self._step_args()
+        return advance_chain(*head, int(n_steps), *tail)
+
+    def _step_args(self) -> tuple[tuple, tuple]:
+        """``advance_chain``'s arguments before n_steps and after it."""
+        rb, sc = self.rigid, self.scratch
+        head = (self.x, self.v, self.mass, self.free, self.fixed, self.att_body, self.att_local,
+                self.mesh.node_link, self.springs, self.stiffness, self.damping, self.rest,
+                rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
+                rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
+        tail = (self._f_work, sc.f_att, sc.x_att, sc.x_pred, sc.residual, sc.spine, rb.force, rb.torque, sc.Rb,
+                sc.R, sc.Iw, sc.corner_of, sc.lin, sc.ang, sc.resp, sc.kn, sc.kt, sc.target, sc.lam, self.acc)
+        return head, tail
+
+    def legged_pack(self) -> "SpringChainLegs":
+        """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
+        head, tail = self._step_args()
+        boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
+                              self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[DT])
+        return SpringChainLegs(boxes, head, tail)
 
     def _state(self):
         rb = self.rigid
@@ -453,3 +467,16 @@ class BodyRigidSpringChain(SupportedSegments):
 
 
 __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout"]
+
+
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, head and tail
+# ``advance_chain``'s arguments before and after n_steps
+SpringChainLegs = namedtuple("SpringChainLegs", "boxes head tail")
+
+
+def _spring_chain_legged_step(P):
+    """``legged_chunk.step``: one coupled step."""
+    return advance_chain(*P.head, np.int64(1), *P.tail)   # np.int64: a literal 1 compiles a second signature
+
+
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)
