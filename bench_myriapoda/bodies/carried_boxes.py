@@ -3,7 +3,7 @@ and sample (``legged_chunk``) for the hybrid and the legged mass-spring bodies.
 
 Both bodies carry their supported boxes the same way (their ``set_support``): kinematic =
 supported | held, the kinematic boxes driven to their targets (``kinematic_targets.drive_to_targets``,
-paper Sec. 4.1), the attached link nodes put back on the boxes (``hybrid.kernels.place_on_box``,
+paper Sec. 4.1), the attached link nodes put back on the boxes (``rigid_chain.place_on_box``,
 the arithmetic of ``place_attached_nodes`` without its coupling residual, which the body's step
 overwrites before reading it, so the fused support skips it).  Only their step differs, so each
 body's pack is ``(boxes, step arguments)`` with ``boxes`` a ``CarriedBoxes``.
@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from . import rigid_kernels as rk
-from .hybrid.kernels import place_on_box
+from .rigid_chain import place_on_box
 from .kinematic_targets import drive_to_targets
 from .legged_chunk import copy_frames, copy_rows
 

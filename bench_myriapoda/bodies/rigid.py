@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from bench_myriapoda.bodies import rigid_kernels as rk
+from bench_myriapoda.bodies.rigid_chain import Boxes
 from bench_myriapoda.world.terrain_kernels import N_TERRAIN_PARAMS, PLANE
 
 GRAVITY = (0.0, -9.81, 0.0)  # [m/s^2]
@@ -166,6 +167,11 @@ class RigidBoxes:
         return int(n_done), int(status)
 
     # -- loads ----------------------------------------------------------------
+
+    def pack(self) -> Boxes:
+        """The boxes' arrays as ``rigid_chain.Boxes`` (no copy), for the rigid segment chain's kernels."""
+        return Boxes(self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents, self.kinematic,
+                     self.impulse_cache, self.force, self.torque)
 
     def clear_forces(self) -> None:
         """Zero the force and torque accumulators."""

@@ -51,10 +51,10 @@ import numpy as np
 from numba import njit
 
 from ...world.terrain import terrain_from_scenario
-from ...world.terrain_kernels import flat_ground, signed_distance
+from ...world.terrain_kernels import flat_ground
 from .. import step_status as S
-from ..contact_kernels import advance_point
-from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
+from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
 from ..legged_chunk import copy_frames, copy_rows, register
 from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import place_points
@@ -136,15 +136,20 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
         FK.polar_rotation(A[s], R[s])
 
 
+# ``advance_chain``'s arrays, packed (numba compiles a namedtuple of arrays as a struct of them); ``advance_chain``
+# says what each is
+BlockChain = namedtuple("BlockChain", "x v mass tets inc_ptr inc_off coef q_ws F_work H_work "
+                                      "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val "
+                                      "block_nodes node_spine att_nodes att_block att_target support "
+                                      "f_work b_work cent spine")
+
+
 @njit(cache=True, error_model="numpy")
-def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
-                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-                  block_nodes, node_spine, att_nodes, att_block, att_target, support,
-                  gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
-                  f_work, b_work, cent, spine, acc):
+def advance_chain(B, W, acc, n_steps):
     """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
 
-    x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
+    B: a ``BlockChain``; W = (gravity, terr_kind, terr, fric_model, fric, phys).
+    B.x, B.v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
     inc_off, coef, q_ws (UPDATED), F_work, H_work as
     ``fem.kernels.elastic_forces_gathered``;
     perm, sky_*, fp_* the factor of (M + dt D) with no fixed node
@@ -158,6 +163,10 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
     (n_nodes, 3), cent, spine (n_blocks, 3).  acc (S.N_ACC,) ACCUMULATES the
     shared statistics (contact fraction sum, steps, deepest penetration).
     """
+    (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
+     perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+     block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work, cent, spine) = B
+    gravity, terr_kind, terr, fric_model, fric, phys = W
     n_nodes = x.shape[0]
     n_blocks = block_nodes.shape[0]
     dt = phys[DT]
@@ -193,36 +202,18 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
         # spines from the block centroids (toward the head)
         block_centroids(x, block_nodes, cent)
         for s in range(n_blocks):
-            a = s - 1 if s > 0 else 0
-            b = s + 1 if s < n_blocks - 1 else n_blocks - 1
-            sx, sy, sz = cent[a, 0] - cent[b, 0], cent[a, 1] - cent[b, 1], cent[a, 2] - cent[b, 2]
-            nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
-            if nrm > 0.0:
-                spine[s, 0], spine[s, 1], spine[s, 2] = sx / nrm, sy / nrm, sz / nrm
-            else:
-                spine[s, 0], spine[s, 1], spine[s, 2] = 1.0, 0.0, 0.0
+            spine_between(cent, s - 1 if s > 0 else 0, s + 1 if s < n_blocks - 1 else n_blocks - 1, spine, s)
         n_contact = 0
         for i in range(n_nodes):
-            # A node clear of the terrain at both ends of its step (phi >= the contact distance now,
-            # phi >= 0 after x += dt v) is what ``advance_point`` reduces to for it: no friction, no
-            # collision, x += dt v and the blow-up checks.  Done here with the same arithmetic (so
-            # bit for bit the same), it skips the call's cost for the walking body's many nodes in the
-            # air; any other node (also a NaN distance) goes through ``advance_point``.  Not a call of
-            # ``contact_kernels.advance_point_if_clear`` (the same doubles), which measured -9 % on
-            # `fem-centipede` and -4 % on `fem-worm` (regress, 4 alternating rounds, 2026-11-24).
-            px, py, pz = x[i, 0], x[i, 1], x[i, 2]
+            # a node clear of the terrain at both ends of its step: ``advance_point``'s arithmetic for it,
+            # without the contact code (the walking body's many nodes in the air)
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
-            if phi >= contact_dist:
-                qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi >= 0.0:
-                    x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
-                    if not math.isfinite(qx + qy + qz + vx + vy + vz):
-                        status = S.NONFINITE
-                    elif vx * vx + vy * vy + vz * vz > vmax2:
-                        status = S.RUNAWAY_SPEED
-                    continue
+            st = advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, flat, ground, contact_dist, vmax2,
+                                        False)
+            if st != NOT_CLEAR:
+                if st != S.OK:
+                    status = st
+                continue
             s = node_spine[i]
             touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2],
                                          dt, terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
@@ -262,9 +253,9 @@ def carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_t
 
 
 # the fused legged walk's pack (``legged_chunk``): blocks = (x, block_nodes, rest_offsets, att_nodes, att_block,
-# held, att_target, support, and the poses' scratch c (n, 3), A, R (n, 3, 3)); head and tail ``advance_chain``'s
-# arguments before and after n_steps
-BlockChainLegs = namedtuple("BlockChainLegs", "blocks head tail")
+# held, att_target, support, and the poses' scratch c (n, 3), A, R (n, 3, 3)); chain ``advance_chain``'s
+# arguments without n_steps
+BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain")
 
 
 def _block_poses(P):
@@ -294,7 +285,7 @@ def _sample_blocks(P, c_out, R_out, links_out):
 
 def _block_chain_step(P):
     """``legged_chunk.step``: one step."""
-    return advance_chain(*P.head, np.int64(1), *P.tail)   # np.int64: a literal 1 compiles a second signature
+    return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
 register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step)
@@ -389,26 +380,23 @@ class BodyFEMChain(SupportedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
-        head, tail = self._step_args()
-        return advance_chain(*head, int(n_steps), *tail)
+        return advance_chain(*self._chain_args(), self.acc, int(n_steps))
 
-    def _step_args(self) -> tuple[tuple, tuple]:
-        """``advance_chain``'s arguments before n_steps and after it."""
+    def _chain_args(self) -> tuple:
+        """``advance_chain``'s packs (the ``BlockChain``, the world)."""
         f, s = self.fem, self.solver
-        head = (self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work, f._H_work,
-                s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-                self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target, self.support,
-                self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
-        tail = (self._f_work, self._b_work, self._cent, self._spine, self.acc)
-        return head, tail
+        chain = BlockChain(self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
+                           f._H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+                           self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
+                           self.support, self._f_work, self._b_work, self._cent, self._spine)
+        return chain, (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
 
     def legged_pack(self) -> "BlockChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the blocks and the step's arguments."""
-        head, tail = self._step_args()
         n = self.n_blocks
         blocks = (self.x, self.block_nodes, self.rest_offsets, self.att_nodes, self.att_block, self._held,
                   self.att_target, self.support, np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3, 3)))
-        return BlockChainLegs(blocks, head, tail)
+        return BlockChainLegs(blocks, self._chain_args() + (self.acc,))
 
     def _state(self):
         return [a.copy() for a in (self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc)]

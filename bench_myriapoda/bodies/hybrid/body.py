@@ -389,32 +389,27 @@ class BodyHybrid(SupportedSegments):
         else:
             self.phys[K.MUSCLES_ON] = 1.0
             buf = act.muscle
-        head, tail = self._step_args(buf)
-        return K.advance(*head, int(n_steps), *tail)
+        return K.advance_chain(*self._chain_args(buf), self.acc, int(n_steps))
 
-    def _step_args(self, muscle_buf: np.ndarray) -> tuple[tuple, tuple]:
-        """``hybrid.kernels.advance``'s arguments before n_steps and after it, with muscle_buf (rows,
-        n_links, 3) the active strain."""
+    def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
+        """``rigid_chain.advance_chain``'s packs (links, attachment, boxes, world, coupling scratch), with
+        muscle_buf (rows, n_links, 3) the links' active strain."""
         fem, s, rb, sc = self.fem, self.solver, self.rigid, self.scratch
-        head = (fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, self._muscle_static + (muscle_buf,),
-                fem.mass, fem._q_ws, fem._F_work, fem._H_work, fem._inc_ptr, fem._inc_off,
-                s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-                s.fixed, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self.att_body, self.att_local,
-                rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
-                rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
-        tail = (self._f_work, self._b_work, sc.f_att, sc.x_att, sc.x_pred, sc.residual, sc.spine, rb.force,
-                rb.torque, sc.Rb, sc.R, sc.Iw, sc.corner_of, sc.lin, sc.ang, sc.resp, sc.kn, sc.kt, sc.target,
-                sc.lam, self.acc)
-        return head, tail
+        links = K.FEMLinks(fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
+                           self._muscle_static + (muscle_buf,), fem.mass, fem._q_ws, fem._F_work, fem._H_work,
+                           fem._inc_ptr, fem._inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
+                           s.fp_val, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self._f_work, self._b_work)
+        return (links, K.Attachment(s.fixed, self.att_body, self.att_local), rb.pack(),
+                K.World(self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys),
+                sc.coupling())
 
     def legged_pack(self) -> "HybridLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
         without muscles (the fused path does not actuate the links)."""
         self.phys[K.MUSCLES_ON] = 0.0
-        head, tail = self._step_args(self._no_muscle)
         boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
                               self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[K.DT])
-        return HybridLegs(boxes, head, tail)
+        return HybridLegs(boxes, self._chain_args(self._no_muscle) + (self.acc,))
 
     @cached_property
     def _no_muscle(self) -> np.ndarray:
@@ -658,14 +653,14 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.
-# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, head and tail
-# ``hybrid.kernels.advance``'s arguments before and after n_steps
-HybridLegs = namedtuple("HybridLegs", "boxes head tail")
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
+# ``rigid_chain.advance_chain``'s arguments without n_steps
+HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 
 def _hybrid_legged_step(P):
     """``legged_chunk.step``: one coupled step."""
-    return K.advance(*P.head, np.int64(1), *P.tail)   # np.int64: a literal 1 compiles a second signature
+    return K.advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
 register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
