@@ -17,7 +17,6 @@ from typing import NamedTuple
 import numpy as np
 
 from bench_myriapoda.bodies import rigid_kernels as rk
-from bench_myriapoda.bodies.rigid_chain import Boxes
 from bench_myriapoda.world.terrain_kernels import N_TERRAIN_PARAMS, PLANE
 
 GRAVITY = (0.0, -9.81, 0.0)  # [m/s^2]
@@ -168,9 +167,10 @@ class RigidBoxes:
 
     # -- loads ----------------------------------------------------------------
 
-    def pack(self) -> Boxes:
-        """The boxes' arrays as ``rigid_chain.Boxes`` (no copy), for the rigid segment chain's kernels."""
-        return Boxes(self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents, self.kinematic,
+    def pack(self) -> tuple:
+        """The boxes' arrays in the fields' order of ``rigid_chain.Boxes`` (no copy; a plain tuple, which numba
+        types fast at a call), for the rigid segment chain's kernels."""
+        return (self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents, self.kinematic,
                      self.impulse_cache, self.force, self.torque)
 
     def clear_forces(self) -> None:

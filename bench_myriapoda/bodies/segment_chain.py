@@ -11,7 +11,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import InputError
-from .rigid_chain import Coupling
 
 DERIVED = -1.0  # the body configs' "derive from the creature" value
 
@@ -109,9 +108,10 @@ class CouplingScratch:
     lam: np.ndarray
     qtmp: np.ndarray
 
-    def coupling(self) -> Coupling:
-        """The arrays but qtmp as ``rigid_chain.Coupling`` (no copy), for the rigid segment chain's kernels."""
-        return Coupling(self.f_att, self.x_att, self.x_pred, self.residual, self.spine, self.Rb, self.R, self.Iw,
+    def coupling(self) -> tuple:
+        """The arrays but qtmp in the fields' order of ``rigid_chain.Coupling`` (no copy; a plain tuple, which
+        numba types fast at a call), for the rigid segment chain's kernels."""
+        return (self.f_att, self.x_att, self.x_pred, self.residual, self.spine, self.Rb, self.R, self.Iw,
                         self.corner_of, self.lin, self.ang, self.resp, self.kn, self.kt, self.target, self.lam)
 
     @classmethod

@@ -136,19 +136,14 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
         FK.polar_rotation(A[s], R[s])
 
 
-# ``advance_chain``'s arrays, packed (numba compiles a namedtuple of arrays as a struct of them); ``advance_chain``
-# says what each is
-BlockChain = namedtuple("BlockChain", "x v mass tets inc_ptr inc_off coef q_ws F_work H_work "
-                                      "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val "
-                                      "block_nodes node_spine att_nodes att_block att_target support "
-                                      "f_work b_work cent spine")
-
-
 @njit(cache=True, error_model="numpy")
 def advance_chain(B, W, acc, n_steps):
     """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
 
-    B: a ``BlockChain``; W = (gravity, terr_kind, terr, fric_model, fric, phys).
+    B = (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work, perm, sky_first, sky_ptr, sky_L,
+    fp_ptr, fp_col, fp_val, block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work,
+    cent, spine), W = (gravity, terr_kind, terr, fric_model, fric, phys): plain tuples (numba types them fast at a
+    call, ``rigid_chain``'s note), named here.
     B.x, B.v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
     inc_off, coef, q_ws (UPDATED), F_work, H_work as
     ``fem.kernels.elastic_forces_gathered``;
@@ -383,9 +378,9 @@ class BodyFEMChain(SupportedSegments):
         return advance_chain(*self._chain_args(), self.acc, int(n_steps))
 
     def _chain_args(self) -> tuple:
-        """``advance_chain``'s packs (the ``BlockChain``, the world)."""
+        """``advance_chain``'s packs (the chain's arrays, the world)."""
         f, s = self.fem, self.solver
-        chain = BlockChain(self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
+        chain = (self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
                            f._H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                            self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
                            self.support, self._f_work, self._b_work, self._cent, self._spine)

@@ -389,19 +389,18 @@ class BodyHybrid(SupportedSegments):
         else:
             self.phys[K.MUSCLES_ON] = 1.0
             buf = act.muscle
-        return K.advance_chain(*self._chain_args(buf), self.acc, int(n_steps))
+        return K.advance(*self._chain_args(buf), self.acc, int(n_steps))
 
     def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
-        """``rigid_chain.advance_chain``'s packs (links, attachment, boxes, world, coupling scratch), with
-        muscle_buf (rows, n_links, 3) the links' active strain."""
+        """``hybrid.kernels.advance``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch),
+        with muscle_buf (rows, n_links, 3) the links' active strain."""
         fem, s, rb, sc = self.fem, self.solver, self.rigid, self.scratch
-        links = K.FEMLinks(fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
+        links = (fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
                            self._muscle_static + (muscle_buf,), fem.mass, fem._q_ws, fem._F_work, fem._H_work,
                            fem._inc_ptr, fem._inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
                            s.fp_val, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self._f_work, self._b_work)
-        return (links, K.Attachment(s.fixed, self.att_body, self.att_local), rb.pack(),
-                K.World(self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys),
-                sc.coupling())
+        return (links, (s.fixed, self.att_body, self.att_local), rb.pack(),
+                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), sc.coupling())
 
     def legged_pack(self) -> "HybridLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
@@ -654,13 +653,13 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
-# ``rigid_chain.advance_chain``'s arguments without n_steps
+# ``hybrid.kernels.advance``'s arguments without n_steps
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 
 def _hybrid_legged_step(P):
     """``legged_chunk.step``: one coupled step."""
-    return K.advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+    return K.advance(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
 register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)

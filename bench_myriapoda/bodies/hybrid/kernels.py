@@ -182,6 +182,15 @@ register_link(FEMLinks, _fem_links_step)
 
 
 @njit(cache=True, error_model="numpy")
+def advance(links, att, boxes, world, coupling, acc, n_steps):
+    """``rigid_chain.advance_chain`` of the FEM-linked chain from Python: the packs as plain tuples in the fields'
+    order of ``FEMLinks``, ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` (``rigid_chain``'s note on
+    why); returns (steps, status)."""
+    return advance_chain(FEMLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling), acc,
+                         n_steps)
+
+
+@njit(cache=True, error_model="numpy")
 def momenta(x, v, mass, free, c, vr, w, rmass, inertia_body, Rb, origin, out):
     """Linear and angular momentum of the simulated masses (rigid boxes and free nodes).
 

@@ -43,6 +43,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+from numba import njit
 from scipy.spatial.transform import Rotation
 
 from ...world.terrain import terrain_from_scenario
@@ -51,7 +52,7 @@ from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
 from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED, N_ACC,
                            N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP, VEL_ITERATIONS,
-                           VEL_TOLERANCE, Attachment, World, advance_chain, chain_scalars, link_spines, place_attached_nodes,
+                           VEL_TOLERANCE, Attachment, Boxes, Coupling, World, advance_chain, chain_scalars, link_spines, place_attached_nodes,
                            register_link)
 from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
@@ -185,6 +186,15 @@ def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
 register_link(SpringLinks, _spring_links_step)
 
 
+@njit(cache=True, error_model="numpy")
+def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
+    """``rigid_chain.advance_chain`` of the spring-linked chain from Python: the packs as plain tuples in the
+    fields' order of ``SpringLinks``, ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` (``rigid_chain``'s
+    note on why); returns (steps, status)."""
+    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
+                         acc, n_steps)
+
+
 class BodyRigidSpringChain(SupportedSegments):
     """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
 
@@ -287,15 +297,14 @@ class BodyRigidSpringChain(SupportedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        return advance_chain(*self._chain_args(), self.acc, int(n_steps))
+        return advance_spring_chain(*self._chain_args(), self.acc, int(n_steps))
 
     def _chain_args(self) -> tuple:
-        """``rigid_chain.advance_chain``'s packs (links, attachment, boxes, world, coupling scratch)."""
-        links = SpringLinks(self.x, self.v, len(self.free), self.mass, self.free, self.mesh.node_link, self.springs,
+        """``advance_spring_chain``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch)."""
+        links = (self.x, self.v, len(self.free), self.mass, self.free, self.mesh.node_link, self.springs,
                             self.stiffness, self.damping, self.rest, self._f_work)
-        return (links, Attachment(self.fixed, self.att_body, self.att_local), self.rigid.pack(),
-                World(self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys),
-                self.scratch.coupling())
+        return (links, (self.fixed, self.att_body, self.att_local), self.rigid.pack(),
+                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), self.scratch.coupling())
 
     def legged_pack(self) -> "SpringChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
@@ -429,13 +438,13 @@ __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout
 
 
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
-# ``rigid_chain.advance_chain``'s arguments without n_steps
+# ``advance_spring_chain``'s arguments without n_steps
 SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
 
 
 def _spring_chain_legged_step(P):
     """``legged_chunk.step``: one coupled step."""
-    return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+    return advance_spring_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
 register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)
