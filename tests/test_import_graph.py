@@ -239,17 +239,8 @@ def cross_package_private_reads() -> set[tuple[str, str]]:
 
 # Private reads that remain, each with what removes it; a new one fails the test, and a listed one that is gone
 # fails it too (so the list only shrinks).
-KNOWN_PRIVATE = {
-    # fused/legged_walk.py reads the bodies' private state to pack its kernels' arguments: item 3 of issue 30
-    # (each legged body publishes its chunk kernel and argument pack) removes these
-    *{("bench_myriapoda.fused.legged_walk", n) for n in (
-        "_F_work", "_H_work", "_b_work", "_cent", "_f_work", "_held", "_inc_off", "_inc_ptr", "_muscle_static",
-        "_no_muscle", "_q_ws", "_spine")},
-    # the throughput suite and the peer comparison read the rigid boxes' quaternion workspace to call a rigid
-    # kernel directly: item 3 as well (the rigid segment chain's step published with its argument pack)
-    ("bench_myriapoda.harness.peers", "_q_ws"),
-    ("bench_myriapoda.harness.throughput_suite", "_q_ws"),
-}
+KNOWN_PRIVATE: set[tuple[str, str]] = set()   # empty since issue 30 item 3: a legged body publishes its fused
+# pack (bodies.legged_chunk) and the FEM system its rotation workspace (FEMSystem.q_ws)
 
 
 def test_the_private_read_check_finds_one():

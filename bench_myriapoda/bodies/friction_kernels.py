@@ -51,6 +51,21 @@ def friction_params(cfg) -> tuple[int, np.ndarray]:
     return FRICTION_MODELS[cfg.model], p
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def spine_between(c, a, b, spine, k):
+    """spine[k] = the unit vector from c[b] to c[a] [c (n, 3) [m], e.g. from a segment's centre to the one
+    ahead], or (1, 0, 0) where they coincide: the direction toward the head that the friction models (Miller's
+    rule, anisotropic Coulomb) read at a point.  OVERWRITES spine[k]."""
+    sx = c[a, 0] - c[b, 0]
+    sy = c[a, 1] - c[b, 1]
+    sz = c[a, 2] - c[b, 2]
+    n = math.sqrt(sx * sx + sy * sy + sz * sz)
+    if n > 0.0:
+        spine[k, 0], spine[k, 1], spine[k, 2] = sx / n, sy / n, sz / n
+    else:
+        spine[k, 0], spine[k, 1], spine[k, 2] = 1.0, 0.0, 0.0
+
+
 @njit(cache=True, error_model="numpy")
 def ground_friction(model, p, vx, vy, vz, nx, ny, nz, sx, sy, sz, jn):
     """New velocity (vx, vy, vz) [m/s] of a mass in contact.

@@ -167,6 +167,12 @@ class RigidBoxes:
 
     # -- loads ----------------------------------------------------------------
 
+    def pack(self) -> tuple:
+        """The boxes' arrays in the fields' order of ``rigid_chain.Boxes`` (no copy; a plain tuple, which numba
+        types fast at a call), for the rigid segment chain's kernels."""
+        return (self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents, self.kinematic,
+                     self.impulse_cache, self.force, self.torque)
+
     def clear_forces(self) -> None:
         """Zero the force and torque accumulators."""
         self.force[:] = 0.0

@@ -83,7 +83,7 @@ def check_link_fit(case, source: str) -> None:
 
 @dataclass(frozen=True)
 class CouplingScratch:
-    """Work arrays of ``hybrid.kernels.rigid_segments_step`` (Sec. 3 steps 2-3), allocated once per body.
+    """Work arrays of ``rigid_chain.rigid_segments_step`` (Sec. 3 steps 2-3), allocated once per body.
 
     f_att, x_att, x_pred (n_fixed, 3) and residual (n_fixed,): attached nodes' forces, positions,
     predicted positions, coupling residuals; spine (n_rigid - 1, 3); Rb (n_rigid, 3, 3) box
@@ -107,6 +107,12 @@ class CouplingScratch:
     target: np.ndarray
     lam: np.ndarray
     qtmp: np.ndarray
+
+    def coupling(self) -> tuple:
+        """The arrays but qtmp in the fields' order of ``rigid_chain.Coupling`` (no copy; a plain tuple, which
+        numba types fast at a call), for the rigid segment chain's kernels."""
+        return (self.f_att, self.x_att, self.x_pred, self.residual, self.spine, self.Rb, self.R, self.Iw,
+                        self.corner_of, self.lin, self.ang, self.resp, self.kn, self.kt, self.target, self.lam)
 
     @classmethod
     def new(cls, n_fixed: int, n_rigid: int, n_corners: int) -> "CouplingScratch":

@@ -169,10 +169,10 @@ def setup_fem_chain_resting(resolution: int, steps: int):
     r = system.advance(OURS_SETTLE_STEPS, dt=DT_PAPER, terrain=terrain, friction=0.5)
     if r.status != 0:
         raise RuntimeError("our FEM chain went unstable while settling")
-    state = [a.copy() for a in (system.x, system.v, system._q_ws)]
+    state = [a.copy() for a in (system.x, system.v, system.q_ws)]
 
     def step(n: int) -> None:
-        for dst, src in zip((system.x, system.v, system._q_ws), state):
+        for dst, src in zip((system.x, system.v, system.q_ws), state):
             dst[...] = src
         r = system.advance(n, dt=DT_PAPER, terrain=terrain, friction=0.5)
         if r.status != 0 or r.steps != n:

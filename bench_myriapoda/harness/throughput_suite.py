@@ -109,7 +109,7 @@ def hybrid_chain():
 def hybrid_state_fields(body) -> list[np.ndarray]:
     """The arrays that hold a BodyHybrid's whole dynamic state (restore them to restart)."""
     rb = body.rigid
-    return [body.x, body.v, body.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, body.acc]
+    return [body.x, body.v, body.fem.q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, body.acc]
 
 
 CENTIPEDE_WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has formed
@@ -269,12 +269,12 @@ def setup_fem_chain(steps: int = 3000) -> tuple[Step, int]:
     system, x0, v0 = fem_chain()
     terrain = fem_terrain()
     system.advance(1, dt=DT_PAPER, terrain=terrain)  # JIT compile or cache load, and the factorization
-    q0 = system._q_ws.copy()
+    q0 = system.q_ws.copy()
 
     def step(n: int) -> None:
         system.x[:] = x0
         system.v[:] = v0
-        system._q_ws[:] = q0
+        system.q_ws[:] = q0
         r = system.advance(n, dt=DT_PAPER, terrain=terrain, friction=0.5)
         _check("fem-chain", n, r.steps, r.status)
 
@@ -284,7 +284,7 @@ def setup_fem_chain(steps: int = 3000) -> tuple[Step, int]:
 def setup_fem_worm(steps: int = 3000) -> tuple[Step, int]:
     """The FEM worm body kernel (muscles, friction, ground contact), restarted from t = 0 at every call."""
     _case, body = fem_worm_body()
-    fields = [body.x, body.v, body.system._q_ws, body.acc]
+    fields = [body.x, body.v, body.system.q_ws, body.acc]
     start = [a.copy() for a in fields]
 
     def step(n: int) -> None:

@@ -24,7 +24,7 @@ from numba import njit
 
 from ...world.terrain_kernels import flat_ground, signed_distance
 from ..contact_kernels import advance_point
-from ..friction_kernels import CONTACT_DISTANCE
+from ..friction_kernels import CONTACT_DISTANCE, spine_between
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, NONFINITE, OK, RUNAWAY_SPEED
 from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces_gathered, semi_implicit_velocity
 
@@ -81,16 +81,7 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
         m = seg_ptr[i + 1] - seg_ptr[i]
         centers[i, 0], centers[i, 1], centers[i, 2] = cx / m, cy / m, cz / m
     for i in range(n_seg):
-        a = i - 1 if i > 0 else 0
-        b = i + 1 if i < n_seg - 1 else n_seg - 1
-        sx = centers[a, 0] - centers[b, 0]
-        sy = centers[a, 1] - centers[b, 1]
-        sz = centers[a, 2] - centers[b, 2]
-        nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
-        if nrm > 0.0:
-            spine[i, 0], spine[i, 1], spine[i, 2] = sx / nrm, sy / nrm, sz / nrm
-        else:
-            spine[i, 0], spine[i, 1], spine[i, 2] = 1.0, 0.0, 0.0
+        spine_between(centers, i - 1 if i > 0 else 0, i + 1 if i < n_seg - 1 else n_seg - 1, spine, i)
 
 
 @njit(cache=True, error_model="numpy")
@@ -144,9 +135,9 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
         for k in range(n_free):
             i = perm[k]
             # a node clear of the terrain at both ends of its step: ``advance_point``'s no-contact case
-            # with its arithmetic, bit for bit (as in ``fem.myriapod.advance_chain``).  Written out, not a call
-            # of ``contact_kernels.advance_point_if_clear`` (the same doubles): that call measured -4 % on
-            # `fem-worm` and -9 % on `fem-centipede` (regress, 4 alternating rounds, 2026-11-24)
+            # with its arithmetic, bit for bit (as in ``fem.myriapod.advance_chain``).  Deliberately unrolled,
+            # not a call of ``contact_kernels.advance_point_if_clear`` (the same doubles): that call measured -4 %
+            # on `fem-worm` and -9 % on `fem-centipede` (regress, 4 alternating rounds, 2026-11-24)
             px, py, pz = x[i, 0], x[i, 1], x[i, 2]
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
             phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)

@@ -44,6 +44,7 @@ every node (the suite's point-mass contact), x += dt v, blow-up checks.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from functools import cached_property
 
 import numpy as np
@@ -53,7 +54,8 @@ from ...world.terrain import terrain_from_scenario
 from ...world.terrain_kernels import flat_ground, signed_distance
 from .. import step_status as S
 from ..contact_kernels import advance_point
-from ..friction_kernels import CONTACT_DISTANCE, friction_params
+from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
+from ..legged_chunk import copy_frames, copy_rows, register
 from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import place_points
 from ..segment_chain import SupportedSegments
@@ -135,14 +137,14 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
 
 
 @njit(cache=True, error_model="numpy")
-def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
-                  perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-                  block_nodes, node_spine, att_nodes, att_block, att_target, support,
-                  gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
-                  f_work, b_work, cent, spine, acc):
+def advance_chain(B, W, acc, n_steps):
     """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
 
-    x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
+    B = (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work, perm, sky_first, sky_ptr, sky_L,
+    fp_ptr, fp_col, fp_val, block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work,
+    cent, spine), W = (gravity, terr_kind, terr, fric_model, fric, phys): plain tuples (numba types them fast at a
+    call, ``rigid_chain``'s note), named here.
+    B.x, B.v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
     inc_off, coef, q_ws (UPDATED), F_work, H_work as
     ``fem.kernels.elastic_forces_gathered``;
     perm, sky_*, fp_* the factor of (M + dt D) with no fixed node
@@ -156,6 +158,10 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
     (n_nodes, 3), cent, spine (n_blocks, 3).  acc (S.N_ACC,) ACCUMULATES the
     shared statistics (contact fraction sum, steps, deepest penetration).
     """
+    (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
+     perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
+     block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work, cent, spine) = B
+    gravity, terr_kind, terr, fric_model, fric, phys = W
     n_nodes = x.shape[0]
     n_blocks = block_nodes.shape[0]
     dt = phys[DT]
@@ -191,23 +197,17 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
         # spines from the block centroids (toward the head)
         block_centroids(x, block_nodes, cent)
         for s in range(n_blocks):
-            a = s - 1 if s > 0 else 0
-            b = s + 1 if s < n_blocks - 1 else n_blocks - 1
-            sx, sy, sz = cent[a, 0] - cent[b, 0], cent[a, 1] - cent[b, 1], cent[a, 2] - cent[b, 2]
-            nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
-            if nrm > 0.0:
-                spine[s, 0], spine[s, 1], spine[s, 2] = sx / nrm, sy / nrm, sz / nrm
-            else:
-                spine[s, 0], spine[s, 1], spine[s, 2] = 1.0, 0.0, 0.0
+            spine_between(cent, s - 1 if s > 0 else 0, s + 1 if s < n_blocks - 1 else n_blocks - 1, spine, s)
         n_contact = 0
         for i in range(n_nodes):
             # A node clear of the terrain at both ends of its step (phi >= the contact distance now,
             # phi >= 0 after x += dt v) is what ``advance_point`` reduces to for it: no friction, no
             # collision, x += dt v and the blow-up checks.  Done here with the same arithmetic (so
             # bit for bit the same), it skips the call's cost for the walking body's many nodes in the
-            # air; any other node (also a NaN distance) goes through ``advance_point``.  Not a call of
-            # ``contact_kernels.advance_point_if_clear`` (the same doubles), which measured -9 % on
-            # `fem-centipede` and -4 % on `fem-worm` (regress, 4 alternating rounds, 2026-11-24).
+            # air; any other node (also a NaN distance) goes through ``advance_point``.  Deliberately
+            # unrolled: a call of ``contact_kernels.advance_point_if_clear`` (the same doubles) measured
+            # -9 % on `fem-centipede` and -4 % on `fem-worm` (regress, 4 alternating rounds, 2026-11-24),
+            # and about -16 % and -18 % in its flat-ground form (3 alternating rounds, 2026-11-27).
             px, py, pz = x[i, 0], x[i, 1], x[i, 2]
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
             phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
@@ -233,6 +233,69 @@ def advance_chain(x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work
         if status != S.OK:
             return step + 1, status
     return n_steps, S.OK
+
+
+@njit(cache=True, error_model="numpy")
+def carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_target, support):
+    """``BodyFEMChain.set_support`` on the blocks' current poses c (n, 3) [m], R (n, 3, 3): OVERWRITES support
+    (n,) with kinematic | held, and att_target (n_att, 3) [m] of every leg-attachment node p of a kinematic,
+    not held block b with x_T = c_T[b] + R_T[b] R[b]^T (x_p - c[b]) (held blocks keep their starting targets).
+
+    numpy's einsum "nij,nj->ni" (which this replaced, and which the goldens were recorded with) adds the
+    three products as (j=0 + j=2) + j=1, and "nji,nj->ni" in order (checked on this numpy by
+    tests/test_fused_walk.py): kept so, bit for bit."""
+    for i in range(support.shape[0]):
+        support[i] = kinematic[i] or held[i]
+    for e in range(att_nodes.shape[0]):
+        b = att_block[e]
+        if not kinematic[b] or held[b]:
+            continue
+        p = att_nodes[e]
+        d0, d1, d2 = x[p, 0] - c[b, 0], x[p, 1] - c[b, 1], x[p, 2] - c[b, 2]
+        r0 = R[b, 0, 0] * d0 + R[b, 1, 0] * d1 + R[b, 2, 0] * d2
+        r1 = R[b, 0, 1] * d0 + R[b, 1, 1] * d1 + R[b, 2, 1] * d2
+        r2 = R[b, 0, 2] * d0 + R[b, 1, 2] * d1 + R[b, 2, 2] * d2
+        for i in range(3):
+            att_target[e, i] = c_T[b, i] + ((R_T[b, i, 0] * r0 + R_T[b, i, 2] * r2) + R_T[b, i, 1] * r1)
+
+
+# the fused legged walk's pack (``legged_chunk``): blocks = (x, block_nodes, rest_offsets, att_nodes, att_block,
+# held, att_target, support, and the poses' scratch c (n, 3), A, R (n, 3, 3)); chain ``advance_chain``'s
+# arguments without n_steps
+BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain")
+
+
+def _block_poses(P):
+    """``legged_chunk.poses``: the blocks' best-fit poses (``block_poses``), as ``segment_poses``."""
+    x, block_nodes, rest_offsets, _, _, _, _, _, c, A, R = P.blocks
+    block_poses(x, block_nodes, rest_offsets, c, A, R)
+    return c, R
+
+
+def _carry_blocks(P, kinematic, c_T, R_T):
+    """``legged_chunk.carry`` after ``_block_poses``: ``set_support`` on the poses it left (the nodes have not
+    moved since)."""
+    x, _, _, att_nodes, att_block, held, att_target, support, c, _, R = P.blocks
+    carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_target, support)
+
+
+def _sample_blocks(P, c_out, R_out, links_out):
+    """``legged_chunk.sample``: the nodes do not move before the step, so the poses are the sensed ones; a
+    link's centre is the mean of its two blocks' centroids (``segment_centers``)."""
+    c, R = P.blocks[8], P.blocks[10]
+    copy_rows(c, c_out)
+    copy_frames(R, R_out)
+    for li in range(c.shape[0] - 1):
+        for i in range(3):
+            links_out[li, i] = 0.5 * (c[li, i] + c[li + 1, i])
+
+
+def _block_chain_step(P):
+    """``legged_chunk.step``: one step."""
+    return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+
+
+register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step)
 
 
 class BodyFEMChain(SupportedSegments):
@@ -324,14 +387,23 @@ class BodyFEMChain(SupportedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
+        return advance_chain(*self._chain_args(), self.acc, int(n_steps))
+
+    def _chain_args(self) -> tuple:
+        """``advance_chain``'s packs (the chain's arrays, the world)."""
         f, s = self.fem, self.solver
-        return advance_chain(self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
-                             f._H_work,
-                             s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-                             self.block_nodes, self.node_spine, self.att_nodes, self.att_block,
-                             self.att_target, self.support, self.gravity, self.terr_kind, self.terr,
-                             self.fric_model, self.fric, self.phys, int(n_steps),
-                             self._f_work, self._b_work, self._cent, self._spine, self.acc)
+        chain = (self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
+                           f._H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+                           self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
+                           self.support, self._f_work, self._b_work, self._cent, self._spine)
+        return chain, (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
+
+    def legged_pack(self) -> "BlockChainLegs":
+        """The fused legged walk's pack (``legged_chunk``): the blocks and the step's arguments."""
+        n = self.n_blocks
+        blocks = (self.x, self.block_nodes, self.rest_offsets, self.att_nodes, self.att_block, self._held,
+                  self.att_target, self.support, np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3, 3)))
+        return BlockChainLegs(blocks, self._chain_args() + (self.acc,))
 
     def _state(self):
         return [a.copy() for a in (self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc)]
@@ -373,14 +445,10 @@ class BodyFEMChain(SupportedSegments):
         offset from the block's best-fit pose (c, R) transported rigidly, and the implicit penalty pulls it
         there (module docstring).  Transporting the current offsets (not the rest shape) moves the block by
         exactly the rigid increment and never snaps a deformed block back in one step."""
-        self.support[:] = kinematic | self._held
-        sel = (kinematic & ~self._held)[self.att_block]  # held blocks keep their starting targets
-        if sel.any():
-            c, R = self.segment_poses()
-            b = self.att_block[sel]
-            p = self.att_nodes[sel]
-            rel = np.einsum("nji,nj->ni", R[b], self.x[p] - c[b])   # R^T (x_p - c)
-            self.att_target[sel] = c_T[b] + np.einsum("nij,nj->ni", R_T[b], rel)
+        c, R = self.segment_poses()
+        carry_blocks(self.x, self.att_nodes, self.att_block, self._held, np.ascontiguousarray(kinematic, np.bool_),
+                     c, R, np.ascontiguousarray(c_T, np.float64), np.ascontiguousarray(R_T, np.float64),
+                     self.att_target, self.support)
 
     def support_error(self) -> float:
         """Max distance [m] of a supported block's leg-attachment node from its target (current state)."""

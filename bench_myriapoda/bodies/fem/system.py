@@ -175,6 +175,13 @@ class FEMSystem:
         return len(self.X)
 
     @property
+    def q_ws(self) -> np.ndarray:
+        """(n_tet_blocks, N_Q LANES) the per-tet rotations (``kernels.new_tet_workspace``): part of the dynamic
+        state, since each step's corotational solve starts from the last one's, so whoever saves and restores
+        the state (a benchmark repeating a run) saves and restores this array too (in place)."""
+        return self._q_ws
+
+    @property
     def n_tets(self) -> int:
         return len(self.tets)
 

@@ -68,6 +68,7 @@ the rigid boxes and the free FEM nodes (attached nodes are part of the boxes).
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -85,7 +86,9 @@ from ..fem import kernels as FK
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
+from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
+from ..legged_chunk import register
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
@@ -380,24 +383,32 @@ class BodyHybrid(SupportedSegments):
         ``act.muscle`` (rows, n_links, 3) drives the links as active strain (row k at step k) when
         ``act.muscles_on``; supported segments are moved by ``apply_support``.  t0 [s] is unused.
         """
-        fem, s, rb = self.fem, self.solver, self.rigid
         if act is None or not act.muscles_on:
             self.phys[K.MUSCLES_ON] = 0.0
             buf = self._no_muscle
         else:
             self.phys[K.MUSCLES_ON] = 1.0
             buf = act.muscle
-        return K.advance(fem.x, fem.v, fem.tets, fem.Dm_inv_eff, fem.coef, self._muscle_static + (buf,),
-                         fem.mass, fem._q_ws,
-                         fem._F_work, fem._H_work, fem._inc_ptr, fem._inc_off,
-                         s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-                         s.fixed, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self.att_body, self.att_local,
-                         rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
-                         rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
-                         self.phys, int(n_steps),
-                         self._f_work, self._b_work, self.scratch.f_att, self.scratch.x_att, self.scratch.x_pred, self.scratch.residual,
-                         self.scratch.spine, rb.force, rb.torque, self.scratch.Rb, self.scratch.R, self.scratch.Iw, self.scratch.corner_of,
-                         self.scratch.lin, self.scratch.ang, self.scratch.resp, self.scratch.kn, self.scratch.kt, self.scratch.target, self.scratch.lam, self.acc)
+        return K.advance(*self._chain_args(buf), self.acc, int(n_steps))
+
+    def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
+        """``hybrid.kernels.advance``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch),
+        with muscle_buf (rows, n_links, 3) the links' active strain."""
+        fem, s, rb, sc = self.fem, self.solver, self.rigid, self.scratch
+        links = (fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
+                           self._muscle_static + (muscle_buf,), fem.mass, fem._q_ws, fem._F_work, fem._H_work,
+                           fem._inc_ptr, fem._inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
+                           s.fp_val, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self._f_work, self._b_work)
+        return (links, (s.fixed, self.att_body, self.att_local), rb.pack(),
+                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), sc.coupling())
+
+    def legged_pack(self) -> "HybridLegs":
+        """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
+        without muscles (the fused path does not actuate the links)."""
+        self.phys[K.MUSCLES_ON] = 0.0
+        boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
+                              self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[K.DT])
+        return HybridLegs(boxes, self._chain_args(self._no_muscle) + (self.acc,))
 
     @cached_property
     def _no_muscle(self) -> np.ndarray:
@@ -641,6 +652,18 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
+# ``hybrid.kernels.advance``'s arguments without n_steps
+HybridLegs = namedtuple("HybridLegs", "boxes chain")
+
+
+def _hybrid_legged_step(P):
+    """``legged_chunk.step``: one coupled step."""
+    return K.advance(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+
+
+register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
+
 BACKEND = BodySpec(
     name="hybrid",
     description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered "

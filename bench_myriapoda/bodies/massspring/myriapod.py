@@ -12,7 +12,8 @@ point masses (symplectic Euler, the suite's shared ground contact
 ``contact_kernels``, like the hybrid's free FEM nodes).
 
 Coupling: the hybrid's three staggered steps (paper Sec. 3), inside one numba
-kernel (``advance_chain``) running n steps per call:
+kernel running n steps per call (the rigid segment chain's ``rigid_chain.advance_chain``, with
+this module's spring links, ``SpringLinks``, as its link element):
 
 1. spring forces at (x^n, v^n); free nodes: v += dt (f/m + g), ground contact,
    x += dt v;
@@ -37,6 +38,7 @@ nodes weigh ``creature.mass_kg``.
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -47,11 +49,14 @@ from scipy.spatial.transform import Rotation
 from ...world.terrain import terrain_from_scenario
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
-from ..friction_kernels import CONTACT_DISTANCE, friction_params
-from ..hybrid.kernels import (rigid_segments_step, ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED,
-                              N_ACC, N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP,
-                              VEL_ITERATIONS, VEL_TOLERANCE, link_spines, place_attached_nodes)
+from ..friction_kernels import friction_params
+from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED, N_ACC,
+                           N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP, VEL_ITERATIONS,
+                           VEL_TOLERANCE, Attachment, Boxes, Coupling, World, advance_chain, chain_scalars, link_spines, place_attached_nodes,
+                           register_link)
+from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
+from ..legged_chunk import register
 from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
 from ..placement import initial_transform
 from ..rigid import ContactSettings, RigidBoxes
@@ -127,95 +132,67 @@ def build_chain(lay: SegmentChainLayout, density: float) -> ChainMesh:
                      np.concatenate(attached), np.concatenate(att_body), centres)
 
 
-@njit(cache=True, error_model="numpy")
-def advance_chain(x, v, mass, free, fixed, att_body, att_local, node_link, springs, stiffness, damping, rest,
-                  c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
-                  gravity, terr_kind, terr, fric_model, fric, phys, n_steps,
-                  f_work, f_att, x_att, x_pred, residual, spine, force, torque, Rb,
-                  R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc):
-    """Advance the rigid-spring chain ``n_steps`` staggered steps (module docstring); return (steps, status).
+# The spring link element of the rigid segment chain (``rigid_chain.link_step``): x, v (n_nodes, 3) [m], [m/s]
+# UPDATED (attached rows rewritten from the boxes every step); n_free the free nodes; mass (n_nodes,) [kg]; free
+# (n_free,) node ids; node_link (n_nodes,); springs (n_springs, 2), stiffness [N/m], damping [N s/m], rest [m]
+# (n_springs,); scratch f_work (n_nodes, 3).
+SpringLinks = namedtuple("SpringLinks", "x v n_free mass free node_link springs stiffness damping rest f_work")
 
-    Nodes: x, v (n_nodes, 3) [m], [m/s] UPDATED (attached rows rewritten from
-    the boxes every step); mass (n_nodes,) [kg]; free (n_free,), fixed
-    (n_fixed,) node ids; att_body (n_fixed,), att_local (n_fixed, 3) [m] box
-    and body-frame position of each attached node (``fixed`` order);
-    node_link (n_nodes,).  Springs: springs (n_springs, 2), stiffness [N/m],
-    damping [N s/m], rest [m] (n_springs,).  Boxes (``rigid_kernels``
-    conventions): c, q, vr, w, impulse_cache UPDATED; rmass, inertia_body,
-    half_extents, kinematic (kinematic boxes are not stepped: they hold the
-    pose and velocity ``set_support`` gave them).  World: gravity (3,)
-    [m/s^2]; terr_kind, terr; fric_model, fric (free nodes); phys (N_PHYS,) in
-    ``hybrid.kernels``' layout.  Scratch: f_work (n_nodes, 3); f_att, x_att,
-    x_pred (n_fixed, 3); residual (n_fixed,); spine (n_links, 3); force,
-    torque (n_rigid, 3); Rb (n_rigid, 3, 3); the contact scratch of
-    ``rigid_kernels._solve_contacts``.  acc (N_ACC,) ACCUMULATES the
-    statistics of ``hybrid.kernels`` (its slow-tet slot stays 0).
-    """
+
+def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
+    """``rigid_chain.link_step`` of the spring links: step 1 of the module docstring (spring forces at
+    (x^n, v^n); free nodes: v += dt (f/m + g), ground contact, x += dt v)."""
+    x, v, n_free, mass, free, node_link, springs, stiffness, damping, rest, f_work = L
+    fixed = A.fixed
+    gravity, terr_kind, terr, fric_model, fric, phys = W
+    f_att, x_att, x_pred, spine = C.f_att, C.x_att, C.x_pred, C.spine
     n_fixed = fixed.shape[0]
-    n_free = free.shape[0]
-    n_rigid = c.shape[0]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    max_pen = phys[MAX_PEN]
-    vmax = phys[MAX_SPEED]
+    dt, r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
     vmax2 = vmax * vmax
-    phys[RIGID_MU]
-    phys[RIGID_RESTITUTION]
-    phys[BOUNCE_THRESHOLD]
-    int(phys[VEL_ITERATIONS])
-    phys[VEL_TOLERANCE]
-    int(phys[POS_ITERATIONS])
-    phys[POS_BETA]
-    phys[SLOP]
-    contact_dist = fric[CONTACT_DISTANCE]
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
-    n_points = n_free + rk.N_CORNERS * n_rigid
-    for step in range(n_steps):
-        status = OK
-        # ---------------- (1) spring forces at step n; free nodes advance
-        f_work[:, :] = 0.0
-        spring_forces(x, v, springs, stiffness, damping, rest, f_work)
-        for a in range(n_fixed):
-            p = fixed[a]
-            for d in range(3):
-                f_att[a, d] = f_work[p, d]
-                x_att[a, d] = x[p, d]
-                x_pred[a, d] = x[p, d] + dt * v[p, d]
-        link_spines(c, spine)
-        n_contact = 0
-        for k in range(n_free):
-            i = free[k]
-            inv_m = 1.0 / mass[i]
-            vx = v[i, 0] + dt * (f_work[i, 0] * inv_m + gx)
-            vy = v[i, 1] + dt * (f_work[i, 1] * inv_m + gy)
-            vz = v[i, 2] + dt * (f_work[i, 2] * inv_m + gz)
-            st = advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, contact_dist, vmax2)
-            if st != NOT_CLEAR:  # in the air: moved, as advance_point would
-                if st != OK:
-                    status = st
-                continue
-            s = node_link[i]
-            touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2], dt,
-                                         terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
-                                         vmax2, acc, False, 0.0, 0.0, 0.0)
-            n_contact += touching
+    status = OK
+    f_work[:, :] = 0.0
+    spring_forces(x, v, springs, stiffness, damping, rest, f_work)
+    for a in range(n_fixed):
+        p = fixed[a]
+        for d in range(3):
+            f_att[a, d] = f_work[p, d]
+            x_att[a, d] = x[p, d]
+            x_pred[a, d] = x[p, d] + dt * v[p, d]
+    link_spines(B.c, spine)
+    n_contact = 0
+    for k in range(n_free):
+        i = free[k]
+        inv_m = 1.0 / mass[i]
+        vx = v[i, 0] + dt * (f_work[i, 0] * inv_m + gx)
+        vy = v[i, 1] + dt * (f_work[i, 1] * inv_m + gy)
+        vz = v[i, 2] + dt * (f_work[i, 2] * inv_m + gz)
+        st = advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, flat, ground, contact_dist, vmax2,
+                                    True)
+        if st != NOT_CLEAR:  # in the air: moved, as advance_point would
             if st != OK:
                 status = st
-
-        # ---------------- (2) rigid step under the springs' forces, (3) attached nodes follow
-        st, nc = rigid_segments_step(fixed, att_body, att_local, f_att, x_att, x, v, x_pred, residual,
-                                     c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache,
-                                     gravity, terr_kind, terr, fric, phys, force, torque, Rb,
-                                     R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, acc)
-        n_contact += nc
+            continue
+        s = node_link[i]
+        touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2], dt,
+                                     terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
+                                     vmax2, acc, False, 0.0, 0.0, 0.0)
+        n_contact += touching
         if st != OK:
             status = st
-        acc[ACC_CONTACT_SUM] += n_contact / n_points
-        acc[ACC_STEPS] += 1.0
-        if status != OK:
-            return step + 1, status
-    return n_steps, OK
+    return status, n_contact
+
+
+register_link(SpringLinks, _spring_links_step)
+
+
+@njit(cache=True, error_model="numpy")
+def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
+    """``rigid_chain.advance_chain`` of the spring-linked chain from Python: the packs as plain tuples in the
+    fields' order of ``SpringLinks``, ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` (``rigid_chain``'s
+    note on why); returns (steps, status)."""
+    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
+                         acc, n_steps)
 
 
 class BodyRigidSpringChain(SupportedSegments):
@@ -320,15 +297,20 @@ class BodyRigidSpringChain(SupportedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        rb = self.rigid
-        return advance_chain(self.x, self.v, self.mass, self.free, self.fixed, self.att_body, self.att_local,
-                             self.mesh.node_link, self.springs, self.stiffness, self.damping, self.rest,
-                             rb.c, rb.q, rb.v, rb.w, rb.mass, rb.inertia_body, rb.half_extents, rb.kinematic,
-                             rb.impulse_cache, self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric,
-                             self.phys, int(n_steps), self._f_work, self.scratch.f_att, self.scratch.x_att, self.scratch.x_pred,
-                             self.scratch.residual, self.scratch.spine, rb.force, rb.torque, self.scratch.Rb, self.scratch.R, self.scratch.Iw,
-                             self.scratch.corner_of, self.scratch.lin, self.scratch.ang, self.scratch.resp, self.scratch.kn, self.scratch.kt, self.scratch.target,
-                             self.scratch.lam, self.acc)
+        return advance_spring_chain(*self._chain_args(), self.acc, int(n_steps))
+
+    def _chain_args(self) -> tuple:
+        """``advance_spring_chain``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch)."""
+        links = (self.x, self.v, len(self.free), self.mass, self.free, self.mesh.node_link, self.springs,
+                            self.stiffness, self.damping, self.rest, self._f_work)
+        return (links, (self.fixed, self.att_body, self.att_local), self.rigid.pack(),
+                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), self.scratch.coupling())
+
+    def legged_pack(self) -> "SpringChainLegs":
+        """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
+        boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
+                              self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[DT])
+        return SpringChainLegs(boxes, self._chain_args() + (self.acc,))
 
     def _state(self):
         rb = self.rigid
@@ -453,3 +435,16 @@ class BodyRigidSpringChain(SupportedSegments):
 
 
 __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout"]
+
+
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
+# ``advance_spring_chain``'s arguments without n_steps
+SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
+
+
+def _spring_chain_legged_step(P):
+    """``legged_chunk.step``: one coupled step."""
+    return advance_spring_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+
+
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)

@@ -82,6 +82,10 @@ _INTS = (("terr_kind", I_TERR_KIND), ("min_stance", I_MIN_STANCE), ("walk_mode",
 _STATE_INTS = _INTS[5:]
 
 
+# the stages of ``controller.STEP_ORDER`` that this kernel does not run (``unsupported_reason``)
+PYTHON_ONLY = ("food", "body_wave")
+
+
 def unsupported_reason(controller) -> str | None:
     """Why ``controller_step`` cannot stand in for ``controller.step`` (None when it can)."""
     if controller.has_food:
@@ -274,9 +278,58 @@ def finish_chunk(fs, ints, A):
         ints[I_ANT_PENDING] = 0
 
 
+@njit(cache=True, inline="always")
+def _switch_brain(brain, t, fs, ints, has_ant, contact):
+    """``MyriapodController._switch_brain`` (without TROPHOTROPISM): the brain mode after this step's contacts."""
+    if brain != ADJUSTMENT and brain != CONTROL:
+        left = has_ant and contact[0]
+        right = has_ant and contact[1]
+        if left or right:
+            if brain != AVOIDANCE or (left and right):
+                fs[F_AVOID_DIR] = _avoidance_turn(left, right, ints[I_PRIORITY_LEFT] != 0)
+            fs[F_AVOID_UNTIL] = t + fs[F_AVOID_HOLD]
+            brain = AVOIDANCE
+        elif brain == AVOIDANCE and t < fs[F_AVOID_UNTIL]:
+            pass
+        else:
+            brain = RANDOM_WALK
+    return brain
+
+
+@njit(cache=True, inline="always")
+def _head_command(brain, t, dt, fs, ints, rnd, sched_t, sched_speed, sched_rate):
+    """``MyriapodController._head_command`` (without TROPHOTROPISM): (speed [m/s], turn rate [rad/s], turn
+    direction +1 left / -1 right / 0) of the head; a RANDOM-WALK target drawn from rnd."""
+    speed, rate, turn_dir = 0.0, 0.0, 0.0
+    if brain == AVOIDANCE:
+        speed, rate, turn_dir = fs[F_AVOID_SPEED], fs[F_AVOID_RATE], fs[F_AVOID_DIR]
+    elif brain == CONTROL:
+        k = 0  # np.searchsorted(times, t, side="right") - 1, at least 0
+        while k < sched_t.shape[0] and sched_t[k] <= t:
+            k += 1
+        k = max(k - 1, 0)
+        r = sched_rate[k]
+        speed, rate = sched_speed[k], abs(r)
+        turn_dir = math.copysign(1.0, r) if r != 0 else 0.0
+    elif brain == RANDOM_WALK:
+        turn_rate = fs[F_TURN_RATE]
+        if abs(fs[F_TURN_LEFT]) <= turn_rate * dt:
+            u = rnd[ints[I_RND_USED]]
+            ints[I_RND_USED] += 1
+            lo, hi = -fs[F_TURN_MAX], fs[F_TURN_MAX]
+            fs[F_TURN_LEFT] = lo + (hi - lo) * u
+        tl = fs[F_TURN_LEFT]
+        st = math.copysign(min(abs(tl), turn_rate * dt), tl)
+        fs[F_TURN_LEFT] = tl - st
+        speed, rate = fs[F_HEAD_SPEED], turn_rate
+        turn_dir = math.copysign(1.0, st) if st != 0 else 0.0
+    return speed, rate, turn_dir
+
+
 @njit(cache=True)
 def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
-    """One ``MyriapodController.step`` (its docstring has the order) for the step starting at t [s].
+    """One ``MyriapodController.step`` for the step starting at t [s], its stages in the order of
+    ``controller.STEP_ORDER`` (but those of ``PYTHON_ONLY``; tests/test_controller_step_order.py).
 
     c (n_seg, 3) [m], R (n_seg, 3, 3): the segments' current poses (read only).  fs, ints: the
     scalars (``F_*``, ``I_*``), updated.  A: the controller's arrays (``ControllerState.pack``),
@@ -351,44 +404,10 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
         brain = ints[I_WALK_MODE]
         fs[F_T_WALK] = t
         fs[F_TOUCH_AT_WALK] = frac
-    if brain != ADJUSTMENT and brain != CONTROL:  # _switch_brain
-        left = has_ant and contact[0]
-        right = has_ant and contact[1]
-        if left or right:
-            if brain != AVOIDANCE or (left and right):
-                fs[F_AVOID_DIR] = _avoidance_turn(left, right, ints[I_PRIORITY_LEFT] != 0)
-            fs[F_AVOID_UNTIL] = t + fs[F_AVOID_HOLD]
-            brain = AVOIDANCE
-        elif brain == AVOIDANCE and t < fs[F_AVOID_UNTIL]:
-            pass
-        else:
-            brain = RANDOM_WALK
+    brain = _switch_brain(brain, t, fs, ints, has_ant, contact)
     ints[I_BRAIN] = brain
     brain_steps[brain] += 1
-    # _head_command
-    speed, rate, turn_dir = 0.0, 0.0, 0.0
-    if brain == AVOIDANCE:
-        speed, rate, turn_dir = fs[F_AVOID_SPEED], fs[F_AVOID_RATE], fs[F_AVOID_DIR]
-    elif brain == CONTROL:
-        k = 0  # np.searchsorted(times, t, side="right") - 1, at least 0
-        while k < sched_t.shape[0] and sched_t[k] <= t:
-            k += 1
-        k = max(k - 1, 0)
-        r = sched_rate[k]
-        speed, rate = sched_speed[k], abs(r)
-        turn_dir = math.copysign(1.0, r) if r != 0 else 0.0
-    elif brain == RANDOM_WALK:
-        turn_rate = fs[F_TURN_RATE]
-        if abs(fs[F_TURN_LEFT]) <= turn_rate * dt:
-            u = rnd[ints[I_RND_USED]]
-            ints[I_RND_USED] += 1
-            lo, hi = -fs[F_TURN_MAX], fs[F_TURN_MAX]
-            fs[F_TURN_LEFT] = lo + (hi - lo) * u
-        tl = fs[F_TURN_LEFT]
-        st = math.copysign(min(abs(tl), turn_rate * dt), tl)
-        fs[F_TURN_LEFT] = tl - st
-        speed, rate = fs[F_HEAD_SPEED], turn_rate
-        turn_dir = math.copysign(1.0, st) if st != 0 else 0.0
+    speed, rate, turn_dir = _head_command(brain, t, dt, fs, ints, rnd, sched_t, sched_speed, sched_rate)
     turn = turn_dir * rate * dt
     tm = fs[F_TURN_MEMORY]
     if ((brain == AVOIDANCE or brain == TROPHOTROPISM) and abs(tm + turn) > fs[F_MAX_BODY_TURN]

@@ -53,6 +53,31 @@ from . import switcher as SW
 from . import targeter as TG
 from .antennae import LEFT, RIGHT, Antennae
 
+# The stages of one step, in order (paper Sec. 6; ``MyriapodController.step``'s docstring says what each does).
+# This is the one statement of the order: ``MyriapodController.step`` runs these stages in this order and
+# ``compiled.controller_step`` (the fused path) all but ``compiled.PYTHON_ONLY`` in the same order, and
+# tests/test_controller_step_order.py reads both functions' calls and fails when either departs from it.
+STEP_ORDER = (
+    "tracking",               # how well the body followed the last step's targets
+    "forward_kinematics",     # the tips of the starting pose (first step only)
+    "antennae",               # 1. antennae
+    "food",                   #    their food signals, eating
+    "touching",               # 2. head: which tips touch the ground
+    "brain",                  #    the brain mode
+    "head",                   #    the head's command
+    "supported",              # 3. rigid segments: which are supported
+    "targeter",               #    their target poses (Balancer, Follower)
+    "walls",                  #    the carried segments kept out of walls
+    "body_wave",              #    the lateral body wave on the targets
+    "switcher",               # 4. legs: the Switcher
+    "stop_legs",              #    swing moves cut at surfaces
+    "stance_tips",            #    tips of legs entering STANCE
+    "touchdown",              #    those tips onto the surface
+    "stance_ik",              #    STANCE legs' IK and theta_min
+    "forward_kinematics",     #    the other legs' FK
+    "knees_and_penetration",  #    STANCE knees inside lift next step; deepest penetration
+)
+
 # brain modes (Sec. 4.3) in priority order
 ADJUSTMENT, AVOIDANCE, TROPHOTROPISM, RANDOM_WALK, CONTROL = range(5)
 BRAIN_MODE_NAMES = ("ADJUSTMENT", "AVOIDANCE", "TROPHOTROPISM", "RANDOM-WALK", "CONTROL")
@@ -271,14 +296,11 @@ class MyriapodController:
         self._wave_yaw = np.zeros(n_segments)   # yaw offset [rad] each segment's pose carries now
 
     # ------------------------------------------------------------------ the head (Sec. 4.3)
-    def _sense(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
-        """Sec. 6 step 1: antennae on the head's current pose, their food signals; eat what is in reach."""
-        ant = self.antennae
-        if ant is not None:
-            ant.step(c[0], R[0], t)
-            if self.has_food:
-                self.food.signals_at_tips(ant.points, self.food_signal)
+    def _sense_food(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
+        """Sec. 6 step 1, after the antennae: their tips' food signals; eat what is in reach."""
         if self.has_food:
+            if self.antennae is not None:
+                self.food.signals_at_tips(self.antennae.points, self.food_signal)
             self.food.eat(c[0], R[0], t)
 
     def _switch_brain(self, t: float) -> None:
@@ -342,7 +364,9 @@ class MyriapodController:
         if self._step == 0:  # the tips of the starting pose
             L.legs_forward_kinematics(c, R, self.geom, self.angles, self._O, self._M, self.tips)
         # 1. antennae (and food)
-        self._sense(c, R, t)
+        if self.antennae is not None:
+            self.antennae.step(c[0], R[0], t)
+        self._sense_food(c, R, t)
         # 2. head: brain mode
         L.tips_touching(self.terr_kind, self.terr, self.tips, self.contact_distance, self.touching)
         if self.brain == ADJUSTMENT and self.touching.mean() > self.majority:

@@ -1,0 +1,75 @@
+"""The legs' hold on a chain of rigid boxes joined by links: the fused legged walk's poses, support
+and sample (``legged_chunk``) for the hybrid and the legged mass-spring bodies.
+
+Both bodies carry their supported boxes the same way (their ``set_support``): kinematic =
+supported | held, the kinematic boxes driven to their targets (``kinematic_targets.drive_to_targets``,
+paper Sec. 4.1), the attached link nodes put back on the boxes (``rigid_chain.place_on_box``,
+the arithmetic of ``place_attached_nodes`` without its coupling residual, which the body's step
+overwrites before reading it, so the fused support skips it).  Only their step differs, so each
+body's pack is ``(boxes, step arguments)`` with ``boxes`` a ``CarriedBoxes``.
+"""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+from numba import njit
+
+from . import rigid_kernels as rk
+from .rigid_chain import place_on_box
+from .kinematic_targets import drive_to_targets
+from .legged_chunk import copy_frames, copy_rows
+
+# c, q, vr, w, kinematic: the boxes (``rigid.RigidBoxes``); held (n_seg,) bool: boxes held whatever the
+# controller asks (the suspended head); x, v (n_nodes, 3): the link nodes; fixed, att_body, att_local: the
+# attachment; link_nodes (n_links, m) int64: each link's nodes; Rseg, Rb (n_seg, 3, 3): the rotations before
+# and after the support (scratch; Rb is the body's own, which its step overwrites); qtmp (4,) scratch;
+# dt [s] the time step.
+CarriedBoxes = namedtuple("CarriedBoxes", "c q vr w kinematic held x v fixed att_body att_local link_nodes "
+                                          "Rseg Rb qtmp dt")
+
+
+def carried_boxes(rb, held, x, v, fixed, att_body, att_local, link_nodes, Rb, qtmp, dt) -> CarriedBoxes:
+    """The pack of a body's boxes ``rb`` (``rigid.RigidBoxes``) and its links (module docstring)."""
+    return CarriedBoxes(rb.c, rb.q, rb.v, rb.w, rb.kinematic, held, x, v, fixed, att_body, att_local,
+                        np.ascontiguousarray(link_nodes, dtype=np.int64), np.zeros((len(rb.c), 3, 3)), Rb, qtmp,
+                        float(dt))
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def box_poses(P):
+    """``legged_chunk.poses`` of a pack P whose ``boxes`` are a ``CarriedBoxes`` B: the box centres and their
+    rotations (from the quaternions, into B.Rseg)."""
+    B = P.boxes
+    rk.quat_to_matrix(B.q, B.Rseg)
+    return B.c, B.Rseg
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def carry_boxes(P, kinematic, c_T, R_T):
+    """``legged_chunk.carry`` (module docstring) of P.boxes, after ``box_poses`` (B.Rseg holds the rotations:
+    q has not changed since)."""
+    B = P.boxes
+    for i in range(B.c.shape[0]):
+        B.kinematic[i] = kinematic[i] or B.held[i]
+    drive_to_targets(B.c, B.q, B.vr, B.w, B.Rseg, B.kinematic, c_T, R_T, B.dt, B.qtmp)
+    rk.quat_to_matrix(B.q, B.Rb)
+    for a in range(B.fixed.shape[0]):
+        place_on_box(a, B.att_body[a], B.fixed[a], B.att_local, B.c, B.vr, B.w, B.Rb, B.x, B.v)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def sample_boxes(P, c_out, R_out, links_out):
+    """``legged_chunk.sample`` of P.boxes after ``carry_boxes``: the boxes' poses, and each link's centre as
+    the mean of its nodes."""
+    B = P.boxes
+    copy_rows(B.c, c_out)
+    copy_frames(B.Rb, R_out)   # carry_boxes left the new rotations there
+    link_nodes = B.link_nodes
+    n_links, per_link = link_nodes.shape[0], link_nodes.shape[1]
+    for li in range(n_links):
+        for a in range(3):
+            s = 0.0
+            for j in range(per_link):
+                s += B.x[link_nodes[li, j], a]
+            links_out[li, a] = s / per_link

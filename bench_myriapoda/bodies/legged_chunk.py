@@ -1,0 +1,111 @@
+"""How a body with legs takes part in the fused legged walk: four kernels on one argument pack.
+
+The fused legged walk (``fused.legged_walk``) runs a legged body and its leg controller for many
+time steps in one compiled call.  Each step is, in this order (the Python path's order: the
+runner's ``body.sense`` -> ``controller.step`` -> ``body.apply_support`` -> the legged monitor's
+sample -> ``body.advance(t, 1)``):
+
+1. ``poses(P) -> (c, R)``: the segments' current poses, c (n_seg, 3) [m] and R (n_seg, 3, 3),
+   as the body's ``segment_poses`` gives them (arrays of P, read by the controller's step);
+2. the controller's step (not the body's business);
+3. ``carry(P, kinematic, c_T, R_T)``: the body's ``set_support`` on the controller's support,
+   kinematic (n_seg,) bool, c_T (n_seg, 3) [m], R_T (n_seg, 3, 3);
+4. ``sample(P, c_out, R_out, links_out)``: on a step the timeline records, the poses after the
+   support into c_out (n_seg, 3) [m] and R_out (n_seg, 3, 3), and the links' centres (what the
+   body's ``segment_centers`` gives at odd rows) into links_out (n_seg - 1, 3) [m];
+5. ``step(P) -> (steps done, status code)``: one step of the body's own kernel
+   (``step_status`` codes).
+
+The interface: a body offers the fused path by a method ``legged_pack() -> P`` (``LeggedChunkBody``),
+P a namedtuple of a class its own module declares and hands to ``register`` with its four
+implementations.  ``register`` adds them as numba overloads of the four functions below for
+that class, so the fused kernel is written once against this interface, compiled once per
+body's pack type (numba's cache keeps each), and never names a body.  The implementations run
+the same kernels on the same arrays as the body's Python methods, so the two paths give the same
+doubles (tests/test_fused_walk.py).
+"""
+from __future__ import annotations
+
+from typing import Protocol, runtime_checkable
+
+from numba import njit
+from numba.core import types
+from numba.extending import overload
+
+
+@runtime_checkable
+class LeggedChunkBody(Protocol):
+    """A body that the fused legged walk can drive (module docstring)."""
+
+    def legged_pack(self) -> tuple:
+        """The argument pack P of this body's four kernels: a namedtuple of a ``register``-ed class,
+        referring to the body's own arrays (no copy), current for the next chunk of steps."""
+
+
+def poses(P):
+    """Step 1 (module docstring); compiled code only."""
+    raise NotImplementedError("legged_chunk.poses runs in compiled code, on a registered pack")
+
+
+def carry(P, kinematic, c_T, R_T):
+    """Step 3 (module docstring); compiled code only."""
+    raise NotImplementedError("legged_chunk.carry runs in compiled code, on a registered pack")
+
+
+def sample(P, c_out, R_out, links_out):
+    """Step 4 (module docstring); compiled code only."""
+    raise NotImplementedError("legged_chunk.sample runs in compiled code, on a registered pack")
+
+
+def step(P):
+    """Step 5 (module docstring); compiled code only."""
+    raise NotImplementedError("legged_chunk.step runs in compiled code, on a registered pack")
+
+
+def _of(P, cls) -> bool:
+    return isinstance(P, types.BaseNamedTuple) and P.instance_class is cls
+
+
+def register(cls, poses_impl, carry_impl, sample_impl, step_impl) -> None:
+    """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample``, ``step``)
+    the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
+    inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function."""
+    poses_impl, carry_impl, sample_impl, step_impl = (getattr(f, "py_func", f) for f in
+                                                      (poses_impl, carry_impl, sample_impl, step_impl))
+
+    @overload(poses, inline="always")
+    def _poses(P):
+        if _of(P, cls):
+            return poses_impl
+
+    @overload(carry, inline="always")
+    def _carry(P, kinematic, c_T, R_T):
+        if _of(P, cls):
+            return carry_impl
+
+    @overload(sample, inline="always")
+    def _sample(P, c_out, R_out, links_out):
+        if _of(P, cls):
+            return sample_impl
+
+    @overload(step)
+    def _step(P):
+        if _of(P, cls):
+            return step_impl
+
+
+# The rows are copied element-wise, not as out[:] = a: an array assigned to a slice compiles numba's
+# shape-mismatch message (string formatting, seconds of compile per process; README Development notes).
+@njit(cache=True, error_model="numpy", inline="always")
+def copy_rows(a, out):
+    """out[i, k] = a[i, k] for a, out (n, 3)."""
+    for i in range(a.shape[0]):
+        out[i, 0], out[i, 1], out[i, 2] = a[i, 0], a[i, 1], a[i, 2]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def copy_frames(R, out):
+    """out[i] = R[i] for R, out (n, 3, 3)."""
+    for i in range(R.shape[0]):
+        for r in range(3):
+            out[i, r, 0], out[i, r, 1], out[i, r, 2] = R[i, r, 0], R[i, r, 1], R[i, r, 2]
