@@ -21,3 +21,5 @@ def test_quick_matrix_kernels_have_one_signature_each():
     assert report["kernels"] >= 100, report  # the groups ran and were re-typed (about 150 kernels)
     assert report["typed"] >= report["kernels"]
     assert report["extra"] == {}, report["extra"]
+    # the per-body list stays exact: a kernel that no longer runs once per body model leaves it
+    assert report["per_body"] == report["per_body_expected"], report["per_body"]
