@@ -131,7 +131,8 @@ WP_NOISE = 0.1  # an error may rise by 10 % of itself (plus 1e-4) from one dt to
 
 @pytest.fixture(scope="module")
 def work_precision(tmp_path_factory):
-    from bench_myriapoda.validation.work_precision import Quantity, run_work_precision
+    from bench_myriapoda.report.work_precision import run_work_precision
+    from bench_myriapoda.validation.work_precision import Quantity
     out = tmp_path_factory.mktemp("wp")
     # a small hanging worm (6 segments, 0.4 s, weak gravity) on every body: the same code as the full diagrams
     q = Quantity("hanging_elongation", "hanging worm (test size)", "worm", "hang", None, "hanging_elongation_m",
