@@ -12,6 +12,7 @@ from bench_myriapoda.validation import analytic, references
 from bench_myriapoda.validation.core import FAIL, INFO, NA, PASS, Context
 from bench_myriapoda.validation.registry import CHECKS
 from bench_myriapoda.validation.run import run_checks, select
+from matrix_toml import WORM_ON_A_CLIFF
 
 # Checks whose measured verdict is FAIL today, with the reason; the test expects the failure (strict:
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
@@ -159,18 +160,12 @@ def test_work_precision_plots_have_one_curve_per_body_and_error_falls_with_dt(wo
     assert {p["resolution"] for p in curves[2]["resolution_points"]} == {4}     # hybrid: >= 3 nodes
 
 
+# (TOML data: matrix blocks are alike by design; ``duplicates`` pairs them with other test matrices)
 REPORT_MATRIX = """
 [matrix]
 name = "validation-report-test"
 seeds = [0]
-
-[[block]]
-creatures = ["worm"]
-bodies = ["massspring"]
-scenarios = ["cliff"]
-gaits = ["rectilinear"]
-duration = 0.6
-
+""" + WORM_ON_A_CLIFF + """
 [[block]]
 creatures = ["snake"]
 bodies = ["massspring"]
