@@ -14,7 +14,7 @@ from __future__ import annotations
 from .bodies.fem.body import BACKEND as FEM
 from .bodies.hybrid.body import BACKEND as HYBRID
 from .bodies.massspring.body import BACKEND as MASSSPRING
-from .controllers.muscle_waves import GAIT_DESCRIPTIONS, MuscleWaveController, PassiveController
+from .controllers.muscle_waves import GAIT_DESCRIPTIONS, MuscleWaveConfig, MuscleWaveController, PassiveController
 from .controllers.myriapod.controller import MyriapodController
 from .core.protocols import LEGS, MUSCLES, SEGMENTS
 from .core.specs import BodySpec, GaitSpec
@@ -22,7 +22,8 @@ from .core.specs import BodySpec, GaitSpec
 BODIES: dict[str, BodySpec] = {spec.name: spec for spec in (MASSSPRING, FEM, HYBRID)}
 
 GAITS: dict[str, GaitSpec] = {
-    **{name: GaitSpec(name=name, description=desc, requires=frozenset({MUSCLES}), controller=MuscleWaveController)
+    **{name: GaitSpec(name=name, description=desc, requires=frozenset({MUSCLES}), controller=MuscleWaveController,
+                     config_cls=MuscleWaveConfig)
        for name, desc in GAIT_DESCRIPTIONS.items()},
     "passive": GaitSpec(name="passive", description="no actuation: the body only falls, hangs and collides",
                         requires=frozenset(), controller=PassiveController),

@@ -299,15 +299,10 @@ def cmd_list(args) -> int:
     print("creatures:")
     for n, c in cat["creatures"].items():
         print(f"  {n:<14} gaits: {', '.join(c['gaits'])} (default {c['default_gait']}); bodies: {', '.join(c['bodies'])}")
-    print("bodies:")
-    for n, b in cat["bodies"].items():
-        print(f"  {n:<14} {b['description']}")
-    print("gaits:")
-    for n, g in cat["gaits"].items():
-        print(f"  {n:<20} {g['description']}")
-    print("scenarios:")
-    for n, s in cat["scenarios"].items():
-        print(f"  {n:<14} {s['description']}")
+    for section, width in (("bodies", 14), ("gaits", 20), ("scenarios", 14)):
+        print(f"{section}:")
+        for n, entry in cat[section].items():
+            print(f"  {n:<{width}} {entry['description']}")
     print("supported (creature, body, gait):")
     for c in cat["supported"]:
         print(f"  {c['creature']}, {c['body']}, {c['gait']}")
@@ -1008,7 +1003,7 @@ def cmd_validate(args) -> int:
                             progress=(lambda m: print(f"validate: {m}", file=sys.stderr)) if tty else None)
         wp = None
         if args.work_precision:
-            from .validation.work_precision import run_work_precision
+            from .report.work_precision import run_work_precision
             wp = run_work_precision(out_dir, bodies, args.quick, progress=(
                 lambda m: print(f"work-precision: {m}", file=sys.stderr)) if tty else None)
     wall = time.perf_counter() - t0

@@ -25,6 +25,7 @@ print("wave:", r.labels.get("wave_direction"), " phase lag:", r.metrics.get("pha
 t, states, _tips = r.raw.extra["leg_timeline"]       # (T,) [s], (T, n_legs) state codes, (T, n_legs, 3) [m]
 png = plot_gait_diagram(t, states, Path(tempfile.mkdtemp()) / "gait.png", last_seconds=1.0,
                         title=f"centipede / hybrid / walk: {r.labels.get('wave_direction', '')} wave")
+# show the PNG (each gallery script stands alone, so these lines recur in them: deliberate)
 image = plt.imread(png)
 fig, ax = plt.subplots(figsize=(image.shape[1] / 100, image.shape[0] / 100), dpi=100)
 ax.imshow(image)

@@ -37,6 +37,7 @@ for line in R.format_table(R.compare(second, baseline)):
 
 png = plot_regress_history(R.load_history(store), Path(tempfile.mkdtemp()) / "history.png",
                            title="normalized throughput, two runs")
+# show the PNG (each gallery script stands alone, so these lines recur in them: deliberate)
 image = plt.imread(png)
 fig, ax = plt.subplots(figsize=(image.shape[1] / 100, image.shape[0] / 100), dpi=100)
 ax.imshow(image)

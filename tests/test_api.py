@@ -17,6 +17,7 @@ import bench_myriapoda as bm
 from bench_myriapoda.cli import main
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.core.errors import InputError
+from cli_argv import WORM_RUN, with_flags
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ("worm", "massspring", "flat")
@@ -48,13 +49,7 @@ def test_bad_input_raises_input_error_with_the_cli_message(capsys, kwargs, flags
     args = {"creature": "worm", "body": "massspring", "scenario": "flat", **kwargs}
     with pytest.raises(InputError) as exc:
         bm.run(**args)
-    argv = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--no-store"]
-    for i in range(0, len(flags), 2):
-        if flags[i] in argv:
-            argv[argv.index(flags[i]) + 1] = flags[i + 1]
-        else:
-            argv += flags[i:i + 2]
-    assert main(argv) == 2
+    assert main(with_flags(WORM_RUN, flags)) == 2
     assert capsys.readouterr().err.strip() == f"bench-myriapoda: error: {exc.value}"
 
 

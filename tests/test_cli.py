@@ -107,6 +107,7 @@ def test_record_writes_an_npz_with_the_series(capsys, tmp_path):
         assert json.loads(str(z["case_json"]))["creature"]["name"] == "worm"
 
 
+# A table of bad command lines, one row each: rows alike by design (``duplicates`` pairs them; deliberate).
 BAD_INPUTS = [
     (["run", "--creature", "dragon", "--body", "massspring", "--scenario", "flat"], "--creature", "worm"),
     (["run", "--creature", "worm", "--body", "jelly", "--scenario", "flat"], "--body", "massspring"),

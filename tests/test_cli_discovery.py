@@ -20,6 +20,7 @@ from bench_myriapoda.core.errors import InputError
 from bench_myriapoda.core.schema import SECTIONS, TOP_LEVEL_SCALARS
 from bench_myriapoda.harness.progress import MatrixProgress, ProgressBar
 from bench_myriapoda.harness.runner import RunResult
+from cli_argv import WORM_RUN, with_flags
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -102,7 +103,7 @@ def test_version(capsys):
     assert exc.value.code == 0 and capsys.readouterr().out.strip() == f"bench-myriapoda {__version__}"
 
 
-RUN = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--no-store"]
+RUN = WORM_RUN
 
 
 @pytest.mark.parametrize("argv, want", [
@@ -116,13 +117,7 @@ RUN = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat"
     (["--set", "durration=3"], "'duration'"),
 ])
 def test_misspelt_names_and_keys_get_a_suggestion(capsys, argv, want):
-    args = list(RUN)
-    for i in range(0, len(argv), 2):
-        if argv[i] in args:
-            args[args.index(argv[i]) + 1] = argv[i + 1]
-        else:
-            args += argv[i:i + 2]
-    assert main(args) == 2
+    assert main(with_flags(RUN, argv)) == 2
     err = capsys.readouterr().err
     assert f"(did you mean {want}?)" in err and len(err.strip().splitlines()) == 1
 

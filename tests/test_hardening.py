@@ -20,6 +20,7 @@ import pytest
 
 from bench_myriapoda.cli import main
 from bench_myriapoda.harness.store import connect
+from matrix_toml import tiny_worm_matrix
 
 ROOT = Path(__file__).resolve().parents[1]
 RUN = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--duration", "0.05"]
@@ -158,17 +159,7 @@ def test_record_or_animate_to_a_directory_or_unwritable_path_is_refused_before_t
 def matrix_dir(tmp_path_factory):
     """A real (tiny) matrix output directory: two short worm runs with their recordings."""
     d = tmp_path_factory.mktemp("mx")
-    m = write(d, "m.toml", """
-        [matrix]
-        name = "tiny"
-        creatures = ["worm"]
-        bodies = ["massspring"]
-        scenarios = ["flat"]
-        duration = 0.1
-        set = { "creature.segments" = 4 }
-        [matrix.grid]
-        "friction.mu_transverse" = [0.3, 0.5]
-    """)
+    m = write(d, "m.toml", tiny_worm_matrix(0.1, {"friction.mu_transverse": [0.3, 0.5]}, name="tiny"))
     out = d / "out"
     assert main(["matrix", str(m), "--out", str(out), "--workers", "1"]) == 0
     return out
@@ -573,16 +564,7 @@ def test_resume_retry_failed_reruns_error_and_timeout_cases(tmp_path, capsys):
     from bench_myriapoda.harness.executors import done_hashes
     from bench_myriapoda.harness.matrix import expand_matrix
 
-    p = write(tmp_path, "m.toml", """
-        [matrix]
-        name = "retry"
-        creatures = ["worm"]
-        bodies = ["massspring"]
-        scenarios = ["flat"]
-        duration = 0.05
-        set = { "creature.segments" = 4 }
-        grid = { "friction.mu_transverse" = [0.2, 0.3, 0.4] }
-    """)
+    p = write(tmp_path, "m.toml", tiny_worm_matrix(0.05, {"friction.mu_transverse": [0.2, 0.3, 0.4]}, name="retry"))
     out = tmp_path / "out"
     assert main(["matrix", str(p), "--out", str(out), "--workers", "1"]) == 0
     store = out / "results.sqlite"

@@ -142,8 +142,6 @@ LAYER_OF = {name: level for level, names in enumerate(LAYERS) for name in names}
 KNOWN_UPWARD = {
     # a mesh terrain's file is checked while the scenario is loaded: item 1 as well
     ("bench_myriapoda.core.schema", "bench_myriapoda.world.meshes"),
-    # the work-precision diagrams are drawn by validation: they move to report/ (item 7, not done)
-    ("bench_myriapoda.validation.work_precision", "bench_myriapoda.report.figure_files"),
 }
 
 
@@ -286,3 +284,45 @@ def test_only_the_store_module_talks_to_the_database():
     bad = {module_name(p): sorted(found) for p in PACKAGE.rglob("*.py")
            if module_name(p) != STORE and (found := store_access(ast.parse(p.read_text(encoding="utf-8"))))}
     assert bad == {}, f"store access outside {STORE}: {bad}"
+
+
+# --------------------------------------------------------------------------- the legged record (issue 30, item 6)
+
+def test_harness_and_metrics_never_import_a_controller():
+    # they read a legged controller through core.leg_timeline's records, whichever controller it is
+    bad = [(m, i) for m, imps in import_graph().items()
+           if m.startswith(("bench_myriapoda.harness", "bench_myriapoda.metrics"))
+           for i in imps if i.startswith("bench_myriapoda.controllers")]
+    assert not bad, f"harness/ or metrics/ imports controllers/: {bad}"
+
+
+def controller_reads(tree: ast.AST) -> set[str]:
+    """Attributes read of a controller in ``tree``: ``controller.X``, ``self.controller.X``, ``ctrl.X`` / ``c.X``
+    where ``ctrl`` / ``c`` was assigned from a controller."""
+    aliases = {"controller"}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Assign) and isinstance(node.value, ast.Attribute) and node.value.attr == "controller":
+            aliases |= {t.id for t in node.targets if isinstance(t, ast.Name)}
+    out = set()
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Attribute) or not isinstance(node.ctx, ast.Load):
+            continue
+        v = node.value
+        if (isinstance(v, ast.Name) and v.id in aliases) or (isinstance(v, ast.Attribute) and v.attr == "controller"):
+            out.add(node.attr)
+    return out
+
+
+def test_the_controller_read_check_finds_one():
+    tree = ast.parse("def f(self, controller):\n    ctrl = self.controller\n"
+                     "    return controller.a, self.controller.b, ctrl.c, self.body.d\n")
+    assert controller_reads(tree) == {"a", "b", "c"}
+
+
+def test_the_legged_harness_reads_only_the_declared_records():
+    # harness/legged.py reads of a controller only what core.leg_timeline.LeggedController declares
+    from bench_myriapoda.core.leg_timeline import LeggedController
+    declared = set(LeggedController.__annotations__) | {n for n in vars(LeggedController) if not n.startswith("_")}
+    found = controller_reads(ast.parse((PACKAGE / "harness" / "legged.py").read_text(encoding="utf-8")))
+    assert found, "the check sees no read at all: it no longer finds the controller"
+    assert found <= declared, f"harness/legged.py reads undeclared controller attributes: {sorted(found - declared)}"

@@ -16,6 +16,7 @@ from bench_myriapoda.cli import main
 from bench_myriapoda.core.errors import InputError
 from bench_myriapoda.harness.executors import run_matrix
 from bench_myriapoda.harness.matrix import expand_matrix
+from matrix_toml import tiny_worm_matrix
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -159,17 +160,8 @@ def test_unknown_creature_via_cli_exits_2_and_writes_nothing(tmp_path, capsys):
 # --------------------------------------------------------------------------- executors
 
 def small_cases(tmp_path):
-    p = write(tmp_path, """
-        [matrix]
-        creatures = ["worm"]
-        bodies = ["massspring"]
-        scenarios = ["flat"]
-        duration = 0.3
-        set = { "creature.segments" = 4 }
-        [matrix.grid]
-        "friction.mu_transverse" = [0.2, 0.6]
-        "scenario.perturbation_m" = [0.0, 0.001]
-    """, "small.toml")
+    p = write(tmp_path, tiny_worm_matrix(0.3, {"friction.mu_transverse": [0.2, 0.6],
+                                               "scenario.perturbation_m": [0.0, 0.001]}), "small.toml")
     return [m.case for m in expand_matrix(p).cases]
 
 
@@ -369,17 +361,7 @@ def test_the_order_cases_start_in_does_not_change_their_results(tmp_path):
 
 
 def test_a_matrix_run_ends_with_its_parallel_efficiency_and_critical_path(tmp_path, capsys):
-    p = write(tmp_path, """
-        [matrix]
-        name = "eff"
-        creatures = ["worm"]
-        bodies = ["massspring"]
-        scenarios = ["flat"]
-        duration = 0.3
-        set = { "creature.segments" = 4 }
-        [matrix.grid]
-        "friction.mu_transverse" = [0.2, 0.6]
-    """)
+    p = write(tmp_path, tiny_worm_matrix(0.3, {"friction.mu_transverse": [0.2, 0.6]}, name="eff"))
     out = tmp_path / "out"
     assert main(["matrix", str(p), "--workers", "2", "--out", str(out)]) == 0
     line = [ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("parallel efficiency")]

@@ -32,6 +32,8 @@ def check(key: str, fn, body: str = BODY) -> MI.ImageCheck:
     return c
 
 
+# One test per Miller image, named after it: the two-line tests are alike by design (``duplicates`` pairs them;
+# deliberate), so that a failure names the image.
 def test_image_1a_worm_nose_slides_forward_on_impact():
     check("worm-book", MI.worm_nose_slides_forward)
 

@@ -66,6 +66,18 @@ def _target(c, R, s, rng):
     return c_T, R_T
 
 
+def _three_supported(b, rng):
+    """(c (n, 3) [m] of b's segments now, sup (n,) bool: segments 0, 5 and 11, and targets c_T, R_T: ``_target``
+    of each of them)."""
+    c, R = (a.copy() for a in b.segment_poses())
+    sup = np.zeros(len(c), bool)
+    sup[[0, 5, 11]] = True
+    c_T, R_T = c.copy(), R.copy()
+    for s in (0, 5, 11):
+        c_T, R_T = _target(c_T, R_T, s, rng)
+    return c, sup, c_T, R_T
+
+
 # ------------------------------------------------------------------ registration
 def test_the_factories_give_legged_bodies_for_the_centipede():
     for name, cls in (("massspring", BodyRigidSpringChain), ("fem", BodyFEMChain)):
@@ -80,12 +92,7 @@ def test_the_factories_give_legged_bodies_for_the_centipede():
 def test_massspring_supported_box_is_at_its_target_after_one_step():
     b = BodyRigidSpringChain(_case("massspring"))
     rng = np.random.default_rng(1)
-    c, R = (a.copy() for a in b.segment_poses())
-    sup = np.zeros(len(c), bool)
-    sup[[0, 5, 11]] = True
-    c_T, R_T = c.copy(), R.copy()
-    for s in (0, 5, 11):
-        c_T, R_T = _target(c_T, R_T, s, rng)
+    c, sup, c_T, R_T = _three_supported(b, rng)
     b.set_support(sup, c_T, R_T, b.dt)
     assert b.advance(0.0, 1) == (1, 0)
     c1, R1 = b.segment_poses()
@@ -106,12 +113,7 @@ def test_fem_supported_block_tracks_its_target():
     b = BodyFEMChain(_case("fem"))
     rng = np.random.default_rng(2)
     dt = b.case.dt
-    c, R = (a.copy() for a in b.segment_poses())
-    sup = np.zeros(len(c), bool)
-    sup[[0, 5, 11]] = True
-    c_T, R_T = c.copy(), R.copy()
-    for s in (0, 5, 11):
-        c_T, R_T = _target(c_T, R_T, s, rng)
+    c, sup, c_T, R_T = _three_supported(b, rng)
     x0 = b.x.copy()
     b.set_support(sup, c_T, R_T, dt)
     on = sup[b.att_block]

@@ -104,3 +104,43 @@ def test_a_named_gaits_own_keys_are_checked(plugin, creature):
     from bench_myriapoda.core.errors import InputError
     with pytest.raises(InputError, match="gait.nodes"):
         resolve_case(creature, "massspring", "flat", NAME, overrides=["gait.nodes=99"])
+
+
+class DeclaredOnly:
+    """The paper's leg controller seen only through what a controller declares to the runner
+    (``core.protocols.Controller``) and a legged one to the harness (``core.leg_timeline.LeggedController``):
+    any other attribute read raises, so a harness or metric that reads the controller's internals fails."""
+
+    def __init__(self, inner):
+        from bench_myriapoda.core.leg_timeline import LeggedController
+        from bench_myriapoda.core.protocols import Controller
+        allowed = set()
+        for proto in (Controller, LeggedController):
+            allowed |= set(proto.__annotations__) | {n for n in vars(proto) if not n.startswith("_")}
+        object.__setattr__(self, "inner", inner)
+        object.__setattr__(self, "allowed", frozenset(allowed))
+
+    def __getattr__(self, name):
+        if name.startswith("__") or name not in self.allowed:
+            raise AttributeError(f"read of the controller's undeclared attribute {name!r}")
+        return getattr(self.inner, name)
+
+
+def test_a_legged_run_reads_the_controller_only_through_the_declared_records():
+    from bench_myriapoda.controllers.myriapod.controller import MyriapodController
+    from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.harness.runner import run_case
+    case = resolve_case("centipede", "hybrid", "walk", duration=2.0, overrides=["creature.segments=4"])
+    seen = run_case(case, controller=DeclaredOnly(MyriapodController(case)))
+    bare = run_case(case, controller=MyriapodController(case))
+    assert seen.status == bare.status == "ok", (seen.message, bare.message)
+    assert len(seen.extra["leg_timeline"][0]) > 2 and "time_to_walk_s" in seen.metrics
+    # the same run: the timeline and every metric bit for bit (the bare one runs the fused path, which
+    # tests/test_fused_walk.py holds bitwise equal to the Python path the wrapped one runs)
+    for a, b in zip(seen.extra["leg_timeline"], bare.extra["leg_timeline"]):
+        assert np.array_equal(a, b)
+    assert np.array_equal(seen.extra["brain_timeline"], bare.extra["brain_timeline"])
+    assert seen.extra["labels"] == bare.extra["labels"]
+    assert seen.metrics.keys() == bare.metrics.keys()
+    for k, v in seen.metrics.items():
+        assert v == bare.metrics[k] or (np.isnan(v) and np.isnan(bare.metrics[k])), k

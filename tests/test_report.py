@@ -19,20 +19,16 @@ from bench_myriapoda.report.baseline import compare_runs
 from bench_myriapoda.report.build import SECTIONS
 from bench_myriapoda.report.matrix_data import MatrixResults
 from bench_myriapoda.report.sweeps import fit_exponent
+from matrix_toml import WORM_ON_A_CLIFF
 
+
+# (TOML data: matrix blocks are alike by design; ``duplicates`` pairs them with other test matrices)
 MATRIX = """
 [matrix]
 name = "report-test"
 description = "a small matrix that fills every section of the report"
 seeds = [0]
-
-[[block]]
-creatures = ["worm"]
-bodies = ["massspring"]
-scenarios = ["cliff"]
-gaits = ["rectilinear"]
-duration = 0.6
-
+""" + WORM_ON_A_CLIFF + """
 [[block]]
 creatures = ["centipede"]
 bodies = ["hybrid"]
@@ -329,19 +325,7 @@ _PROBE = """<script>window.addEventListener('load', () => {
 def test_report_in_chromium_at_1400_px_shows_every_section_and_images_at_least_800_px_wide(matrix_dir, tmp_path):
     """Laid out by headless chromium in a 1400 px window: every section there with its heading, every image
     loaded and drawn at least 800 px wide (the report's pages carry no script; a copy gets a probe)."""
-    import html as html_lib
-
-    probe = matrix_dir / ".probe.html"
-    probe.write_text((matrix_dir / "index.html").read_text().replace("</body>", _PROBE + "</body>"))
-    try:
-        cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-               "--disable-background-networking", "--disable-component-update", "--disable-sync",
-               f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1400,1000", "--virtual-time-budget=20000",
-               "--dump-dom", probe.as_uri()]
-        dom = subprocess.run(cmd, check=True, timeout=120, capture_output=True, text=True).stdout
-    finally:
-        probe.unlink()
-    data = json.loads(html_lib.unescape(re.search(r'<pre id="probe">(.*?)</pre>', dom, re.S).group(1)))
+    data = chromium_probe(matrix_dir / "index.html", tmp_path)
     assert 1300 <= data["width"] <= 1400
     assert [s[0] for s in data["secs"]] == [sid for sid, _ in SECTIONS]
     for sid, height, h2 in data["secs"]:

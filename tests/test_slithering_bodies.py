@@ -140,12 +140,17 @@ def width_reference(case, r, ratio: float) -> float:
     return steady_slithering(COMMAND, 1.0, 1.0, MU_B_OVER_MU_F, ratio, width_bl=width_bl).speed_bl_per_cycle
 
 
+def assert_speed_near_the_width_reference(body, ratio, rel):
+    """The body's slithering speed within ``rel`` of the kinematic reference of its own width."""
+    case, r = slither(body, ratio)
+    ref = width_reference(case, r, ratio)
+    assert r.metrics["speed_bl_per_cycle"] == pytest.approx(ref, rel=rel), (body, ratio, ref)
+
+
 @pytest.mark.parametrize("body", BODIES)
 @pytest.mark.parametrize("ratio", RATIOS)
 def test_speed_matches_the_kinematic_reference(body, ratio):
-    case, r = slither(body, ratio)
-    ref = width_reference(case, r, ratio)
-    assert r.metrics["speed_bl_per_cycle"] == pytest.approx(ref, rel=SPEED_REL_TOL), (body, ratio, ref)
+    assert_speed_near_the_width_reference(body, ratio, SPEED_REL_TOL)
 
 
 @pytest.mark.parametrize("ratio", RATIOS)
@@ -163,6 +168,4 @@ WIDTH_REL_TOL = 0.10  # measured: lattice within 4 %, hybrid within 7 % at every
 @pytest.mark.parametrize("body", EDGE_BELLIES)
 @pytest.mark.parametrize("ratio", RATIOS)
 def test_speed_matches_the_kinematic_reference_of_the_bodys_own_width(body, ratio):
-    case, r = slither(body, ratio)
-    ref = width_reference(case, r, ratio)
-    assert r.metrics["speed_bl_per_cycle"] == pytest.approx(ref, rel=WIDTH_REL_TOL), (body, ratio, ref)
+    assert_speed_near_the_width_reference(body, ratio, WIDTH_REL_TOL)

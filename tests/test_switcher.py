@@ -270,7 +270,10 @@ def test_fix_tips_and_stance_ik_round_trip_and_failure():
 # --------------------------------------------------------------------------
 
 def reference_step(states, angles, airborne, touching, ik_failed, p, dt):
-    """The rules of the module docstring, written out plainly (lists, dicts)."""
+    """The rules of the module docstring, written out plainly (lists, dicts).
+
+    Deliberately written again, apart from the kernel it checks (``duplicates`` pairs a few of its lines with
+    ``switcher.switcher_step``): an independent reference, not shared code."""
     n = len(states)
     n_seg = n // 2
     wave = int(p[S.WAVE_DIRECTION])

@@ -12,6 +12,7 @@ from bench_myriapoda.validation import analytic, references
 from bench_myriapoda.validation.core import FAIL, INFO, NA, PASS, Context
 from bench_myriapoda.validation.registry import CHECKS
 from bench_myriapoda.validation.run import run_checks, select
+from matrix_toml import WORM_ON_A_CLIFF
 
 # Checks whose measured verdict is FAIL today, with the reason; the test expects the failure (strict:
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
@@ -131,7 +132,8 @@ WP_NOISE = 0.1  # an error may rise by 10 % of itself (plus 1e-4) from one dt to
 
 @pytest.fixture(scope="module")
 def work_precision(tmp_path_factory):
-    from bench_myriapoda.validation.work_precision import Quantity, run_work_precision
+    from bench_myriapoda.report.work_precision import run_work_precision
+    from bench_myriapoda.validation.work_precision import Quantity
     out = tmp_path_factory.mktemp("wp")
     # a small hanging worm (6 segments, 0.4 s, weak gravity) on every body: the same code as the full diagrams
     q = Quantity("hanging_elongation", "hanging worm (test size)", "worm", "hang", None, "hanging_elongation_m",
@@ -158,18 +160,12 @@ def test_work_precision_plots_have_one_curve_per_body_and_error_falls_with_dt(wo
     assert {p["resolution"] for p in curves[2]["resolution_points"]} == {4}     # hybrid: >= 3 nodes
 
 
+# (TOML data: matrix blocks are alike by design; ``duplicates`` pairs them with other test matrices)
 REPORT_MATRIX = """
 [matrix]
 name = "validation-report-test"
 seeds = [0]
-
-[[block]]
-creatures = ["worm"]
-bodies = ["massspring"]
-scenarios = ["cliff"]
-gaits = ["rectilinear"]
-duration = 0.6
-
+""" + WORM_ON_A_CLIFF + """
 [[block]]
 creatures = ["snake"]
 bodies = ["massspring"]

@@ -54,6 +54,7 @@ QUICK=quick
 PROBE=probe
 if [ -n "${DEVICE_TINY:-}" ]; then  # the smoke test: two tiny matrices of the same kinds of case
   mkdir -p "$WORK/m"
+  # (matrix data: its blocks are alike by design; ``duplicates`` pairs them with the tests' matrices)
   cat >"$WORK/m/quick.toml" <<'EOF'
 [matrix]
 name = "quick"

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
@@ -51,6 +52,16 @@ GAIT_DESCRIPTIONS = {
 
 
 CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
+
+
+@dataclass(frozen=True)
+class MuscleWaveConfig(GaitConfig):
+    """``[gaits.<muscle wave>]``: GaitConfig's keys; a bending gait (``CURVATURE_GAITS``) with a commanded
+    curvature asks the runner for the body's strain per curvature (``commands_curvature``)."""
+
+    def commands_curvature(self) -> bool:
+        return self.name in CURVATURE_GAITS and (self.curvature_amplitude > 0.0
+                                                 or self.vertical_curvature_amplitude > 0.0)
 
 
 def wave_table(gait: GaitConfig, body_length_m: float, passive: bool = False,
@@ -170,7 +181,7 @@ class MuscleWaveController:
     def reset(self, case, body_info, rng=None) -> None:
         self.s_seg = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
         gait = case.gait
-        if gait.name in CURVATURE_GAITS and (gait.curvature_amplitude > 0.0 or gait.vertical_curvature_amplitude > 0.0):
+        if gait.commands_curvature():
             gain = body_info.get("strain_per_curvature")
             if gain is None:
                 # a reset outside the runner (a bare core.protocols.body_info): the raw strain amplitude

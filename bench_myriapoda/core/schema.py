@@ -152,6 +152,12 @@ class GaitConfig:
     def period_s(self) -> float:
         return 1.0 / self.frequency_hz
 
+    def commands_curvature(self) -> bool:
+        """Whether this gait commands a body shape (a curvature) that each body turns into its own strain with
+        its measured gain (``harness.calibration``).  A gait's own configuration class says so (the muscle
+        waves': ``controllers.muscle_waves.MuscleWaveConfig``); this base class: never."""
+        return False
+
 
 @dataclass(frozen=True)
 class LegsConfig:

@@ -181,12 +181,8 @@ class FusedLeggedWalk:
         n_seg = ctrl.n_seg
         tips = self.rec_tips[:n_rec].copy()
         rec_c = self.rec_c[:n_rec]
-        ctrl.timeline_t.extend(self.rec_t[:n_rec].tolist())
-        ctrl.timeline_states.extend(self.rec_states[:n_rec].copy())
-        ctrl.timeline_tips.extend(tips)
-        ctrl.timeline_brain.extend(self.rec_brain[:n_rec].tolist())
-        ctrl.timeline_contact.extend(self.rec_contact[:n_rec].copy())
-        ctrl.timeline_centers.extend(self.rec_centres[:n_rec].copy())
+        ctrl.leg_timeline.extend(self.rec_t[:n_rec], self.rec_states[:n_rec].copy(), tips, self.rec_brain[:n_rec],
+                                 self.rec_contact[:n_rec].copy(), self.rec_centres[:n_rec].copy())
         if mon is not None:
             centres = np.empty((n_rec, 2 * n_seg - 1, 3))
             centres[:, 0::2] = rec_c

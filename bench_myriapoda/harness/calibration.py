@@ -14,13 +14,11 @@ from ..bodies.curvature_calibration import lateral_gain
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
 
-CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
-
 
 def needs_curvature_gain(case) -> bool:
-    """True when ``case``'s gait commands a curvature (and so needs the body's gain)."""
-    g = case.gait
-    return g.name in CURVATURE_GAITS and (g.curvature_amplitude > 0.0 or g.vertical_curvature_amplitude > 0.0)
+    """True when ``case``'s gait commands a curvature (and so needs the body's gain): its configuration
+    class says so (``GaitConfig.commands_curvature``), so this module names no gait."""
+    return case.gait.commands_curvature()
 
 
 def calibrated_body_info(body, case) -> dict[str, Any]:

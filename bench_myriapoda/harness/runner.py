@@ -30,6 +30,7 @@ from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
 from ..metrics.shape_tracking import shape_flag_reason
+from ..world.terrain import terrain_from_scenario
 from ..world.water_coupling import WaterCoupling, has_water
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
@@ -196,7 +197,9 @@ class Creature:
         self.body, self.controller = compose(case, controller)
         requires, self.open_loop, _ = controller_settings(self.controller)
         legged = LEGS in requires and SEGMENTS in requires
-        self.monitor = LeggedMonitor(case, self.body, self.controller) if legged else None
+        # the behaviour metrics' terrain (issue 30 item 1 hands the run's one world to the monitor instead)
+        self.monitor = LeggedMonitor(case, self.body, self.controller, terrain_from_scenario(case.scenario)) \
+            if legged else None
         self.view = LeggedView(self.body, self.controller) if legged else self.body
         self.stepper = Stepper(case, self.body, self.controller, self.monitor, fused=fused)
 
@@ -238,8 +241,7 @@ def _walk_metrics(series, case, metrics: dict, monitor, length: float):
     """A legged run's emergent measures (``metrics.walk``) over its gait window, and the too-short reason."""
     from ..metrics.walk import walk_emergent_metrics
 
-    t_walk = monitor.controller.t_walk
-    start = (t_walk if math.isfinite(t_walk) else float(series.t[0])) + 1.0  # as LeggedMonitor.metrics
+    start = monitor.gait_window_start(float(series.t[0]))  # as LeggedMonitor.metrics
     return walk_emergent_metrics(series.t, series.com, series.head, series.tail, series.energy, start,
                                  case.controller.head_speed_m_s, metrics.get("stride_frequency_hz", math.nan),
                                  length, case.creature.mass_kg, case.scenario.gravity_m_s2,

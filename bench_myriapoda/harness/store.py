@@ -366,9 +366,7 @@ def record_run(path: Path | str, result, command: str = "run", matrix: str | Non
 def record_validation_run(path: Path | str, rows: list[dict[str, Any]], quick: bool, out_dir: str | None) -> int:
     """Insert the rows of one ``validate`` run (``validation.core.Row.to_dict()``) into ``validation`` in one
     transaction; return its run id (1, 2, ... per store)."""
-    mach = json.dumps(machine_fingerprint(), sort_keys=True)
-    commit, dirty = git_commit()
-    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    mach, commit, dirty, stamp = _run_stamp()
     return _insert_numbered_run(
         path, "validation",
         "INSERT INTO validation (run_id, check_name, family, body, quantity, measured_json, reference_json,"
@@ -377,7 +375,14 @@ def record_validation_run(path: Path | str, rows: list[dict[str, Any]], quick: b
         lambda run_id: [(run_id, r["check"], r["family"], r["body"], r["quantity"], json.dumps(_finite(r["measured"])),
                          json.dumps(_finite(r["reference"])), r["source"], r["tolerance"], r["verdict"], r["detail"],
                          r["unit"], _finite(r["seconds"]), json.dumps(r["figures"], sort_keys=True), int(quick),
-                         out_dir, commit, None if dirty is None else int(dirty), mach, stamp) for r in rows])
+                         out_dir, commit, dirty, mach, stamp) for r in rows])
+
+
+def _run_stamp() -> tuple[str, str | None, int | None, str]:
+    """(machine fingerprint JSON, git commit, dirty as 0/1 or None, UTC timestamp) of a numbered run's rows."""
+    commit, dirty = git_commit()
+    return (json.dumps(machine_fingerprint(), sort_keys=True), commit, None if dirty is None else int(dirty),
+            time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()))
 
 
 def _insert_numbered_run(path: Path | str, table: str, sql: str, make_rows) -> int:
@@ -410,14 +415,12 @@ def record_regress_run(path: Path | str, rows: list[dict[str, Any]]) -> int:
     Each row holds ``REGRESS_FIELDS``; the commit, machine fingerprint and timestamp are added here.
     Run ids count up from 1 in each store.
     """
-    mach = json.dumps(machine_fingerprint(), sort_keys=True)
-    commit, dirty = git_commit()
-    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    mach, commit, dirty, stamp = _run_stamp()
     return _insert_numbered_run(
         path, "regress_history",
         "INSERT INTO regress_history (run_id, git_commit, git_dirty, machine_json, timestamp, "
         + ", ".join(REGRESS_FIELDS) + ") VALUES (?,?,?,?,?," + ",".join("?" * len(REGRESS_FIELDS)) + ")",
-        lambda run_id: [(run_id, commit, None if dirty is None else int(dirty), mach, stamp,
+        lambda run_id: [(run_id, commit, dirty, mach, stamp,
                          *(_finite(r[k]) for k in REGRESS_FIELDS)) for r in rows])
 
 

@@ -24,6 +24,7 @@ class MetricDefinition:
     group: str     # which runs carry it (the reference page's sections)
 
 
+# A data table, one row a metric: the rows are alike by design (``duplicates`` pairs them by shape; deliberate).
 _ROWS: tuple[tuple[str, str, str, str], ...] = (
     # ---- every run (harness/runner.py, metrics/locomotion.py)
     ("speed_m_per_s", "m/s", "forward speed of the centre of mass along the mean body axis over the steady window "

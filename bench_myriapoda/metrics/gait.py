@@ -51,12 +51,12 @@ from typing import NamedTuple, Sequence
 
 import numpy as np
 
-# --- Leg states (paper Sec. 4.2): codes and names come from the Switcher that produces them ---
+# --- Leg states (paper Sec. 4.2): codes and names of the legged timeline record (core.leg_timeline) ---
 # SF1: PEP up to MUP; SF2: MUP down to AEP (leads to STANCE); SB1: AEP down to MDP (to find the
 # ground); SB2: MDP up to PEP (last state of the unsupported loop); STANCE: tip planted, IK;
 # ADJUST: entered when the previous leg enters STANCE (rule 4); makes the wave.
-from ..controllers.myriapod.switcher import (ADJUST, N_STATES, SB1, SB2, SF1, SF2,  # noqa: E402,F401
-                                             STANCE, STATE_NAMES)
+from ..core.leg_timeline import (ADJUST, N_STATES, SB1, SB2, SF1, SF2,  # noqa: E402,F401
+                                 STANCE, STATE_NAMES)
 
 STATE_DESCRIPTIONS: tuple[str, ...] = (
     "sway forward 1 (PEP to MUP)",

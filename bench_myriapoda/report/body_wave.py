@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from .figure_files import save_figure  # noqa: E402
+from .figure_files import figure_section, finish_plot  # noqa: E402
 
 PHASE_KEY = "controller.body_wave_phase_rad"
 AMPLITUDE_KEY = "controller.body_wave_amplitude"
@@ -59,19 +59,14 @@ def plot_speed_per_stride_vs_offset(df: pd.DataFrame, path: Path) -> Path:
             ax.axhline(float(base.mean()), color=colors(n % 10), ls="--", lw=1.0,
                        label=f"{creature} / {body}, no body wave")
     ax.axvline(SCOLOPENDRA_BEST_RAD, color="0.5", ls=":", lw=1.0, label="Scolopendra's best offset (~2.5 rad)")
-    ax.set_xlabel("body wave phase offset from the leg wave [rad]")
-    ax.set_ylabel("speed per stride [body lengths]")
     ax.set_xlim(0.0, 2.0 * np.pi)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="best")
-    fig.tight_layout()
-    return save_figure(fig, path, dpi=110)
+    return finish_plot(fig, ax, path, "body wave phase offset from the leg wave [rad]",
+                       "speed per stride [body lengths]", dpi=110)
 
 
 def report_section(page, res) -> None:
     """The report's body-wave section (``report.build``): the plot and a line on what it shows."""
-    page.section("body-wave", "Body wave: speed per stride against the phase offset")
-    path = page.fig_dir / "body_wave_speed_per_stride.png"
-    page.draw(path, plot_speed_per_stride_vs_offset, res.df, path)
-    page.figure(path, "Speed per stride (net COM speed / stride frequency / body length) against the offset of "
-                      "the lateral body wave from the head legs' phase; dashed: the same creature without a wave.")
+    figure_section(page, "body-wave", "Body wave: speed per stride against the phase offset",
+                   "body_wave_speed_per_stride.png", plot_speed_per_stride_vs_offset, res.df,
+                   "Speed per stride (net COM speed / stride frequency / body length) against the offset of "
+                   "the lateral body wave from the head legs' phase; dashed: the same creature without a wave.")

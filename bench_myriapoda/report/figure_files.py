@@ -49,6 +49,26 @@ def save_figure(fig, path, dpi: int = DPI) -> Path:
     return path
 
 
+def finish_plot(fig, ax, path, xlabel: str, ylabel: str, legend_loc: str = "best", dpi: int = DPI) -> Path:
+    """A one-panel figure's last steps: axis labels, a light grid, the legend at ``legend_loc``, a tight layout,
+    saved to ``path`` (``save_figure``); returns the path."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc=legend_loc)
+    fig.tight_layout()
+    return save_figure(fig, path, dpi=dpi)
+
+
+def figure_section(page, sid: str, title: str, filename: str, plot, df, caption: str) -> None:
+    """A report section of one figure (``report.build``'s page): its heading, ``plot(df, path)`` drawn into the
+    figures folder as ``filename``, and the figure with its caption."""
+    page.section(sid, title)
+    path = page.fig_dir / filename
+    page.draw(path, plot, df, path)
+    page.figure(path, caption)
+
+
 def layout_once(fig, path, dpi: float) -> None:
     """Run ``fig``'s layout engine now, at the saving ``dpi``, and detach it, so that ``savefig`` draws once.
 

@@ -20,7 +20,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from .figure_files import save_figure  # noqa: E402
+from .figure_files import figure_section, finish_plot  # noqa: E402
 
 KEY = "friction.mu_transverse"
 METRIC = "metric.speed_bl_per_cycle"
@@ -82,20 +82,15 @@ def plot_speed_vs_friction_ratio(df: pd.DataFrame, path: Path) -> Path:
                         label=f"{creature} / {body}: shape not achieved")
     ax.set_xscale("log")
     ax.set_xticks([1, 1.5, 2, 3, 5, 10], labels=["1", "1.5", "2", "3", "5", "10"])
-    ax.set_xlabel("friction ratio mu_t / mu_f")
-    ax.set_ylabel("forward speed [body lengths per cycle]")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="upper left")
-    fig.tight_layout()
-    return save_figure(fig, path, dpi=130)
+    return finish_plot(fig, ax, path, "friction ratio mu_t / mu_f", "forward speed [body lengths per cycle]",
+                       legend_loc="upper left", dpi=130)
 
 
 def report_section(page, res) -> None:
     """The report's friction-sweep section (``report.build``): the plot and a line on what it shows."""
-    page.section("friction-sweep", "Slithering: speed against the friction ratio")
-    path = page.fig_dir / "friction_sweep_speed.png"
-    page.draw(path, plot_speed_vs_friction_ratio, res.df, path)
-    page.figure(path, "Forward speed per gait cycle against mu_t / mu_f at a fixed Froude number, each body model "
-                      "with the commanded shape tracked; line: Hu et al.'s kinematic model at the commanded curvature "
-                      "amplitude and wavelength and the belly's width.  Hollow: shape_not_achieved (the body did not "
-                      "bend as commanded: shape_tracking_error > 10 %).")
+    figure_section(page, "friction-sweep", "Slithering: speed against the friction ratio", "friction_sweep_speed.png",
+                   plot_speed_vs_friction_ratio, res.df,
+                   "Forward speed per gait cycle against mu_t / mu_f at a fixed Froude number, each body model "
+                   "with the commanded shape tracked; line: Hu et al.'s kinematic model at the commanded curvature "
+                   "amplitude and wavelength and the belly's width.  Hollow: shape_not_achieved (the body did not "
+                   "bend as commanded: shape_tracking_error > 10 %).")

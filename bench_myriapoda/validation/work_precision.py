@@ -11,17 +11,16 @@ finest dt).  Error is |q - q_ref| / |q_ref| with q_ref
   (``resolution_change``: how much the default resolution is off), drawn as open markers.
 
 Cost is CPU seconds per simulated second (``time.process_time`` around the run, minus the JIT
-compilation the runner times).  One PNG per quantity, one curve per body (the dt sweep, solid);
-the resolution points are open markers of the same colour.  ``work_precision.json`` holds every
-point, so tests assert on the data, not on pixels.
+compilation the runner times).  This module computes (``work_precision_data``); ``report.work_precision``
+draws one PNG per quantity, one curve per body (the dt sweep, solid; the resolution points are open
+markers of the same colour) and writes ``work_precision.json`` with every point, so tests assert on the
+data, not on pixels.
 """
 from __future__ import annotations
 
-import json
 import math
 import time
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Callable
 
 from ..core.errors import InputError
@@ -156,48 +155,11 @@ def sweep(q: Quantity, body: str, quick: bool, progress: Callable[[str], None] |
             "reference_point": fine}
 
 
-def plot(q: Quantity, curves: list[dict], path: Path) -> Path:
-    """Log-log error vs cost, one solid curve per body (dt sweep), open markers for the resolution sweep."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from ..report.figure_files import save_figure
-
-    fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for i, c in enumerate(curves):
-        color = f"C{i}"
-        pts = [p for p in c["dt_points"] if math.isfinite(p["error"]) and p["error"] > 0]
-        if pts:
-            ax.loglog([p["cpu_s_per_sim_s"] for p in pts], [p["error"] for p in pts], "o-", color=color,
-                      label=f"{c['body']} (dt sweep; ref {c['reference_kind']})")
-            for p in pts:
-                ax.annotate(f"dt x{p['dt_factor']:g}", (p["cpu_s_per_sim_s"], p["error"]), fontsize=6,
-                            xytext=(3, 3), textcoords="offset points")
-        rp = [p for p in c["resolution_points"] if math.isfinite(p["error"]) and p["error"] > 0]
-        if rp:
-            ax.loglog([p["cpu_s_per_sim_s"] for p in rp], [p["error"] for p in rp], "s", mfc="none", color=color,
-                      linestyle="none", label=f"{c['body']} (resolution {', '.join(str(p['resolution']) for p in rp)})")
-    ax.set_xlabel("cost [CPU s per simulated s]")
-    ax.set_ylabel("relative error")
-    ax.set_title(f"Work-precision: {q.title}")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    return save_figure(fig, path)
-
-
-def run_work_precision(out_dir: Path, bodies=None, quick: bool = False,
-                       progress: Callable[[str], None] | None = None, quantities=QUANTITIES) -> dict:
-    """Sweep, plot and write ``out_dir/work_precision_*.png`` and ``out_dir/work_precision.json``."""
+def work_precision_data(bodies=None, quick: bool = False, progress: Callable[[str], None] | None = None,
+                        quantities=QUANTITIES) -> dict:
+    """Every quantity's sweep on every body of ``bodies`` (default all): ``{quantity name: {"title", "metric",
+    "curves": [one ``sweep`` per body]}}``.  Drawn and written by ``report.work_precision``."""
     bodies = all_bodies() if bodies is None else bodies
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    data, figures = {}, []
-    for q in quantities:
-        curves = [sweep(q, b, quick, progress) for b in all_bodies() if b in bodies]
-        data[q.name] = {"title": q.title, "metric": q.metric, "curves": curves}
-        figures.append(str(plot(q, curves, out_dir / f"work_precision_{q.name}.png")))
-    doc = clean({"quick": quick, "quantities": data, "figures": figures})
-    (out_dir / "work_precision.json").write_text(json.dumps(doc, indent=1))
-    return doc
-
+    return {q.name: {"title": q.title, "metric": q.metric, "curves": [sweep(q, b, quick, progress)
+                                                                     for b in all_bodies() if b in bodies]}
+            for q in quantities}

@@ -43,6 +43,7 @@ import math
 
 import numpy as np
 
+from ...core.leg_timeline import LeggedSummary, LegsPose, LegTimeline
 from ...core.protocols import LEGS, SEGMENTS
 from ...kinematics import legs as L
 from ...world import terrain_kernels as TK
@@ -162,8 +163,10 @@ class MyriapodController:
 
     State: ``states`` (n_legs,) leg states; ``angles`` (n_legs, 3) [rad];
     ``tips`` (n_legs, 3) [m] world tip positions (fixed while in STANCE);
-    ``brain`` the head's mode.  A timeline of leg states and tips is recorded
-    every ``record_every`` steps for the gait metrics.
+    ``brain`` the head's mode.  A timeline of leg states and tips (``leg_timeline``, a
+    ``core.leg_timeline.LegTimeline``) is recorded every ``record_every`` steps for the gait metrics;
+    ``legs_pose``, ``place_on`` and ``summary`` are the rest of what the harness reads
+    (``core.leg_timeline.LeggedController``).
     """
 
     requires = frozenset({SEGMENTS, LEGS})
@@ -269,17 +272,13 @@ class MyriapodController:
         self.record_every = record_every
         self._step = 0
         self.recorded = False  # whether the last step was recorded in the timeline
-        self.timeline_t: list[float] = []
-        self.timeline_states: list[np.ndarray] = []
-        self.timeline_tips: list[np.ndarray] = []
-        self.timeline_brain: list[int] = []
-        self.timeline_contact: list[np.ndarray] = []   # (left, right) antenna contact
+        # what the harness and the metrics read of the run (core.leg_timeline): one row every record_every steps
+        self.leg_timeline = LegTimeline(self.n_legs, n_segments)
         self.tracking_sq_sum = 0.0
         self.tracking_n = 0
         self.heading_cmd = math.nan       # CONTROL: commanded heading [rad] about +y, integrated from the schedule
         self.heading_err_sum = 0.0
         self.heading_err_n = 0
-        self.timeline_centers: list[np.ndarray] = []
         # legs against the terrain and obstacles (issue 16, leg_collision.py)
         self.collide = lg.collide
         self._prev_angles = np.zeros((self.n_legs, 3))
@@ -431,13 +430,9 @@ class MyriapodController:
         self._legs_after_kinematics()
         self.recorded = self._step % self.record_every == 0
         if self.recorded:
-            self.timeline_t.append(t)
-            self.timeline_states.append(self.states.astype(np.int8))
-            self.timeline_tips.append(self.tips.copy())
-            self.timeline_brain.append(self.brain)
-            self.timeline_contact.append(self.antennae.contact.copy() if self.antennae is not None
-                                         else np.zeros(2, dtype=bool))
-            self.timeline_centers.append(c.copy())
+            self.leg_timeline.append(t, self.states.astype(np.int8), self.tips.copy(), self.brain,
+                                     self.antennae.contact.copy() if self.antennae is not None
+                                     else np.zeros(2, dtype=bool), c.copy())
         self._step += 1
 
     # ------------------------------------------------------------------ body wave (beyond the paper)
@@ -521,16 +516,48 @@ class MyriapodController:
         self.tracking_sq_sum += float(err.sum())
         self.tracking_n += int(err.size)
 
+    # ------------------------------------------------------------------ what the harness reads (core.leg_timeline)
+    def legs_pose(self) -> LegsPose:
+        """The legs now (``LegsPose``): leg geometry, angles and states, and the antennae's points and contacts."""
+        ant = self.antennae
+        return LegsPose(self.geom, self.angles, self.states,
+                        None if ant is None else ant.points.copy(), None if ant is None else ant.contact.copy())
+
+    def place_on(self, c: np.ndarray, R: np.ndarray) -> None:
+        """The antennae on the head's pose c[0], R[0] at t = 0, so that a scene of the starting pose shows
+        them (``Antennae.place``: the run's dynamics do not change)."""
+        if self.antennae is not None:
+            self.antennae.place(c[0], R[0], 0.0)
+
+    def summary(self) -> LeggedSummary:
+        """The run so far (``LeggedSummary``): the brain's modes are the summary's modes; ``metrics`` holds the
+        legs' surface figures (``leg_metrics``), the food's and the antennae's obstacle contact events."""
+        steps = max(int(self.brain_steps.sum()), 1)
+        ant = self.antennae
+        return LeggedSummary(
+            t_walk_s=self.t_walk, touch_fraction_at_walk=self.touch_fraction_at_walk,
+            heading_error_deg=float(np.degrees(self.heading_err_sum / self.heading_err_n)) if self.heading_err_n
+            else None,
+            tracking_error_mean_m=self.tracking_sq_sum / self.tracking_n if self.tracking_n else math.nan,
+            mode_final=self.brain, mode_names=BRAIN_MODE_NAMES,
+            mode_fractions={name: float(self.brain_steps[mode]) / steps
+                            for mode, name in ((AVOIDANCE, "avoidance"), (TROPHOTROPISM, "trophotropism"))},
+            metrics={**self.leg_metrics(), **self.food.metrics(),
+                     "obstacle_contacts": float(ant.contact_events) if ant is not None else 0.0})
+
+    @property
+    def timeline_centers(self) -> list[np.ndarray]:
+        """The segment positions (n_seg, 3) [m] of each timeline sample (``LegTimeline.centres``)."""
+        return self.leg_timeline.centres
+
     def contact_timeline(self) -> np.ndarray:
         """Antenna contact (T, 2) bool (left, right) at the timeline's sample times."""
-        return np.array(self.timeline_contact, dtype=bool).reshape(-1, 2)
+        return self.leg_timeline.contact_array()
 
     def brain_timeline(self) -> np.ndarray:
         """Brain mode (T,) at the timeline's sample times."""
-        return np.array(self.timeline_brain, dtype=np.int64)
+        return self.leg_timeline.mode_array()
 
     def timeline(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(t (T,), states (T, n_legs) int8, tips (T, n_legs, 3)) recorded so far."""
-        if not self.timeline_t:
-            return np.zeros(0), np.zeros((0, self.n_legs), np.int8), np.zeros((0, self.n_legs, 3))
-        return np.array(self.timeline_t), np.stack(self.timeline_states), np.stack(self.timeline_tips)
+        return self.leg_timeline.legs()

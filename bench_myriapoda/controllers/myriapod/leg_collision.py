@@ -67,6 +67,23 @@ def _clear_at(kind, f, c, R, g, side, a0, b0, s):
 
 
 @njit(cache=True)
+def _clear_edge(kind, f, c, R, g, side, a0, b0):
+    """(lo, hi): ``BISECTION_STEPS`` halvings of [0, 1] toward the fraction s where the leg at a0 + s (b0 - a0)
+    (``_clear_at``) changes from its state at s = 0 (outside or inside) to the other: lo keeps the state at 0,
+    hi the other.  Both moves of ``stop_swinging_legs`` bisect here (no flag argument: a constant passed to a
+    kernel would compile it for a literal type as well, tests/kernel_signatures.py)."""
+    start = _clear_at(kind, f, c, R, g, side, a0, b0, 0.0)
+    lo, hi = 0.0, 1.0
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (lo + hi)
+        if _clear_at(kind, f, c, R, g, side, a0, b0, mid) == start:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
+
+
+@njit(cache=True)
 def stop_swinging_legs(states, prev_angles, angles, seg_c, seg_R, geom, kind, f, stopped):
     """Cut the Switcher's move of every leg outside STANCE at the terrain surface (module docstring).
 
@@ -92,28 +109,14 @@ def stop_swinging_legs(states, prev_angles, angles, seg_c, seg_R, geom, kind, f,
         stopped[k] = True
         if _clear_at(kind, f, c, R, g, side, old, new, 0.0):
             # the move from outside (s = 0) to inside (s = 1): keep the last outside fraction
-            lo, hi = 0.0, 1.0
-            for _ in range(BISECTION_STEPS):
-                mid = 0.5 * (lo + hi)
-                if _clear_at(kind, f, c, R, g, side, old, new, mid):
-                    lo = mid
-                else:
-                    hi = mid
-            s, a, b = lo, old, new
+            s, a, b = _clear_edge(kind, f, c, R, g, side, old, new)[0], old, new
         else:
             # pushed in by the segment's motion: the first outside pose toward the tucked pose
             tuck = (old[0], 0.5 * math.pi, math.pi - g[GAMMA])
             if not _clear_at(kind, f, c, R, g, side, old, tuck, 1.0):
                 stuck += 1
                 continue
-            lo, hi = 0.0, 1.0
-            for _ in range(BISECTION_STEPS):
-                mid = 0.5 * (lo + hi)
-                if _clear_at(kind, f, c, R, g, side, old, tuck, mid):
-                    hi = mid
-                else:
-                    lo = mid
-            s, a, b = hi, old, tuck
+            s, a, b = _clear_edge(kind, f, c, R, g, side, old, tuck)[1], old, tuck
         angles[k, THETA] = a[0] + s * (b[0] - a[0])
         angles[k, ALPHA] = a[1] + s * (b[1] - a[1])
         angles[k, BETA] = a[2] + s * (b[2] - a[2])

@@ -110,12 +110,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from bench_myriapoda.core.leg_timeline import (ADJUST, N_STATES, SB1, SB2, SF1, SF2,  # noqa: F401 (re-exported)
+                                               STANCE, STATE_NAMES)
 from bench_myriapoda.kinematics.legs import (ALPHA, BETA, THETA, leg_ik_from_segment, leg_tip,
                                          side_sign)
 
-SF1, SF2, SB1, SB2, STANCE, ADJUST = 0, 1, 2, 3, 4, 5
-N_STATES = 6
-STATE_NAMES = ("SF1", "SF2", "SB1", "SB2", "STANCE", "ADJUST")
+# The state codes are the legged timeline record's (core.leg_timeline), which the gait metrics read.
 
 RETROGRADE = 1
 DIRECT = -1
