@@ -248,3 +248,28 @@ def test_recorded_plans_load_and_name_kernels_that_exist():
         assert tasks, name
         for t in tasks:
             assert hasattr(CP.dispatcher_of(t.kernel), "compile")
+
+
+def test_kernels_compiled_ahead_change_no_result_and_the_switch_turns_them_off(tmp_path, monkeypatch):
+    """Two workers, one compile group: the second worker compiles the group's kernels ahead while the first case
+    compiles (a kernel job); with BENCH_MYRIAPODA_COMPILE_PLAN=off it waits.  Metrics bit for bit the same."""
+    import math
+
+    from bench_myriapoda.harness.executors import run_matrix
+
+    if not CP.load_plans().get("massspring-legless-dry"):
+        pytest.skip("no compile plan for this numba version")
+    cases = [resolve_case("worm", "massspring", "flat", duration=d) for d in (0.2, 0.3, 0.4)]
+    runs, stats = {}, {}
+    for setting in ("on", "off"):
+        monkeypatch.setenv(CP.ENV_SWITCH, setting)
+        stats[setting] = {}
+        runs[setting] = {r.case.case_hash(): r for r in run_matrix(
+            cases, "local", workers=2, store_path=tmp_path / f"{setting}.sqlite", matrix="m", stats=stats[setting])}
+    assert stats["on"]["kernel_jobs"] >= 1 and stats["off"]["kernel_jobs"] == 0
+    assert len(runs["on"]) == len(runs["off"]) == 3
+    for h, r in runs["on"].items():
+        o = runs["off"][h]
+        assert r.status == o.status == "ok" and r.metrics.keys() == o.metrics.keys()
+        assert all(v == o.metrics[k] or (isinstance(v, float) and math.isnan(v) and math.isnan(o.metrics[k]))
+                   for k, v in r.metrics.items())

@@ -1,22 +1,26 @@
-"""Which numba kernels a case compiles, with what signatures and for how long (issue 31, item 3).
+"""Which numba kernels a case compiles, with what signatures and for how long; idle workers compile them ahead.
 
 numba compiles a kernel's callees as kernels of their own: typing a call to another ``@njit``
 function compiles that function for the argument types first (``Dispatcher.compile``), and with
 ``cache=True`` each one is looked up in, loaded from and saved to the on-disk cache separately.  A
-caller whose callees are already cached therefore compiles only its own body (plus the final
-optimisation of the module its callees' code is linked into).
+caller whose callees are already cached therefore compiles only its own body.  On a cold cache the
+first case of a compile group (``executors.compile_group``) compiles its whole tree of kernels
+serially -- for the legged walk's chunk kernel the leg controller's step and the body's step, each
+tens of seconds -- while other workers wait for the group's kernels.
 
 :func:`recording` wraps ``Dispatcher.compile`` (over the compile lock, ``compile_lock``) and keeps
-one :class:`CompileEvent` per call that compiled or loaded a signature: the kernel, the exact
-argument types, the wall time including its callees (``inclusive_s``) and without them
-(``self_s``), and whether it came from the cache.  :func:`leaves` lists the kernels a case
-compiled that a worker can compile on its own, without the case: every event of a cached kernel
-below the top-level one, by the signature the case's compile asked for, so that the case then
-finds it in the cache.
-
-``python -m bench_myriapoda.harness.compile_plan --matrix quick`` measures every compile group's
-kernels of a matrix in a fresh numba cache (one process per group, so each group's compile is
-timed as a cold start of its own) and prints the tree of each group's compile.
+one :class:`CompileEvent` per signature compiled or loaded: the kernel, the exact argument types,
+the wall time with its callees (``inclusive_s``) and without (``self_s``), whether it came from the
+cache.  ``python -m bench_myriapoda.harness.compile_plan --record quick --write`` records every
+compile group of a matrix, each in a fresh process on an empty cache, into ``compile_plans_data``
+(the signatures pickled: they are numba types).  :func:`load_plans` turns them into
+:class:`KernelTask` lists, which the local executor hands to workers that would otherwise wait
+(``executors.CompileScheduler.next_kernel_job``): they compile a group's kernels with the case's
+exact signatures, from the end of the tree the case reaches last, so the case finds them in the
+cache.  The compile lock keeps each kernel compiled once per machine.  :func:`preload_cached` loads
+the recorded top-level kernels that are cached into the workers' fork server (``worker_preload``).
+:func:`simulate_cold` predicts a cold matrix's wall with and without kernels compiled ahead
+(``--simulate DIR``).  ``BENCH_MYRIAPODA_COMPILE_PLAN=off`` turns all of it off.
 """
 from __future__ import annotations
 
@@ -112,12 +116,6 @@ def recording() -> Iterator[list[CompileEvent]]:
         out.extend(_events)
         _events = None
         _stack.clear()
-
-
-def leaves(events: list[CompileEvent]) -> list[CompileEvent]:
-    """The events of cached kernels below the top level: what a worker can compile ahead of the case that
-    needs them (``compile_kernels``), in the order compiled (callees before their callers)."""
-    return [e for e in events if e.depth > 0 and e.can_cache]
 
 
 def dispatcher_of(kernel: str):
@@ -217,13 +215,37 @@ def record_groups(cases: Sequence[Any], timeout_s: float = 900.0) -> dict[str, d
             with open(ep, "rb") as fh:
                 rows = pickle.load(fh)  # (kernel, signature, args, inclusive, self, cached, depth, parent, can_cache)
         label = f"{case.creature.name}/{case.body.name}/{case.scenario.name}"
-        out[group_name(group)] = {
+        out[group_name(group)] = compact({
             "case": label,
             "events": [(r[0], r[1], r[6], r[7], round(r[3], 3), round(r[4], 3), r[5], r[8]) for r in rows],
-            "args": _encode_args([r[2] for r in rows])}
+            "args": _encode_args([r[2] for r in rows])})
         print(f"{group_name(group)}: {label}: {sum(r[3] for r in rows if r[6] == 0):.1f} s, "
               f"{len(rows)} signatures", file=sys.stderr, flush=True)
     return out
+
+
+def compact(plan: Mapping[str, Any]) -> dict:
+    """A recorded group plan with numba's own overloads (no disk cache, compiled again in every process that needs
+    them) folded into their nearest cached caller: its self time gets theirs; the rest is unchanged."""
+    ev, args = plan["events"], _decode_args(plan["args"])
+
+    def node_of(k: int) -> int:
+        while not ev[k][7] and ev[k][3] is not None:
+            k = ev[k][3]
+        return k
+
+    keep = [k for k in range(len(ev)) if node_of(k) == k]
+    new_index = {k: i for i, k in enumerate(keep)}
+    extra = {k: 0.0 for k in keep}
+    for k in range(len(ev)):
+        if node_of(k) != k:
+            extra[node_of(k)] += ev[k][5]
+    events = []
+    for k in keep:
+        kernel, sig, depth, parent, incl, self_s, cached, can_cache = ev[k]
+        events.append((kernel, sig, depth, None if parent is None else new_index[node_of(parent)], incl,
+                       round(self_s + extra[k], 3), cached, can_cache))
+    return dict(plan, events=events, args=_encode_args([args[k] for k in keep]))
 
 
 def write_plan_module(plans: Mapping[str, dict], note: str, path: Path = PLAN_MODULE) -> None:
@@ -267,6 +289,75 @@ def _picklable(args: tuple) -> tuple | None:
     return args
 
 
+def critical_chain(plans: Mapping[str, Mapping[str, Any]]) -> dict[str, tuple[float, float]]:
+    """Group name -> (its recorded serial compile [s], the longest chain of self times from a top-level kernel
+    down its callees [s]): the least a group's compile can take however many workers compile its kernels
+    (a caller's own compile starts once its callees are compiled)."""
+    nodes, roots = kernel_graph(plans)
+    memo: dict[str, float] = {}
+
+    def chain(sig: str) -> float:
+        if sig not in memo:
+            memo[sig] = nodes[sig].self_s + max((chain(c) for c in nodes[sig].children), default=0.0)
+        return memo[sig]
+
+    out = {}
+    for name, plan in plans.items():
+        serial = sum(e[4] for e in plan["events"] if e[2] == 0)
+        out[name] = (serial, max((chain(r) for r in roots.get(name, ())), default=0.0))
+    return out
+
+
+def _simulate_main(args) -> int:
+    import json
+    import math
+    import sys
+
+    from ..core import registry
+    from . import compile_plans_data as data
+    from .matrix import expand_matrix, locate_matrix
+    from .store import read_matrix_case_walls
+
+    store = Path(args.simulate) / "results.sqlite"
+    if not store.is_file():
+        print(f"bench-myriapoda: {args.simulate}: no results.sqlite; give a matrix output directory", file=sys.stderr)
+        return 2
+    registry.load_all()
+    walls = {h: (w, c) for h, w, c in read_matrix_case_walls(store)}
+    cases, run = [], []
+    for mc in expand_matrix(locate_matrix(args.matrix)).cases:
+        h = mc.case.case_hash()
+        if h in walls and walls[h][0] is not None and math.isfinite(walls[h][0]):
+            w, c = walls[h]
+            cases.append(mc.case)
+            run.append(max(0.0, w - (c if c is not None and math.isfinite(c) else 0.0)))
+    rows = []
+    for n in args.workers:
+        kw = dict(costs=run, worker_start_s=args.worker_start, per_case_s=args.per_case)
+        rows.append({"workers": n, "before_s": simulate_cold(cases, run, n, data.PLANS, ahead=False, **kw),
+                     "after_s": simulate_cold(cases, run, n, data.PLANS, ahead=True, **kw),
+                     "warm_s": _warm(run, n, args)})
+    chains = critical_chain(data.PLANS)
+    if args.json:
+        print(json.dumps({"cases": len(cases), "run_sum_s": sum(run), "rows": rows,
+                          "groups": {k: {"serial_s": a, "chain_s": b} for k, (a, b) in chains.items()}}, indent=1))
+        return 0
+    print(f"{args.matrix}: {len(cases)} cases with a stored wall, {sum(run):.1f} s of cases with warm kernels; "
+          f"compile plans of {len(data.PLANS)} groups")
+    for name, (serial, chain) in sorted(chains.items(), key=lambda kv: -kv[1][0]):
+        print(f"  {name:24s} compile {serial:6.1f} s serial, {chain:6.1f} s along its longest chain of callees")
+    print("workers  cold before  cold after  warm")
+    for r in rows:
+        print(f"{r['workers']:>7}  {r['before_s']:9.1f} s  {r['after_s']:8.1f} s  {r['warm_s']:5.1f} s")
+    return 0
+
+
+def _warm(run: Sequence[float], workers: int, args) -> float:
+    from .schedule import simulate
+
+    return simulate(run, workers, args.worker_start, args.per_case).wall_s
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     import argparse
     import sys
@@ -277,7 +368,17 @@ def main(argv: Sequence[str] | None = None) -> int:
                     help="record every compile group of these matrices (one fresh process and numba cache each)")
     ap.add_argument("--write", action="store_true", help=f"write the recorded plans to {PLAN_MODULE.name}")
     ap.add_argument("--note", default="", help="how and where the plans were recorded (the module's docstring)")
+    ap.add_argument("--simulate", metavar="DIR", help="a matrix output directory (results.sqlite) whose case wall "
+                    "times minus compile are the cases' warm costs: the cold matrix's wall predicted with and "
+                    "without kernels compiled ahead, from the recorded plans")
+    ap.add_argument("--matrix", default="quick", help="the matrix DIR ran (with --simulate)")
+    ap.add_argument("--workers", type=int, nargs="+", default=[1, 2, 4, 8, 16])
+    ap.add_argument("--worker-start", type=float, default=0.0, metavar="S", help="worker start [s] (--simulate)")
+    ap.add_argument("--per-case", type=float, default=0.0, metavar="S", help="fixed cost per case [s] (--simulate)")
+    ap.add_argument("--json", action="store_true", help="--simulate: print JSON")
     args = ap.parse_args(argv)
+    if args.simulate:
+        return _simulate_main(args)
     if args.record_one:
         _record_one(*args.record_one)
         return 0
@@ -362,10 +463,23 @@ def group_tasks(plan: Mapping[str, Any], args: Sequence[tuple] | None = None) ->
     return out
 
 
+ENV_SWITCH = "BENCH_MYRIAPODA_COMPILE_PLAN"  # "off": no kernels compiled ahead, none preloaded (as before issue 31)
+
+
+def plans_enabled() -> bool:
+    """Whether the recorded plans are used (not turned off with ``BENCH_MYRIAPODA_COMPILE_PLAN=off``)."""
+    import os
+
+    return os.environ.get(ENV_SWITCH, "on").strip().lower() not in ("off", "0", "no", "false")
+
+
 def load_plans() -> dict[str, list[KernelTask]]:
     """Group name -> :func:`group_tasks` of the recorded plans (``compile_plans_data``); empty where they do not
-    apply: recorded with another numba major.minor version (its signatures' types may differ), or unreadable.
-    Without a plan a group compiles as before, in the worker of its first case."""
+    apply: recorded with another numba major.minor version (its signatures' types may differ), unreadable, or
+    turned off (:func:`plans_enabled`).  Without a plan a group compiles as before, in the worker of its first
+    case."""
+    if not plans_enabled():
+        return {}
     try:
         import numba
 
@@ -574,6 +688,8 @@ def preload_cached() -> tuple[int, int]:
     cache into this process; (signatures loaded, signatures recorded).  The local workers' fork server runs it
     once (``worker_preload``), so every worker forked from it starts with them instead of loading them for its
     first case of each group; on a cold cache nothing is loaded and nothing is compiled."""
+    if not plans_enabled():
+        return 0, 0
     try:
         import numba
 
