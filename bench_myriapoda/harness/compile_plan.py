@@ -401,9 +401,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     return 2
 
 
-if __name__ == "__main__":
-    raise SystemExit(main())
-
 
 # --------------------------------------------------------------------------- what idle workers compile
 
@@ -715,3 +712,7 @@ def preload_cached() -> tuple[int, int]:
             except Exception:  # noqa: BLE001 -- a stale or foreign cache entry: the case loads or compiles its own
                 continue
     return loaded, total
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
