@@ -597,7 +597,7 @@ def simulate_cold(cases: Sequence[Any], run_s: Sequence[float], workers: int, pl
         for s in slots:
             if s["gen"] is not None or s["retired"]:
                 continue
-            if s["extra"] and not sched.cold_groups_pending() and not sched.kernel_jobs_left():
+            if s["extra"] and not sched.cold_groups_pending():
                 s["retired"] = True
                 continue
             job = None
@@ -608,7 +608,7 @@ def simulate_cold(cases: Sequence[Any], run_s: Sequence[float], workers: int, pl
                 s["case"] = not s["extra"]
                 running[0] += 0 if s["extra"] else 1
             else:
-                task = sched.next_kernel_job()
+                task = None if s["extra"] else sched.next_kernel_job()  # the extra worker only compiles groups
                 if task is None:
                     continue
                 s["gen"], s["case"] = compile_tree(task.key), False

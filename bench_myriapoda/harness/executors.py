@@ -454,19 +454,21 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
         # kernel jobs alone do not keep the matrix going: once every case is done they are stopped (finally)
         while pending or ready or any(s.job and s.kernel is None for s in slots):
             for k, s in enumerate(slots):
-                if (k >= n and s.job is None and not s.retired and not sched.cold_groups_pending()
-                        and not sched.kernel_jobs_left()):
+                if k >= n and s.job is None and not s.retired and not sched.cold_groups_pending():
                     s.stop()  # the extra compile worker's work is done
                     s.retired = True
-                if s.job is None and not s.retired and (pending or sched.kernel_jobs_left()):
+                if s.job is None and not s.retired and (pending or (k < n and sched.kernel_jobs_left())):
                     s.compile_only = k >= n
                     s.job = (sched.next_compile_job() if s.compile_only else next_job()) if pending else None
                     mode = s.compile_only
-                    if s.job is None:  # nothing to run now: compile a kernel a group will need (compile_plan)
+                    # nothing to run now: a worker (not the extra one, which would add a process beyond the cores)
+                    # compiles a kernel a group will need (compile_plan)
+                    if s.job is None and k < n:
                         s.kernel = sched.next_kernel_job()
-                        if s.kernel is None:
-                            continue
-                        s.job, mode = (-1, [(s.kernel.kernel, s.kernel.args)]), KERNELS
+                        if s.kernel is not None:
+                            s.job, mode = (-1, [(s.kernel.kernel, s.kernel.args)]), KERNELS
+                    if s.job is None:
+                        continue
                     s.started, s.running = time.monotonic(), False
                     s.conn.send((*s.job, mode))
             # stored only now: a result's SQLite commit and recording (tens of ms, most of it waiting for the
