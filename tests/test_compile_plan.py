@@ -273,3 +273,33 @@ def test_kernels_compiled_ahead_change_no_result_and_the_switch_turns_them_off(t
         assert r.status == o.status == "ok" and r.metrics.keys() == o.metrics.keys()
         assert all(v == o.metrics[k] or (isinstance(v, float) and math.isnan(v) and math.isnan(o.metrics[k]))
                    for k, v in r.metrics.items())
+
+
+def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
+    """A plan recorded before a kernel was renamed or given other parameters: load_plans leaves those
+    signatures out (a worker would spend a compile that fails), keeps the rest, and stale_signatures names
+    them.  The shipped plans have none (tests/test_compiled_signatures.py also checks their argument types)."""
+    from numba.core import types
+
+    from bench_myriapoda.harness import compile_plans_data as data
+
+    assert CP.stale_signatures() == []
+    ok = "bench_myriapoda.bodies.fem.kernels.lumped_mass"
+    assert CP.stale_reason(ok, (types.int64[:, ::1], types.float64[::1], types.float64[::1], types.float64[::1])) is None
+    events = [("bench_myriapoda.fused.legged_walk.hybrid_chunk", "gone(a)", 0, None, 9.0, 1.0, False, True),
+              (ok, f"{ok}(a, b)", 1, 0, 4.0, 4.0, False, True),  # two arguments recorded, four taken
+              (ok, f"{ok}(a, b, c, d)", 1, 0, 4.0, 4.0, False, True),
+              ("bench_myriapoda.harness.compile_plan.stale_reason", "x(a, b)", 1, 0, 4.0, 4.0, False, True),
+              ("bench_myriapoda.bodies.fem.kernels.rest_shape", "r(a)", 0, None, 2.0, 2.0, False, True)]
+    args = [("a",), ("a", "b"), ("a", "b", "c", "d"), ("a", "b"), ("a",)]
+    plan = {"case": "x", "events": events, "args": CP._encode_args(args)}
+    why = CP.stale_signatures({"g": plan})
+    assert len(why) == 4 and all(w.startswith("g: ") for w in why)
+    assert "hybrid_chunk: not found" in why[0]
+    assert "recorded with 2 arguments, takes 4" in why[1]
+    assert "not a numba dispatcher" in why[2]
+    assert "recorded with 1 arguments, takes 4" in why[3]
+    monkeypatch.setattr(data, "PLANS", {"g": plan})
+    monkeypatch.setattr(data, "NUMBA_VERSION", __import__("numba").__version__)
+    monkeypatch.setenv(CP.ENV_SWITCH, "on")
+    assert [t.key for t in CP.load_plans()["g"]] == [f"{ok}(a, b, c, d)"]

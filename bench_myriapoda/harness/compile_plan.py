@@ -187,11 +187,12 @@ def _decode_args(blob: str) -> list[tuple]:
     return pickle.loads(zlib.decompress(base64.b64decode(blob)))
 
 
-def record_groups(cases: Sequence[Any], timeout_s: float = 900.0) -> dict[str, dict]:
+def record_groups(cases: Sequence[Any], timeout_s: float = 900.0,
+                  groups: Sequence[str] | None = None) -> dict[str, dict]:
     """Each compile group's kernels: the group's first case (its cheapest, as the executor starts it) compiled in
     a fresh process with a fresh numba cache, so every kernel of the group compiles and is timed.  Group name ->
     ``{"case": label, "events": [(kernel, signature, depth, parent, inclusive_s, self_s, cached, can_cache)],
-    "args": the events' argument types, pickled}``."""
+    "args": the events' argument types, pickled}``.  ``groups``: only these group names (default: all)."""
     import os
     import pickle
     import subprocess
@@ -202,7 +203,8 @@ def record_groups(cases: Sequence[Any], timeout_s: float = 900.0) -> dict[str, d
 
     firsts: dict[tuple, Any] = {}
     for c in sorted(cases, key=lambda c: c.steps):
-        firsts.setdefault(compile_group(c), c)
+        if groups is None or group_name(compile_group(c)) in groups:
+            firsts.setdefault(compile_group(c), c)
     out = {}
     for group, case in firsts.items():
         with tempfile.TemporaryDirectory(prefix="bench-compile-plan-") as tmp:
@@ -246,6 +248,18 @@ def compact(plan: Mapping[str, Any]) -> dict:
         events.append((kernel, sig, depth, None if parent is None else new_index[node_of(parent)], incl,
                        round(self_s + extra[k], 3), cached, can_cache))
     return dict(plan, events=events, args=_encode_args([args[k] for k in keep]))
+
+
+def read_plan_module(path: Path = PLAN_MODULE) -> dict[str, dict]:
+    """The ``PLANS`` of a module :func:`write_plan_module` wrote (empty if there is none)."""
+    import importlib.util
+
+    if not Path(path).is_file():
+        return {}
+    spec = importlib.util.spec_from_file_location("_bench_compile_plans", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return dict(mod.PLANS)
 
 
 def write_plan_module(plans: Mapping[str, dict], note: str, path: Path = PLAN_MODULE) -> None:
@@ -331,19 +345,20 @@ def _simulate_main(args) -> int:
             w, c = walls[h]
             cases.append(mc.case)
             run.append(max(0.0, w - (c if c is not None and math.isfinite(c) else 0.0)))
+    plans = read_plan_module(Path(args.plans)) if args.plans else data.PLANS
     rows = []
     for n in args.workers:
         kw = dict(costs=run, worker_start_s=args.worker_start, per_case_s=args.per_case)
-        rows.append({"workers": n, "before_s": simulate_cold(cases, run, n, data.PLANS, ahead=False, **kw),
-                     "after_s": simulate_cold(cases, run, n, data.PLANS, ahead=True, **kw),
+        rows.append({"workers": n, "before_s": simulate_cold(cases, run, n, plans, ahead=False, **kw),
+                     "after_s": simulate_cold(cases, run, n, plans, ahead=True, **kw),
                      "warm_s": _warm(run, n, args)})
-    chains = critical_chain(data.PLANS)
+    chains = critical_chain(plans)
     if args.json:
         print(json.dumps({"cases": len(cases), "run_sum_s": sum(run), "rows": rows,
                           "groups": {k: {"serial_s": a, "chain_s": b} for k, (a, b) in chains.items()}}, indent=1))
         return 0
     print(f"{args.matrix}: {len(cases)} cases with a stored wall, {sum(run):.1f} s of cases with warm kernels; "
-          f"compile plans of {len(data.PLANS)} groups")
+          f"compile plans of {len(plans)} groups")
     for name, (serial, chain) in sorted(chains.items(), key=lambda kv: -kv[1][0]):
         print(f"  {name:24s} compile {serial:6.1f} s serial, {chain:6.1f} s along its longest chain of callees")
     print("workers  cold before  cold after  warm")
@@ -367,6 +382,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--record", nargs="+", metavar="MATRIX",
                     help="record every compile group of these matrices (one fresh process and numba cache each)")
     ap.add_argument("--write", action="store_true", help=f"write the recorded plans to {PLAN_MODULE.name}")
+    ap.add_argument("--groups", nargs="+", metavar="GROUP", help="with --record: only these compile groups "
+                    "(massspring-legged-dry, ...); with --write the file's other groups are kept")
+    ap.add_argument("--out", metavar="FILE", help=f"with --write: write this file instead of {PLAN_MODULE.name} "
+                    "(--simulate --plans FILE reads it)")
+    ap.add_argument("--plans", metavar="FILE", help="with --simulate: the plans of this file (default: the "
+                    "shipped ones)")
     ap.add_argument("--note", default="", help="how and where the plans were recorded (the module's docstring)")
     ap.add_argument("--simulate", metavar="DIR", help="a matrix output directory (results.sqlite) whose case wall "
                     "times minus compile are the cases' warm costs: the cold matrix's wall predicted with and "
@@ -388,14 +409,16 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         registry.load_all()
         cases = [mc.case for m in args.record for mc in expand_matrix(locate_matrix(m)).cases]
-        plans = record_groups(cases)
+        plans = record_groups(cases, groups=args.groups)
         for name, p in plans.items():
             print(f"== {name} ({p['case']})")
             for kernel, sig, depth, _parent, incl, self_s, cached, _cc in p["events"]:
                 if incl >= 0.3 or depth == 0:
                     print(f"{incl:7.2f} {self_s:7.2f} {'cached' if cached else '':6s} {'  ' * depth}{kernel}")
         if args.write:
-            write_plan_module(plans, args.note)
+            out = Path(args.out) if args.out else PLAN_MODULE
+            # --groups: the other groups' plans stay as they were recorded
+            write_plan_module({**(read_plan_module(out) if args.groups else {}), **plans}, args.note, out)
         return 0
     ap.print_usage(sys.stderr)
     return 2
@@ -473,8 +496,8 @@ def plans_enabled() -> bool:
 def load_plans() -> dict[str, list[KernelTask]]:
     """Group name -> :func:`group_tasks` of the recorded plans (``compile_plans_data``); empty where they do not
     apply: recorded with another numba major.minor version (its signatures' types may differ), unreadable, or
-    turned off (:func:`plans_enabled`).  Without a plan a group compiles as before, in the worker of its first
-    case."""
+    turned off (:func:`plans_enabled`); a signature that no longer fits the code (:func:`stale_reason`) is left
+    out.  Without a plan a group compiles as before, in the worker of its first case."""
     if not plans_enabled():
         return {}
     try:
@@ -488,9 +511,57 @@ def load_plans() -> dict[str, list[KernelTask]]:
     out = {}
     for name, plan in data.PLANS.items():
         try:
-            out[name] = group_tasks(plan)
+            tasks = group_tasks(plan)
         except Exception:  # noqa: BLE001 -- a plan pickled by another numba: compile as before
             continue
+        out[name] = [t for t in tasks if stale_reason(t.kernel, t.args) is None]
+    return out
+
+
+def stale_reason(kernel: str, args: tuple) -> str | None:
+    """Why a recorded signature no longer fits the code (None: it may): the kernel is gone, is no numba
+    dispatcher, or takes another number of arguments.  A plan recorded before a kernel was renamed, removed or
+    given other parameters would otherwise hand idle workers compiles that fail (caught in the worker: time
+    lost) or preload nothing; :func:`load_plans` and :func:`preload_cached` skip such signatures.  A signature
+    with the right number of arguments of types the code no longer passes cannot be told apart without
+    compiling it: ``tests/test_compiled_signatures.py`` fails on those (every recorded signature must be one
+    the quick matrix compiles now), and the plans are recorded again (module docstring)."""
+    import inspect
+
+    from numba.core.dispatcher import Dispatcher
+
+    try:
+        dispatcher = dispatcher_of(kernel)
+    except (ImportError, AttributeError, ValueError) as exc:
+        return f"{kernel}: not found ({type(exc).__name__}: {exc})"
+    if not isinstance(dispatcher, Dispatcher):
+        return f"{kernel}: not a numba dispatcher ({type(dispatcher).__name__})"
+    params = inspect.signature(dispatcher.py_func).parameters.values()
+    if any(p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD) for p in params):
+        return None
+    if len(args) != len(params):
+        return f"{kernel}: recorded with {len(args)} arguments, takes {len(params)}"
+    return None
+
+
+def stale_signatures(plans: Mapping[str, Mapping[str, Any]] | None = None) -> list[str]:
+    """Every recorded signature of ``plans`` (default: the shipped ``compile_plans_data.PLANS``) that
+    :func:`stale_reason` rejects, as ``group: reason`` lines (empty: none is stale)."""
+    if plans is None:
+        from . import compile_plans_data as data
+
+        plans = data.PLANS
+    out = []
+    for name, plan in plans.items():
+        try:
+            args = _decode_args(plan["args"])
+        except Exception as exc:  # noqa: BLE001 -- pickled by another numba or damaged
+            out.append(f"{name}: the signatures cannot be read ({type(exc).__name__}: {exc})")
+            continue
+        for k, ev in enumerate(plan["events"]):
+            why = None if args[k] is None else stale_reason(ev[0], tuple(args[k]))
+            if why is not None:
+                out.append(f"{name}: {why}")
     return out
 
 
@@ -703,7 +774,7 @@ def preload_cached() -> tuple[int, int]:
         except Exception:  # noqa: BLE001 -- pickled by another numba: nothing to preload from this plan
             continue
         for k, (kernel, sig, depth, _parent, _incl, _self, _cached, can_cache) in enumerate(plan["events"]):
-            if depth != 0 or not can_cache or args[k] is None or sig in seen:
+            if depth != 0 or not can_cache or args[k] is None or sig in seen or stale_reason(kernel, args[k]):
                 continue
             seen.add(sig)
             total += 1
