@@ -7,6 +7,7 @@ import textwrap
 import pytest
 
 from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness import cold_compile as CC
 from bench_myriapoda.harness import compile_plan as CP
 from bench_myriapoda.harness.executors import CompileScheduler, compile_group
 
@@ -221,17 +222,17 @@ def test_simulated_cold_matrix_compiles_a_groups_independent_kernels_side_by_sid
                           ("m.body", "m.body(a)", 1, 0, 10.0, 10.0, False, True)])}
     run = [1.0, 2.0, 3.0]
     costs = [1.0, 2.0, 3.0]
-    before = CP.simulate_cold(cases, run, 3, plans, ahead=False, costs=costs)
-    after = CP.simulate_cold(cases, run, 3, plans, ahead=True, costs=costs)
+    before = CC.simulate_cold(cases, run, 3, plans, ahead=False, costs=costs)
+    after = CC.simulate_cold(cases, run, 3, plans, ahead=True, costs=costs)
     # before: the cheapest case compiles all 24 s, then the three cases run on three workers: 24 + 3
     assert before == pytest.approx(27.0)
     # ahead: two idle workers compile the callees while the case's worker waits for them, then the chunk 4 s
     assert after == pytest.approx(10.0 + 4.0 + 3.0)
     # one worker: nothing idle, the same 24 s of compile plus 6 s of cases either way
-    assert CP.simulate_cold(cases, run, 1, plans, ahead=True, costs=costs) == pytest.approx(30.0)
-    assert CP.simulate_cold(cases, run, 1, plans, ahead=False, costs=costs) == pytest.approx(30.0)
+    assert CC.simulate_cold(cases, run, 1, plans, ahead=True, costs=costs) == pytest.approx(30.0)
+    assert CC.simulate_cold(cases, run, 1, plans, ahead=False, costs=costs) == pytest.approx(30.0)
     # two workers on one core share it: no faster than one worker
-    assert CP.simulate_cold(cases, run, 2, plans, ahead=True, costs=costs, cores=1) == pytest.approx(30.0)
+    assert CC.simulate_cold(cases, run, 2, plans, ahead=True, costs=costs, cores=1) == pytest.approx(30.0)
 
 
 def test_recorded_plans_load_and_name_kernels_that_exist():

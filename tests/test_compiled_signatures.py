@@ -37,7 +37,7 @@ def test_recorded_compile_plans_hold_only_signatures_the_quick_matrix_compiles(s
     """A compile plan (``harness/compile_plans_data.py``, issue 31) recorded before a kernel changed names a
     signature nothing asks for any more: idle workers would compile it for nothing (or fail to, and the case
     compiles its own).  Every recorded project-kernel signature must be one the quick matrix's groups compile
-    now; when this fails, record the plans again (``python -m bench_myriapoda.harness.compile_plan --record
+    now; when this fails, record the plans again (``python -m bench_myriapoda.harness.cold_compile --record
     quick --write``, docs/guide/scheduling.md)."""
     import numba
 

@@ -16,7 +16,7 @@
 #   BIG in file order (the order before issue 31); quick warm on BIG with spawned workers (the start before
 #   issue 31); quick warm on BIG in file order.  Warm series start with the cold run's rows in their store,
 #   so their cases are ordered by what this machine measured.  Last, the cold quick matrix simulated for 1 to
-#   BIG workers from quick-warm-1's case costs and the recorded compile plans (compile_plan --simulate).
+#   BIG workers from quick-warm-1's case costs and the recorded compile plans (cold_compile --simulate).
 # Writes into $OUT: one folder per series (matrix.json with the schedule section, results.csv, results.sqlite,
 # the run's log, process.json), summary.json and summary.md (walls, parallel efficiency, critical path,
 # predicted-vs-measured r), fixed_costs.jsonl, simulated.json in the 1-worker folders, env.txt, progress.log.
@@ -138,7 +138,7 @@ done
 
 # --- the cold quick matrix simulated with and without kernels compiled ahead (recorded compile plans)
 if [ -f "$OUT/quick-warm-1/results.sqlite" ] && [ -z "${DEVICE_TINY:-}" ]; then
-  timeout 60 $PY -m bench_myriapoda.harness.compile_plan --simulate "$OUT/quick-warm-1" --matrix "$QUICK" \
+  timeout 60 $PY -m bench_myriapoda.harness.cold_compile --simulate "$OUT/quick-warm-1" --matrix "$QUICK" \
       --workers 1 2 4 8 "$BIG" >"$OUT/quick-warm-1/simulated_cold.txt" 2>>"$OUT/progress.log"
 fi
 
