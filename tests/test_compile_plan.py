@@ -286,7 +286,8 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
 
     assert CP.stale_signatures() == []
     ok = "bench_myriapoda.bodies.fem.kernels.lumped_mass"
-    assert CP.stale_reason(ok, (types.int64[:, ::1], types.float64[::1], types.float64[::1], types.float64[::1])) is None
+    f64 = types.float64[::1]
+    assert CP.stale_reason(ok, (types.int64[:, ::1], f64, f64, f64)) is None
     events = [("bench_myriapoda.fused.legged_walk.hybrid_chunk", "gone(a)", 0, None, 9.0, 1.0, False, True),
               (ok, f"{ok}(a, b)", 1, 0, 4.0, 4.0, False, True),  # two arguments recorded, four taken
               (ok, f"{ok}(a, b, c, d)", 1, 0, 4.0, 4.0, False, True),

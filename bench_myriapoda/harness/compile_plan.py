@@ -13,8 +13,8 @@ one :class:`CompileEvent` per signature compiled or loaded: the kernel, the exac
 the wall time with its callees (``inclusive_s``) and without (``self_s``), whether it came from the
 cache.  ``python -m bench_myriapoda.harness.cold_compile --record quick --write`` records every
 compile group of a matrix, each in a fresh process on an empty cache, into ``compile_plans_data``
-(the signatures pickled: they are numba types; ``cold_compile`` also simulates a cold matrix).  :func:`load_plans` turns them into
-:class:`KernelTask` lists, which the local executor hands to workers that would otherwise wait
+(the signatures pickled: they are numba types; ``cold_compile`` also simulates a cold matrix).
+:func:`load_plans` turns them into :class:`KernelTask` lists, which the local executor hands to workers that would otherwise wait
 (``executors.CompileScheduler.next_kernel_job``): they compile a group's kernels with the case's
 exact signatures, from the end of the tree the case reaches last, so the case finds them in the
 cache.  The compile lock keeps each kernel compiled once per machine.  :func:`preload_cached` loads
