@@ -4,7 +4,7 @@ Run as a script (``python3 tests/kernel_signatures.py``; ``tests/test_compiled_s
 interpreter).  Prints one JSON object: {"typed": number of signatures re-typed, "kernels": number of project
 kernels with a signature, "extra": {kernel: [signature, ...]} for every kernel with more than one signature or
 with a signature that holds a ``Literal`` type or a read-only array; a kernel in ``PER_BODY`` may have one
-signature per body model}.
+signature per body model; "signatures": every project kernel's signatures, ``module.name(type, ...)``}.
 
 Why (issue 13, cold start): numba compiles a kernel once per signature, and the whole code under it again.  A
 constant passed on to another kernel (``j = -1`` then ``f(j)``) makes numba compile ``f`` for ``Literal[int](-1)``
@@ -110,8 +110,11 @@ def main() -> dict:
             extra[name] = [str(s) for s in k.signatures]
     per_body = {f"{k.py_func.__module__}.{k.py_func.__qualname__}": len(k.signatures) for k in kernels}
     per_body = {name: per_body.get(name, 0) for name in PER_BODY}
+    # every signature, as ``compile_plan`` names them (the recorded compile plans must hold no other)
+    signatures = sorted(f"{k.py_func.__module__}.{k.py_func.__qualname__}({', '.join(str(a) for a in s)})"
+                        for k in kernels for s in k.signatures)
     return {"typed": len(done), "kernels": len(kernels), "extra": extra, "per_body": per_body,
-            "per_body_expected": PER_BODY}
+            "per_body_expected": PER_BODY, "signatures": signatures}
 
 
 if __name__ == "__main__":

@@ -8,17 +8,22 @@
 #
 # Series, in order of importance; one whose estimate does not fit in what is left of BUDGET_S is skipped:
 #   quick cold (fresh numba cache) on BIG workers; the probe on BIG (its caterpillar cases are new kinds);
-#   worker fixed costs (spawn and forkserver, 1 and BIG workers); probe warm on BIG and 1; quick warm on BIG
-#   and 1; probe on dask with BIG workers; quick and probe warm on MID; probe warm on BIG in file order (the
-#   order before issue 31); quick warm on BIG with spawned workers (the start before issue 31); quick warm
-#   on BIG in file order.  Warm series start with the cold run's rows in their store, so their cases are
-#   ordered by what this machine measured.
+#   worker fixed costs (spawn and forkserver, 1 and BIG workers, compile plans off and on); probe warm on BIG
+#   and 1 (the 10x target: probe-warm-1 over probe-warm-BIG); quick cold on BIG again on a second fresh cache
+#   with the compile plans off (BENCH_MYRIAPODA_COMPILE_PLAN=off: no kernels compiled ahead, none preloaded,
+#   the executor before compile plans), so the cold target (quick-cold-BIG under 25 s) has its before beside
+#   it; quick warm on BIG and 1; probe on dask with BIG workers; quick and probe warm on MID; probe warm on
+#   BIG in file order (the order before issue 31); quick warm on BIG with spawned workers (the start before
+#   issue 31); quick warm on BIG in file order.  Warm series start with the cold run's rows in their store,
+#   so their cases are ordered by what this machine measured.  Last, the cold quick matrix simulated for 1 to
+#   BIG workers from quick-warm-1's case costs and the recorded compile plans (cold_compile --simulate).
 # Writes into $OUT: one folder per series (matrix.json with the schedule section, results.csv, results.sqlite,
 # the run's log, process.json), summary.json and summary.md (walls, parallel efficiency, critical path,
 # predicted-vs-measured r), fixed_costs.jsonl, simulated.json in the 1-worker folders, env.txt, progress.log.
 #
 # Local smoke test (2 cores, tiny matrices): DEVICE_TINY=1 BIG=2 MID=2 BUDGET_S=2400 OUT=/tmp/x bash tools/device_scaling.sh
 # (SCALING_CACHE=DIR: use that numba cache instead of a fresh one; PY=...: another interpreter)
+# One device call for the targets: OUT=$OUT BUDGET_S=420 bash tools/device_scaling.sh (about 6 minutes on 16 cores).
 set -u
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -101,9 +106,9 @@ series() {
 
 fixed_costs() {  # spawn and forkserver workers: 1 alone and BIG at once (warm cache)
   local now=$(( $(date +%s) - T0 ))
-  if [ $(( now + 40 )) -gt "$BUDGET_S" ]; then log "skip worker fixed costs"; return; fi
+  if [ $(( now + 60 )) -gt "$BUDGET_S" ]; then log "skip worker fixed costs"; return; fi
   log "worker fixed costs"
-  timeout 90 $PY -m bench_myriapoda.harness.worker_costs --workers 1 "$BIG" --start both \
+  timeout 120 $PY -m bench_myriapoda.harness.worker_costs --workers 1 "$BIG" --start both --plans both \
       >"$OUT/fixed_costs.jsonl" 2>"$OUT/fixed_costs.err"
   log "end worker fixed costs rc=$?"
 }
@@ -114,6 +119,9 @@ fixed_costs
 export SEED_FROM=probe-cold-$BIG
 series probe-warm-$BIG  "$PROBE" "$BIG" 25
 series probe-warm-1     "$PROBE" 1 80
+# the cold quick matrix as before compile plans, on a cache of its own (empty)
+SEED_FROM= NUMBA_CACHE_DIR=$WORK/numba-cache-plans-off BENCH_MYRIAPODA_COMPILE_PLAN=off \
+  series quick-cold-$BIG-plans-off "$QUICK" "$BIG" 75
 SEED_FROM=quick-cold-$BIG series quick-warm-$BIG  "$QUICK" "$BIG" 20
 SEED_FROM=quick-cold-$BIG series quick-warm-1     "$QUICK" 1 35
 series probe-dask-$BIG  "$PROBE" "$BIG" 35 --executor dask
@@ -128,6 +136,12 @@ for d in quick-warm-1 probe-warm-1; do
   [ -f "$OUT/$d/results.sqlite" ] && timeout 60 $PY -m bench_myriapoda.harness.schedule "$OUT/$d" --json \
       >"$OUT/$d/simulated.json" 2>>"$OUT/progress.log"
 done
+
+# --- the cold quick matrix simulated with and without kernels compiled ahead (recorded compile plans)
+if [ -f "$OUT/quick-warm-1/results.sqlite" ] && [ -z "${DEVICE_TINY:-}" ]; then
+  timeout 60 $PY -m bench_myriapoda.harness.cold_compile --simulate "$OUT/quick-warm-1" --matrix "$QUICK" \
+      --workers 1 2 4 8 "$BIG" >"$OUT/quick-warm-1/simulated_cold.txt" 2>>"$OUT/progress.log"
+fi
 
 # --- summary of every series that ran
 $PY - "$OUT" <<'EOF'

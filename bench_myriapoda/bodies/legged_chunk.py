@@ -88,7 +88,7 @@ def register(cls, poses_impl, carry_impl, sample_impl, step_impl) -> None:
         if _of(P, cls):
             return sample_impl
 
-    @overload(step)
+    @overload(step, inline="always")
     def _step(P):
         if _of(P, cls):
             return step_impl

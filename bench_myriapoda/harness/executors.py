@@ -152,9 +152,14 @@ def _exit_now() -> None:
     os._exit(0)
 
 
+KERNELS = "kernels"  # a worker job's mode: compile a list of kernel signatures (``compile_plan.KernelTask``)
+
+
 def _worker_main(conn) -> None:
     """A local worker: receive ``(index, case, compile_only)``; send ``("started", index)``, then
-    ``("done", slim result)``, or with ``compile_only`` ``("compiled", index)`` after :func:`compile_case`.
+    ``("done", slim result)``, or with ``compile_only`` ``("compiled", index)`` after :func:`compile_case`;
+    with ``compile_only == KERNELS``, ``case`` is a list of (kernel, argument types) compiled ahead of the
+    cases that need them (``compile_plan.compile_kernels``), then ``("compiled", index)``.
 
     ``None`` ends it.  The body models are imported once, before the first case.
     """
@@ -173,7 +178,14 @@ def _worker_main(conn) -> None:
         index, case, compile_only = msg
         try:
             conn.send(("started", index))
-            if compile_only:
+            if compile_only == KERNELS:  # ``case`` is a list of (kernel, argument types): compile them ahead
+                from .compile_plan import compile_kernels
+                try:
+                    compile_kernels(case)
+                except Exception:  # noqa: BLE001 -- a signature that does not apply: the case compiles its own
+                    pass
+                conn.send(("compiled", index))
+            elif compile_only:
                 try:
                     compile_case(case)
                 except Exception:  # noqa: BLE001 -- the case's own run reports the error
@@ -208,6 +220,7 @@ class _Slot:
     running: bool = False
     retired: bool = False  # stopped for good (the extra compile worker, once no group is left to compile)
     compile_only: bool = False  # the job compiles its case's kernels without running it (the extra worker)
+    kernel: object = None  # the job compiles this compile_plan.KernelTask ahead of its cases (an idle worker)
     stop_sent: bool = False  # told to exit (request_stop)
 
     def deadline(self, timeout: float) -> float:
@@ -298,13 +311,53 @@ class CompileScheduler:
     2. a case of a warm group;
     3. a cold group that shares kernels with a compiling group (better than an idle worker);
     4. nothing: the worker waits for a group to turn warm.
+
+    A worker that would wait compiles a kernel ahead instead (:meth:`next_kernel_job`): ``plans`` (group name
+    -> ``compile_plan.KernelTask`` list, ``compile_plan.load_plans``) list the kernels each group's cases
+    compile, with the exact signatures, callees before callers; idle workers compile them from the end the
+    group's own compile reaches last, so a group's kernels compile on several workers at once and its case
+    finds most of them in the cache.
     """
 
-    def __init__(self, cases: Sequence[Case], costs: Sequence[float] | None = None):
+    def __init__(self, cases: Sequence[Case], costs: Sequence[float] | None = None,
+                 plans: dict | None = None):
         self.pending = deque(compile_first_order(cases, costs))
         self.groups = [compile_group(c) for c in cases]
         self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
         self.warm: set = set()  # groups with a finished case
+        from .compile_plan import group_name
+
+        names = {g: group_name(g) for g in set(self.groups)}
+        # each group's kernels to compile ahead, in the order idle workers take them; a kernel several groups
+        # need is handed out once (``kernels_out``)
+        self.kernel_queue = {g: deque((plans or {}).get(n, ())) for g, n in names.items()}
+        self.kernels_out: set[str] = set()
+        self.kernel_jobs = 0  # kernel jobs handed out (what the run's stats report)
+
+    def next_kernel_job(self) -> object | None:
+        """A kernel (``compile_plan.KernelTask``) of a group not warm yet for an idle worker to compile ahead, or
+        None.  From the group with the most recorded compile time still to hand out: the largest compile
+        is the one that keeps its cases (and the matrix's end) waiting longest."""
+        best, left = None, 0.0
+        for g, q in self.kernel_queue.items():
+            if g in self.warm:
+                continue
+            while q and q[0].key in self.kernels_out:
+                q.popleft()
+            todo = sum(t.self_s for t in q if t.key not in self.kernels_out)
+            if q and todo > left:
+                best, left = g, todo
+        if best is None:
+            return None
+        task = self.kernel_queue[best].popleft()
+        self.kernels_out.add(task.key)
+        self.kernel_jobs += 1
+        return task
+
+    def kernel_jobs_left(self) -> bool:
+        """Whether :meth:`next_kernel_job` would hand out a kernel now."""
+        return any(g not in self.warm and any(t.key not in self.kernels_out for t in q)
+                   for g, q in self.kernel_queue.items())
 
     def cold_groups_pending(self) -> bool:
         """Whether a pending case would start a group's compile (its group is neither warm nor compiling)."""
@@ -376,13 +429,16 @@ class CompileScheduler:
 
 
 def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit: Callable[[RunResult], None],
-               costs: Sequence[float] | None = None) -> int:
+               costs: Sequence[float] | None = None, plans: dict | None = None, stats: dict | None = None) -> int:
     """Run ``cases`` on ``workers`` local worker processes; return the number of workers that ran cases.
-    ``costs``: predicted wall times [s] in the order of ``cases`` (longest first, ``compile_first_order``)."""
+    ``costs``: predicted wall times [s] in the order of ``cases`` (longest first, ``compile_first_order``).
+    ``plans``: the kernels idle workers compile ahead (``CompileScheduler``; default ``compile_plan.load_plans``).
+    ``stats``: gets ``kernel_jobs``, the number of kernels compiled (or loaded) ahead."""
+    from .compile_plan import load_plans
     from .worker_start import worker_context
 
     ctx = worker_context()
-    sched = CompileScheduler(cases, costs)
+    sched = CompileScheduler(cases, costs, load_plans() if plans is None else plans)
     pending = sched.pending
     next_job = sched.next_job
 
@@ -395,18 +451,26 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
     slots = [_start_slot(ctx) for _ in range(n + extra)]
     ready: list[RunResult] = []  # results received, to store once their workers have their next case
     try:
-        while pending or ready or any(s.job for s in slots):
+        # kernel jobs alone do not keep the matrix going: once every case is done they are stopped (finally)
+        while pending or ready or any(s.job and s.kernel is None for s in slots):
             for k, s in enumerate(slots):
                 if k >= n and s.job is None and not s.retired and not sched.cold_groups_pending():
                     s.stop()  # the extra compile worker's work is done
                     s.retired = True
-                if s.job is None and pending and not s.retired:
+                if s.job is None and not s.retired and (pending or (k < n and sched.kernel_jobs_left())):
                     s.compile_only = k >= n
-                    s.job = sched.next_compile_job() if s.compile_only else next_job()
+                    s.job = (sched.next_compile_job() if s.compile_only else next_job()) if pending else None
+                    mode = s.compile_only
+                    # nothing to run now: a worker (not the extra one, which would add a process beyond the cores)
+                    # compiles a kernel a group will need (compile_plan)
+                    if s.job is None and k < n:
+                        s.kernel = sched.next_kernel_job()
+                        if s.kernel is not None:
+                            s.job, mode = (-1, [(s.kernel.kernel, s.kernel.args)]), KERNELS
                     if s.job is None:
                         continue
                     s.started, s.running = time.monotonic(), False
-                    s.conn.send((*s.job, s.compile_only))
+                    s.conn.send((*s.job, mode))
             # stored only now: a result's SQLite commit and recording (tens of ms, most of it waiting for the
             # disk) no longer keep the worker that sent it waiting for its next case
             while ready:
@@ -434,6 +498,15 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                         sched.warmed(payload)
                     else:  # "done": the slim result; "compiled": the index of a compile-only job
                         result = payload
+                if s.kernel is not None:  # a kernel compiled ahead: nothing to record; one that died or outran the
+                    # timeout is the case's to compile (the lock dies with the process)
+                    if result is None and (not s.proc.is_alive() or (
+                            timeout is not None and time.monotonic() >= s.deadline(timeout))):
+                        s.stop(kill=True)
+                        slots[i] = _start_slot(ctx)
+                    elif result is not None:
+                        s.job, s.kernel = None, None
+                    continue
                 if s.compile_only:  # the extra compile worker: no result to record; a compile that died or
                     # outran the timeout leaves its group cold, for a worker to compile with its case
                     if result is None and (not s.proc.is_alive() or (
@@ -461,6 +534,8 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                     slots[i].job = None
                     ready.append(result)
     finally:
+        if stats is not None:
+            stats["kernel_jobs"] = sched.kernel_jobs
         # results received but not stored yet (an interrupt or error between receiving and storing them):
         # stored now, so nothing computed is lost
         while ready:
@@ -724,7 +799,7 @@ def run_matrix(cases: Sequence[Case], executor: str = "local", workers: int | No
     t0 = time.perf_counter()
     try:
         if executor == "local":
-            used = _run_local(todo, workers, timeout_per_case, emit, costs)
+            used = _run_local(todo, workers, timeout_per_case, emit, costs, stats=stats)
         else:
             used = _run_dask(todo, workers, scheduler, timeout_per_case, emit, processes=dask_processes, costs=costs)
     finally:

@@ -342,7 +342,8 @@ def correlation(xs: Sequence[float], ys: Sequence[float]) -> float:
 
 
 def run_summary(stats: Mapping[str, Any], results: Sequence[Any], labels: Mapping[str, str] | None = None) -> dict:
-    """What ``matrix.json`` keeps of a run's schedule: its :class:`Efficiency` (``efficiency``), and per case
+    """What ``matrix.json`` keeps of a run's schedule: its :class:`Efficiency` (``efficiency``), the kernels idle
+    workers compiled ahead (``kernel_jobs``, local executor; ``compile_plan``), and per case
     of this run its predicted and measured wall time [s] (``cases``), with the correlation of the two
     (``predicted_vs_measured_r``).  ``stats``: ``executors.run_matrix``'s; ``results``: its RunResults."""
     walls = {r.case.case_hash(): float(r.timings.get("wall_s", float("nan"))) for r in results}
@@ -354,6 +355,7 @@ def run_summary(stats: Mapping[str, Any], results: Sequence[Any], labels: Mappin
     pairs = [(predicted[h], w) for h, w in walls.items() if h in predicted and math.isfinite(w)]
     r = correlation([p for p, _ in pairs], [w for _, w in pairs])
     return {"efficiency": eff.to_dict(), "line": eff.line(), "emit_s": stats.get("emit_s"),
+            "kernel_jobs": stats.get("kernel_jobs"),
             "cost_sources": stats.get("cost_sources", {}), "predicted_vs_measured_r": r if math.isfinite(r) else None,
             "cases": cases}
 

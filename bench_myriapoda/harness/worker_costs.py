@@ -7,14 +7,20 @@ pipe protocol), on ``N`` workers started at once, with a warm JIT cache:
 ``start_s``       process start (spawn: a fresh interpreter's imports and body-model registry; forkserver:
                   a fork, plus the server's own imports when it was not running yet), until the worker
                   takes its first job (``"started"``);
-``kernel_load_s`` the first case's kernels loaded from numba's disk cache (a compile-only job);
+``kernel_load_s`` the first case's kernels loaded from numba's disk cache (a compile-only job); with the compile
+                  plans on (``compile_plan``), a forked worker finds the recorded groups' top-level kernels
+                  loaded by the fork server already, and this is what is left;
+``preload_s``     what loading those kernels costs once, in the server (timed in this process at the end,
+                  ``compile_plan.preload_cached``), with ``preloaded`` (signatures loaded, recorded);
 ``case_s``        a short case run in a worker: ``"started"`` to ``"done"`` (build, kernels already
                   loaded, run, metrics, compact recording, result over the pipe), and ``overhead_s``,
                   that minus the case's own stepping time (steps / steps_per_s);
 ``store_s``       the parent writing one result (recording ``.npz`` and store row), as ``run_matrix`` does;
 ``stop_s``        a stop request until the worker process has exited.
 
-Run ``python -m bench_myriapoda.harness.worker_costs --workers 1 16`` (one JSON line per measurement on stdout).
+Run ``python -m bench_myriapoda.harness.worker_costs --workers 1 16`` (one JSON line per measurement on stdout;
+``--plans both`` measures each with the compile plans off, then on: the fixed costs before and after the
+fork server preloads kernels).
 """
 from __future__ import annotations
 
@@ -49,10 +55,14 @@ def _await(conn, want: str):
             return payload, t
 
 
-def measure(workers: int, method: str | None = None) -> dict:
+def measure(workers: int, method: str | None = None, plans: bool | None = None) -> dict:
     """Fixed costs [s] of ``workers`` local workers started at once: medians and maxima over the workers.
-    ``method``: how they start (``worker_start.START_METHODS``; default: as the executor starts them)."""
+    ``method``: how they start (``worker_start.START_METHODS``; default: as the executor starts them);
+    ``plans``: the compile plans on or off (``compile_plan.ENV_SWITCH``; default: as they are)."""
+    import os
+
     from ..core.config import resolve_case
+    from . import compile_plan
     from .executors import _start_slot
     from .recorder import save_recording
     from .store import record_run
@@ -60,6 +70,8 @@ def measure(workers: int, method: str | None = None) -> dict:
     case = resolve_case(*PROBE_CASE, duration=PROBE_DURATION_S)
     from .worker_start import worker_context
 
+    if plans is not None:  # a fork server started with the other setting restarts (worker_context)
+        os.environ[compile_plan.ENV_SWITCH] = "on" if plans else "off"
     ctx = worker_context(method)
     server_running = ctx.get_start_method() == "forkserver" and _server_pid() is not None
     t0 = time.perf_counter()  # a fork server not running yet starts with the first worker: its imports count
@@ -103,9 +115,13 @@ def measure(workers: int, method: str | None = None) -> dict:
     def agg(xs):
         return {"median": statistics.median(xs), "max": max(xs)}
 
+    p0 = time.perf_counter()
+    preloaded = compile_plan.preload_cached()  # what the fork server did once (0 of 0 with the plans off)
+    preload_s = time.perf_counter() - p0
     return {"workers": workers, "start_method": ctx.get_start_method(), "server_was_running": server_running,
-            "start_s": agg(start), "kernel_load_s": agg(load), "case_s": agg(case_s),
-            "overhead_s": agg(overhead), "store_s": agg(store_s), "stop_s": agg(stop),
+            "plans": compile_plan.plans_enabled(), "start_s": agg(start), "kernel_load_s": agg(load),
+            "case_s": agg(case_s), "overhead_s": agg(overhead), "store_s": agg(store_s), "stop_s": agg(stop),
+            "preload_s": preload_s, "preloaded": list(preloaded),
             "probe_case": "/".join(PROBE_CASE) + f" {PROBE_DURATION_S} s, {case.steps} steps"}
 
 
@@ -114,6 +130,8 @@ def main(argv=None) -> int:
     ap.add_argument("--workers", type=int, nargs="+", default=[1], help="worker counts to measure, each in turn")
     ap.add_argument("--start", choices=("forkserver", "spawn", "both"), default="both",
                     help="how the workers start (both: spawn, then forkserver, for each count)")
+    ap.add_argument("--plans", choices=("on", "off", "both"), default="on",
+                    help="compile plans (kernels preloaded by the fork server): on, off, or off then on")
     args = ap.parse_args(argv)
     for n in args.workers:
         if not 1 <= n <= 256:
@@ -122,9 +140,11 @@ def main(argv=None) -> int:
     from ..core import registry
     registry.load_all()
     methods = ("spawn", "forkserver") if args.start == "both" else (args.start,)
+    plan_settings = (False, True) if args.plans == "both" else (args.plans == "on",)
     for n in args.workers:
         for m in methods:  # one JSON line per measurement, written at once: a run cut short keeps what it measured
-            print(json.dumps(measure(n, m)), flush=True)
+            for p in plan_settings:
+                print(json.dumps(measure(n, m, p)), flush=True)
     return 0
 
 

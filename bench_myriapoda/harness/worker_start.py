@@ -2,7 +2,7 @@
 
 A ``spawn`` worker starts a fresh interpreter and imports numpy, numba, scipy and this package and registers
 the body models before its first case: measured with ``python -m bench_myriapoda.harness.worker_costs``,
-several seconds of CPU per worker, once per worker (the figures are in docs/guide/scheduling.md).  A
+several seconds of CPU per worker, once per worker (figures in docs/benchmarks.md).  A
 ``forkserver`` with this package preloaded (``worker_preload``) does that once, in its server process, which
 starts at the beginning of ``bench-myriapoda matrix`` (:func:`prestart`) while the parent expands the matrix;
 each worker is then a fork of the server.  The server is single-threaded, so forking it is safe even when

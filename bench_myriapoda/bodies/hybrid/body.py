@@ -658,8 +658,14 @@ HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 
 def _hybrid_legged_step(P):
-    """``legged_chunk.step``: one coupled step."""
-    return K.advance(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+    """``legged_chunk.step``: one coupled step, ``rigid_chain.advance_chain`` on the packs named here.
+
+    Not through ``kernels.advance`` (the same call from Python): a kernel in between would be compiled after
+    the chain and before the chunk, one more optimisation and machine code of the whole chain on a cold
+    start's longest sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles")."""
+    links, att, boxes, world, coupling, acc = P.chain
+    return K.advance_chain(K.FEMLinks(*links), K.Attachment(*att), K.Boxes(*boxes), K.World(*world),
+                           K.Coupling(*coupling), acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
 register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)

@@ -443,8 +443,11 @@ SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
 
 
 def _spring_chain_legged_step(P):
-    """``legged_chunk.step``: one coupled step."""
-    return advance_spring_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+    """``legged_chunk.step``: one coupled step, ``rigid_chain.advance_chain`` on the packs named here (not
+    through ``advance_spring_chain``: ``hybrid.body._hybrid_legged_step`` says why)."""
+    links, att, boxes, world, coupling, acc = P.chain
+    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
+                         acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
 register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)
