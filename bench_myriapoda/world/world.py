@@ -5,7 +5,9 @@
 (their ``world`` argument), so no part of a run rebuilds the terrain from the scenario (issue 30 item 1: the
 terrain used to be rebuilt in about 13 places, a 10^5-triangle mesh terrain each time from its cache, random
 cylinders and food sources redrawn each time).  Each of those keeps a fallback that builds its own world when
-it is given none (a body or controller built alone, by a test or a script).
+it is given none (a body or controller built alone, by a test or a script).  The curvature calibration
+(``harness.calibration``, on a cache miss) measures a short copy of the body in a world of its own (no ground,
+no gravity: ``bodies.curvature_calibration._calibration_case``), which its factory builds from that case.
 
 What the world holds does not change during a run (Newton's "model", as against the body's state): the
 terrain vector ``terr`` (``terrain_kernels`` layout, obstacles and their grid included) is shared by
