@@ -114,3 +114,40 @@ def test_obstacles_within_a_radius_equal_the_loop_in_record_order(n):
                     if TK._obstacle_phi(f, off + TK.OBST_STRIDE * k, x, y, z) < radius]
             m = TK.obstacles_within(f, x, y, z, radius, out)
             assert list(out[:m]) == want
+
+
+@pytest.mark.parametrize("n", [1, 7, 60, 400])
+def test_threshold_query_equals_the_full_query(n):
+    """``distance_at_least(p, d)`` is ``signed_distance(p) >= d`` for every p and d (issue 30): inside and
+    outside the grid, inside obstacles, exactly at and just off the obstacles' tops, NaN, on a plane and on a
+    height field (its base phi is not the plane's)."""
+    f = random_obstacles(n, 12.0, seed=n)
+    hf = TK.with_obstacles(TK.heightfield_params(0.0, [[0.0, 0.0], [5.0, -3.0]], [0.5, -0.3], [2.0, 3.0]),
+                           TK.obstacle_records(f))
+    rng = np.random.default_rng(200 + n)
+    m = 3000
+    p = np.column_stack([rng.uniform(-30, 30, m), rng.uniform(-1.5, 4.0, m), rng.uniform(-30, 30, m)])
+    tops = TK.obstacle_records(f)[:, 5]
+    p[: m // 4, 1] = rng.choice(tops, m // 4) + rng.choice([0.0, 1e-12, -1e-12, 0.01, 0.3], m // 4)
+    p[:3] = [[np.nan, 0.5, 0.0], [0.0, np.nan, 0.0], [0.0, 0.5, np.nan]]
+    for kind, terr in ((TK.PLANE, f), (TK.HEIGHTFIELD, hf)):
+        for x, y, z in p:
+            for d in (0.0, 0.01, -0.002, 0.3, 1.0, -0.5, 50.0):
+                assert TK.distance_at_least(kind, terr, x, y, z, d) == (TK.signed_distance(kind, terr, x, y, z) >= d), \
+                    (kind, x, y, z, d)
+
+
+def test_threshold_query_skips_the_search_above_low_obstacles():
+    """The cell tops answer a body node's contact test without the search: points 0.65-1.1 m up (the walking
+    centipede's underside and nodes) among Fig. 13's cylinders (at most 0.4 m high), every one of them."""
+    half = 0.5 * math.sqrt(120 / FIG13_DENSITY)
+    rng = np.random.default_rng(5)
+    recs = [TK.cylinder_record(rng.uniform(-half, half), rng.uniform(-half, half), rng.uniform(0.3, 0.8), -1.0,
+                               rng.uniform(0.1, 0.4)) for _ in range(120)]
+    f = TK.with_obstacles(TK.header(0.0), recs)
+    p = np.column_stack([rng.uniform(-half, half, 2000), rng.uniform(0.65, 1.1, 2000), rng.uniform(-half, half, 2000)])
+    clear = [TK._obstacles_clear(f, x, y, z, 0.01) for x, y, z in p]
+    assert all(clear)
+    # and near the ground, where the search is needed, it does not claim clearance it cannot show
+    low = [TK._obstacles_clear(f, x, 0.05, z, 0.01) for x, _, z in p]
+    assert not all(low)

@@ -27,7 +27,7 @@ import math
 
 from numba import njit
 
-from ..world.terrain_kernels import path_surface_fraction, signed_distance, surface_normal
+from ..world.terrain_kernels import distance_at_least, path_surface_fraction, signed_distance, surface_normal
 from .friction_kernels import STICK, ground_friction
 from .step_status import ACC_MAX_PEN, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 
@@ -151,12 +151,12 @@ def advance_point_if_clear(x, v, i, vx, vy, vz, dt, terr_kind, terr, flat, groun
     and the FEM bodies' loops keep the same arithmetic written out, measured faster (``fem.myriapod.advance_chain``).
     """
     px, py, pz = x[i, 0], x[i, 1], x[i, 2]
-    phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
-    if not phi >= contact_dist:
+    # (``distance_at_least``: the same tests as phi >= ..., answered among obstacles without their search
+    # for the points high above them)
+    if not ((py - ground >= contact_dist) if flat else distance_at_least(terr_kind, terr, px, py, pz, contact_dist)):
         return NOT_CLEAR
     qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-    phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
-    if not phi >= 0.0:
+    if not ((qy - ground >= 0.0) if flat else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0)):
         return NOT_CLEAR
     x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
     if new_velocity:

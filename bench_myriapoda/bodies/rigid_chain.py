@@ -27,7 +27,7 @@ from numba import njit
 from numba.core import types
 from numba.extending import overload
 
-from ..world.terrain_kernels import flat_ground, signed_distance
+from ..world.terrain_kernels import distance_at_least, flat_ground, signed_distance
 from . import rigid_kernels as rk
 from . import step_status as S
 from .friction_kernels import CONTACT_DISTANCE, spine_between
@@ -251,6 +251,11 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
             px = c[i, 0] + Rb[i, 0, 0] * sx + Rb[i, 0, 1] * sy + Rb[i, 0, 2] * sz
             py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
             pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
+            # a corner at least the contact distance up changes nothing below (deepest and max_pen are >= 0
+            # >= -contact_dist): ``distance_at_least`` answers that among obstacles without their search
+            if not flat and -contact_dist <= deepest and -contact_dist <= max_pen and \
+                    distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
+                continue
             phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1

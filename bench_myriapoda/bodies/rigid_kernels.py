@@ -58,7 +58,7 @@ from numba import njit
 
 from ..kinematics.rotations import mat_t_vec as _matTvec, matvec as _matvec  # noqa: F401 (fem kernels use them from here)
 
-from bench_myriapoda.world.terrain_kernels import signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import distance_at_least, signed_distance, surface_normal
 
 STATUS_OK = 0
 STATUS_NONFINITE = 1
@@ -560,7 +560,7 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
         sz = 1.0 if (corner & 4) else -1.0
         rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
         px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-        if signed_distance(kind, f, px, py, pz) >= 0.0:
+        if distance_at_least(kind, f, px, py, pz, 0.0):  # signed_distance >= 0 (without an obstacle search above them)
             continue
         nx, ny, nz = surface_normal(kind, f, px, py, pz)
         t1x, t1y, t1z, t2x, t2y, t2z = _tangent_basis(nx, ny, nz)
@@ -683,9 +683,9 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
             sz = 1.0 if (corner & 4) else -1.0
             rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
             px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-            phi = signed_distance(kind, f, px, py, pz)
-            if phi >= -slop:
+            if distance_at_least(kind, f, px, py, pz, -slop):  # phi >= -slop (see the contact loop)
                 continue
+            phi = signed_distance(kind, f, px, py, pz)
             nx, ny, nz = surface_normal(kind, f, px, py, pz)
             k = _inv_mass_along(inv_m, Iw, rx, ry, rz, nx, ny, nz, nx, ny, nz)
             p = -beta * (phi + slop) / k

@@ -63,7 +63,7 @@ def _check_mesh(v) -> str | None:
     """'skull' or a readable, closed mesh file (loaded once to check it)."""
     if v == "skull":
         return None
-    from ..world.meshes import MeshError, load_closed_mesh
+    from .mesh_files import MeshError, load_closed_mesh
 
     try:
         load_closed_mesh(v)

@@ -32,7 +32,8 @@ class BodySpec:
     """A body model backend.
 
     - ``config_cls``: frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
-    - ``factory``: ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case.
+    - ``factory``: ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case; a factory that
+      also takes a ``world`` keyword is given the run's world (``world.world.World``, built once by the runner).
     - ``capabilities``: what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
     - ``default_dt``: ``default_dt(body_config) -> float``, the time step [s] when none is given.
     - ``footprint``: ``footprint(case) -> Footprint``, the memory estimate (``core.feasibility``).
@@ -64,7 +65,8 @@ class BodySpec:
 @dataclass(frozen=True)
 class GaitSpec:
     """A gait: what it needs from a body (``requires``), the controller that drives it
-    (``controller(case) -> Controller``, ``core.protocols.Controller``) and the frozen dataclass of its
+    (``controller(case) -> Controller``, ``core.protocols.Controller``; a controller class that also takes a
+    ``world`` keyword is given the run's world, as a body factory) and the frozen dataclass of its
     ``[gaits.<name>]`` keys (``config_cls``, ``case.gait``).  A gait with keys of its own declares a
     subclass of ``GaitConfig`` next to its controller: the base's keys (period, wave, volume rule) are
     the ones the runner, the metrics and the bodies read of every gait."""

@@ -83,20 +83,24 @@ class LeggedMonitor:
         """One timeline sample from the segment poses (c (n, 3) [m], R (n, 3, 3)), the body's centres
         (``segment_centers``) and the leg tips (n_legs, 3) [m] (also fed by ``fused``'s buffered samples)."""
         self._com.append(c.mean(axis=0))
-        corners = c[:, None, :] + np.einsum("nij,nkj->nki", R, BOX_SIGNS[None] * self.body.segment_half_extents[:, None, :])
-        self.behaviour.sample(centres, corners.reshape(-1, 3), tips, c[0])
+        self.behaviour.sample(centres, self._corners(c, R).reshape(-1, 3), tips, c[0])
 
     def sample_many(self, c: np.ndarray, R: np.ndarray, centres: np.ndarray, tips: np.ndarray) -> None:
         """k ``sample`` calls at once (c (k, n, 3), R (k, n, 3, 3), centres (k, m, 3), tips (k, n_legs, 3)),
         with the same values (the fused path's replay of a chunk; a row's mean over axis 1 is the
         row's mean over axis 0, checked bitwise by tests/test_fused_walk.py).  The box corners only
-        feed the obstacle test: without obstacles they are not computed."""
-        if self.behaviour.has_obstacles:
-            for r in range(c.shape[0]):
-                self.sample(c[r], R[r], centres[r], tips[r])
-            return
+        feed the obstacle test: without obstacles they are not computed; with them each row's are
+        ``sample``'s expression on that row (the same doubles)."""
         self._com.extend(c.mean(axis=1))
-        self.behaviour.sample_many(centres, c[:, 0])
+        corners = None
+        if self.behaviour.has_obstacles:
+            corners = np.stack([self._corners(c[r], R[r]).reshape(-1, 3) for r in range(c.shape[0])]) \
+                if c.shape[0] else np.zeros((0, 8 * c.shape[1], 3))
+        self.behaviour.sample_many(centres, c[:, 0], corners, tips)
+
+    def _corners(self, c: np.ndarray, R: np.ndarray) -> np.ndarray:
+        """(n, 8, 3) [m] corners of boxes of the segments' half extents on the poses c (n, 3), R (n, 3, 3)."""
+        return c[:, None, :] + np.einsum("nij,nkj->nki", R, BOX_SIGNS[None] * self.body.segment_half_extents[:, None, :])
 
     # ------------------------------------------------------------------ after the run
     def leg_timeline(self):

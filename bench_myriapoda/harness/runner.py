@@ -1,6 +1,9 @@
 """Run one resolved case: compose a body, a controller and the world; step in chunks; sample; measure.
 
-The runner builds the body (``catalog``: ``BODIES[case.body.name].factory``) and the gait's
+The runner builds the world once (``world.world.build_world``: terrain, obstacles, food, the water's bed)
+and hands it to the body, the controller and the metrics (a factory or controller class that takes a
+``world`` keyword gets it; nothing else in a run builds the terrain from the scenario again), builds the
+body (``catalog``: ``BODIES[case.body.name].factory``) and the gait's
 controller (``GAITS[case.gait.name].controller``, or one given by the caller), and passes data
 between them (``core.protocols``): the body fills an ``Observation``, the controller writes an
 ``Actuation``.  An open-loop controller (Miller's muscle waves) fills the actuation for a whole
@@ -15,6 +18,7 @@ anywhere in the run becomes status ``error`` with its message.
 from __future__ import annotations
 
 import copy
+import inspect
 import math
 import time
 import traceback
@@ -32,6 +36,7 @@ from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_met
 from ..metrics.shape_tracking import shape_flag_reason
 from ..world.terrain import terrain_from_scenario
 from ..world.water_coupling import WaterCoupling, has_water
+from ..world.world import World, build_world
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
@@ -83,13 +88,29 @@ class UnsupportedCombination(ValueError):
     """A controller requires a capability the body does not have."""
 
 
-def compose(case: Case, controller=None):
+def takes_world(make) -> bool:
+    """True when ``make`` (a body factory, a controller class) accepts a ``world`` keyword: it is then given
+    the run's ``World``; one that does not (a user's, written before the world existed) gets the case alone."""
+    try:
+        params = inspect.signature(make).parameters.values()
+    except (TypeError, ValueError):  # a callable without a signature Python can read
+        return False
+    return any(p.name == "world" or p.kind is inspect.Parameter.VAR_KEYWORD for p in params)
+
+
+def _made_in(make, case: Case, world: World):
+    return make(case, world=world) if takes_world(make) else make(case)
+
+
+def compose(case: Case, controller=None, world: World | None = None):
     """(body, controller) for ``case``: the catalog's body and the gait's controller (or ``controller``),
-    the controller reset for that body.  Raises UnsupportedCombination when the body cannot honour it."""
+    the controller reset for that body, both in ``world`` (``world.world.World``, built from the case here
+    when None).  Raises UnsupportedCombination when the body cannot honour it."""
     registry.load_all()
-    body = registry.BODIES[case.body.name].factory(case)
+    world = build_world(case) if world is None else world
+    body = _made_in(registry.BODIES[case.body.name].factory, case, world)
     if controller is None:
-        controller = registry.GAITS[case.gait.name].controller(case)
+        controller = _made_in(registry.GAITS[case.gait.name].controller, case, world)
     requires, _, _ = controller_settings(controller)
     missing = requires - body.capabilities
     if missing:
@@ -188,13 +209,14 @@ class Creature:
     ``advance(t0, n) -> (steps done, status)`` runs the controller and the body together
     (``Stepper``); ``scene()`` draws the legs too; every other attribute is the body's.
     ``compile()`` compiles both (a fused run: its chunk kernel, which holds both) and sets the actuation
-    of t = 0.
+    of t = 0.  ``world``: the ``world.world.World`` both live in (built from the case when not given).
     """
 
-    def __init__(self, case: Case, controller=None, fused: bool = True):
+    def __init__(self, case: Case, controller=None, fused: bool = True, world: World | None = None):
         self.case = case
         self.own_controller = controller is None
-        self.body, self.controller = compose(case, controller)
+        self.world = build_world(case) if world is None else world
+        self.body, self.controller = compose(case, controller, self.world)
         requires, self.open_loop, _ = controller_settings(self.controller)
         legged = LEGS in requires and SEGMENTS in requires
         # the behaviour metrics' terrain (issue 30 item 1 hands the run's one world to the monitor instead)
@@ -272,7 +294,7 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         timings["compile_s"] = time.perf_counter() - c0
         recorder = Recorder(keep_nodes=keep_nodes)
         recorder.add(body.observe(0.0, keep_nodes))
-        water = WaterCoupling(case.scenario) if has_water(case.scenario) else None
+        water = WaterCoupling(case.scenario, creature.world) if has_water(case.scenario) else None
         if water is not None:
             water.start(view)
         if on_sample is not None:
@@ -314,14 +336,14 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         metrics["t_fail_s"] = t_fail if t_fail is not None else float("nan")
         if case.scenario.suspended:
             metrics.update(hanging_metrics(series))
-        metrics.update(series_behaviour_metrics(series, case))  # a legged body's own figures replace these
+        metrics.update(series_behaviour_metrics(series, case, creature.world))  # a legged body's own figures replace these
         if monitor is not None:
             # these refer to a muscle wave's period and speed; a legged gait has its own stride metrics
             for k in ("speed_bl_per_cycle", "displacement_per_cycle_m", "slip_ratio", "wave_speed_m_per_s",
                       "cycles_measured", "steady_cycles"):
                 metrics[k] = float("nan")
         if monitor is None:  # shape, roll, contact and posture_fault of a legless body
-            metrics.update(legless_metrics(series, case, length))
+            metrics.update(legless_metrics(series, case, length, creature.world))
         metrics.update(body.extra_metrics())
         controller_metrics = getattr(creature.controller, "metrics", None)  # e.g. the shape tracker's saturation
         if callable(controller_metrics):

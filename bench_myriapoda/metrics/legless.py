@@ -8,16 +8,17 @@ from .posture import posture_metrics
 from .shape_tracking import shape_tracking_metrics
 
 
-def legless_metrics(series: Series, case, body_length_m: float) -> dict[str, float]:
+def legless_metrics(series: Series, case, body_length_m: float, world=None) -> dict[str, float]:
     """curvature_amplitude, body_wavelength_bl, heading_drift_deg_per_cycle (steady window),
     roll_max_deg, segment_contact_fraction, lift_max_m, airborne_max_s, posture_fault, and for a gait that
     commands its shape shape_tracking_error and shape_not_achieved (``metrics.body_shape``,
-    ``metrics.posture``, ``metrics.shape_tracking``).  body_length_m: rest length head to tail [m]."""
+    ``metrics.posture``, ``metrics.shape_tracking``).  body_length_m: rest length head to tail [m]; world: the
+    run's ``world.world.World`` (built from the scenario where needed when None)."""
     if len(series.t) < 3:
         return {}
     period = case.gait.period_s
     i0, i1 = measurement_window(series, period, case.metrics.warmup_cycles)
     out = body_shape_metrics(series, i0, i1, period, body_length_m)
-    out.update(posture_metrics(series, case.scenario, i0, i1))
+    out.update(posture_metrics(series, case.scenario, i0, i1, world))
     out.update(shape_tracking_metrics(series, case, i0, i1))
     return out

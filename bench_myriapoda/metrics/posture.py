@@ -88,16 +88,21 @@ def longest_run_s(t: np.ndarray, mask: np.ndarray) -> float:
     return float(best)
 
 
-def ground_clearance(series: Series, scenario) -> np.ndarray:
-    """Height [m] (T,) of the lowest segment centre above the scenario's base surface beneath it."""
+def ground_clearance(series: Series, scenario, world=None) -> np.ndarray:
+    """Height [m] (T,) of the lowest segment centre above the scenario's base surface beneath it (world: the
+    run's ``world.world.World``, its terrain; built from the scenario here when None)."""
     c = series.segment_centers
-    kind, f = (None, None) if scenario.terrain == "mesh" else terrain_from_scenario(scenario)
+    if world is not None:
+        kind, f = world.terrain
+    else:
+        kind, f = (None, None) if scenario.terrain == "mesh" else terrain_from_scenario(scenario)
     h = base_height(scenario, kind, f, c[..., 0], c[..., 2])
     return (c[..., 1] - h).min(axis=1)
 
 
-def posture_metrics(series: Series, scenario, i0: int, i1: int) -> dict[str, float]:
-    """roll_max_deg, segment_contact_fraction, lift_max_m, airborne_max_s, posture_fault."""
+def posture_metrics(series: Series, scenario, i0: int, i1: int, world=None) -> dict[str, float]:
+    """roll_max_deg, segment_contact_fraction, lift_max_m, airborne_max_s, posture_fault (world: as
+    ``ground_clearance``)."""
     nan = float("nan")
     out = {"roll_max_deg": nan, "segment_contact_fraction": nan, "lift_max_m": nan,
            "airborne_max_s": nan, "posture_fault": 0.0}
@@ -115,7 +120,7 @@ def posture_metrics(series: Series, scenario, i0: int, i1: int) -> dict[str, flo
         if touching.any():
             first = int(np.argmax(touching))
             out["airborne_max_s"] = longest_run_s(series.t[first:], ~touching[first:])
-            clear = ground_clearance(series, scenario)[first:]
+            clear = ground_clearance(series, scenario, world)[first:]
             out["lift_max_m"] = float(clear.max() - clear.min())
     flipped = scenario.terrain in FLAT_TERRAINS and body_roll > ROLL_FAULT_DEG
     airborne = not scenario.suspended and out["airborne_max_s"] > AIRBORNE_FAULT_S

@@ -83,9 +83,11 @@ def _source(sc) -> str:
     return f"scenario {sc.name!r}" if getattr(sc, "name", "") else "scenario"
 
 
-def food_sources(sc, food) -> np.ndarray:
-    """(n, 4) sources x, y, z [m], intensity of a scenario (``ScenarioConfig``) and ``FoodConfig``."""
-    kind, f = T.terrain_from_scenario(sc)  # base_height reads only the base terrain's part of f
+def food_sources(sc, food, terrain: tuple[int, np.ndarray] | None = None) -> np.ndarray:
+    """(n, 4) sources x, y, z [m], intensity of a scenario (``ScenarioConfig``) and ``FoodConfig``, on its
+    terrain (kind, f) (``terrain.terrain_from_scenario(sc)``, built here when not given)."""
+    # base_height reads only the base terrain's part of f; the obstacle test its obstacles
+    kind, f = T.terrain_from_scenario(sc) if terrain is None else terrain
     out = []
     v = food.sources
     for i in range(0, len(v), 4):
@@ -132,9 +134,10 @@ class FoodField:
         self._n_left = len(sources)
 
     @classmethod
-    def from_case(cls, case) -> FoodField:
+    def from_case(cls, case, sources: np.ndarray | None = None) -> FoodField:
+        """The field of ``case``'s food sources: ``sources`` (n, 4) when built already (``world.World.food``)."""
         fc = case.food
-        return cls(food_sources(case.scenario, fc), fc.softening_m, fc.reach_radius_m)
+        return cls(food_sources(case.scenario, fc) if sources is None else sources, fc.softening_m, fc.reach_radius_m)
 
     def __len__(self) -> int:
         return len(self.intensity)

@@ -195,6 +195,11 @@ def placement_terrain(sc) -> tuple[int, np.ndarray]:
     ``ground_height_m`` instead.
     """
     kind, f = terrain_from_scenario(sc)
+    return placement_from(sc, kind, f)
+
+
+def placement_from(sc, kind: int, f: np.ndarray) -> tuple[int, np.ndarray]:
+    """``placement_terrain`` of a scenario whose terrain (kind, f) is built already (``world.World``)."""
     if sc.terrain == "none":
         f = f.copy()
         f[0] = sc.ground_height_m

@@ -42,9 +42,10 @@ class WaterCoupling:
     ``times``: the chunk end times [s].
     """
 
-    def __init__(self, scenario):
+    def __init__(self, scenario, world=None):
+        """The water over ``world``'s terrain (the run's ``world.World``; built from the scenario when None)."""
         x0, x1, z0, z1 = scenario.water_region_m
-        kind, f = terrain_from_scenario(scenario)
+        kind, f = terrain_from_scenario(scenario) if world is None else world.terrain
         self.water = ShallowWater(x1 - x0, z1 - z0, scenario.water_cell_m,
                                   level_m=scenario.ground_height_m + scenario.water_depth_m, bed=(kind, f),
                                   origin=(x0, z0), g=GRAVITY if scenario.gravity_m_s2 <= 0 else scenario.gravity_m_s2,

@@ -31,7 +31,7 @@ from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.terrain import terrain_from_scenario
+from ...world.world import world_of
 from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
@@ -164,7 +164,7 @@ class BodyFEM(NodeSegments):
     name = "fem"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case):
+    def __init__(self, case, world=None):
         cre = case.creature
         cfg: FEMConfig = case.body
         self.case = case
@@ -210,7 +210,9 @@ class BodyFEM(NodeSegments):
         self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
         self.tail_nodes = np.flatnonzero(nodes[:, 0] <= nodes[:, 0].min() + end_band)
 
-        self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
+        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
+        self.world = world_of(case, world)
+        self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(BK.N_PHYS)
         phys[BK.GRAVITY] = case.scenario.gravity_m_s2
@@ -227,7 +229,7 @@ class BodyFEM(NodeSegments):
             held[self.head_nodes] = True
         sysm.set_fixed(held)
         self.solver = sysm.solver(case.dt)
-        sysm.x[:] = place_points(nodes, case)
+        sysm.x[:] = place_points(nodes, case, self.world)
         sysm.v[:] = 0.0
         self.x, self.v = sysm.x, sysm.v
         self._b_work = np.zeros((len(self.solver.perm), 3))
@@ -328,14 +330,14 @@ class BodyFEM(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_fem(case):
+def make_fem(case, world=None):
     """The FEM body; a creature with legs is built as one mesh of stiff segment blocks and soft links
     (``fem.myriapod``): legs attach to rigid segments (the creature's morphology; the leg controller
-    itself is composed by the runner)."""
+    itself is composed by the runner); world: the run's ``world.world.World``."""
     if case.creature.legs_per_segment:
         from .myriapod import BodyFEMChain
-        return BodyFEMChain(case)
-    return BodyFEM(case)
+        return BodyFEMChain(case, world)
+    return BodyFEM(case, world)
 
 
 # --------------------------------------------------------------------------- the backend's declaration

@@ -50,8 +50,8 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from ...world.terrain import terrain_from_scenario
-from ...world.terrain_kernels import flat_ground, signed_distance
+from ...world.world import world_of
+from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
@@ -210,11 +210,11 @@ def advance_chain(B, W, acc, n_steps):
             # and about -16 % and -18 % in its flat-ground form (3 alternating rounds, 2026-11-27).
             px, py, pz = x[i, 0], x[i, 1], x[i, 2]
             vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
-            phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
-            if phi >= contact_dist:
+            # (``distance_at_least``: the same tests as phi >= ..., answered among obstacles without their search
+            # for the nodes high above them)
+            if (py - ground >= contact_dist) if flat else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
                 qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-                phi = qy - ground if flat else signed_distance(terr_kind, terr, qx, qy, qz)
-                if phi >= 0.0:
+                if (qy - ground >= 0.0) if flat else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0):
                     x[i, 0], x[i, 1], x[i, 2] = qx, qy, qz
                     if not math.isfinite(qx + qy + qz + vx + vy + vz):
                         status = S.NONFINITE
@@ -309,7 +309,7 @@ class BodyFEMChain(SupportedSegments):
     n_muscle_segments = 0
     muscle_s = np.zeros(0)
 
-    def __init__(self, case):
+    def __init__(self, case, world=None):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -354,7 +354,9 @@ class BodyFEMChain(SupportedSegments):
         self.att_nodes = np.flatnonzero(side).astype(np.int64)
         self.att_block = node_block[self.att_nodes].astype(np.int64)
         self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
-        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
+        self.world = world_of(case, world)
+        self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(N_PHYS)
         phys[DT] = case.dt
@@ -364,7 +366,7 @@ class BodyFEMChain(SupportedSegments):
         phys[MAX_PEN] = case.stability.max_penetration_m
         phys[K_SUPPORT] = cfg.support_stiffness_n_m
         self.phys = phys
-        fem.x[:] = place_points(nodes, case)
+        fem.x[:] = place_points(nodes, case, self.world)
         fem.v[:] = 0.0
         self.x, self.v = fem.x, fem.v
         self.support = np.zeros(n, dtype=np.bool_)

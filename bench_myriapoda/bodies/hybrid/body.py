@@ -80,7 +80,7 @@ from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.terrain import terrain_from_scenario
+from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..fem import kernels as FK
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
@@ -237,7 +237,7 @@ class BodyHybrid(SupportedSegments):
 
     name = "hybrid"
 
-    def __init__(self, case):
+    def __init__(self, case, world=None):
         cre = case.creature
         cfg: HybridConfig = case.body
         sc = case.scenario
@@ -287,7 +287,9 @@ class BodyHybrid(SupportedSegments):
         self.total_mass = m_rigid * lay.n_rigid + free_mass
 
         # ---- world placement, terrain, attached nodes on the boxes
-        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
+        self.world = world_of(case, world)
+        self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         self._place(case, mesh, half)
         att_local = mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body]
@@ -349,7 +351,7 @@ class BodyHybrid(SupportedSegments):
         """
         signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
         corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
-        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case)
+        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case, self.world)
         q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)  # scipy (x, y, z, w) -> (w, x, y, z)
         x = mesh.nodes @ R0.T + t
         sc = case.scenario
@@ -598,9 +600,10 @@ class BodyHybrid(SupportedSegments):
         return float(self.acc[K.ACC_MAX_PEN])
 
 
-def make_hybrid(case):
-    """The hybrid body, for every creature (legged or not: the runner composes the controller)."""
-    return BodyHybrid(case)
+def make_hybrid(case, world=None):
+    """The hybrid body, for every creature (legged or not: the runner composes the controller), in the run's
+    world (``world.world.World``)."""
+    return BodyHybrid(case, world)
 
 
 # --------------------------------------------------------------------------- the backend's declaration

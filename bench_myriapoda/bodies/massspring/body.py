@@ -20,7 +20,7 @@ from ...core.feasibility import lattice_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.terrain import terrain_from_scenario
+from ...world.world import world_of
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
@@ -92,7 +92,7 @@ class BodyMassSpring(NodeSegments):
     name = "massspring"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case):
+    def __init__(self, case, world=None):
         cre = case.creature
         cfg: MassSpringConfig = case.body
         self.case = case
@@ -115,7 +115,9 @@ class BodyMassSpring(NodeSegments):
         self.seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
         self.seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
         self.seg_rest_offsets = csr_rest_offsets(lat.rest_nodes, self.seg_ptr, self.seg_nodes)
-        self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
+        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
+        self.world = world_of(case, world)
+        self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
         phys[K.GRAVITY] = case.scenario.gravity_m_s2
@@ -127,7 +129,7 @@ class BodyMassSpring(NodeSegments):
         phys[K.MAX_PEN] = case.stability.max_penetration_m
         phys[K.INTEGRATOR] = K.EULER if cfg.integrator == "euler" else K.SYMPLECTIC
         self.phys = phys
-        self.x = place_points(lat.rest_nodes, case)
+        self.x = place_points(lat.rest_nodes, case, self.world)
         self.v = np.zeros_like(self.x)
         # work arrays and accumulators for the kernel
         self._act = np.zeros((cre.segments, 3))
@@ -219,14 +221,14 @@ class BodyMassSpring(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_massspring(case):
+def make_massspring(case, world=None):
     """Miller's lattice; a creature with legs is built as rigid boxes joined by spring-cube links
     (``massspring.myriapod``): legs attach to rigid segments (the creature's morphology; the leg
-    controller itself is composed by the runner)."""
+    controller itself is composed by the runner); world: the run's ``world.world.World``."""
     if case.creature.legs_per_segment:
         from .myriapod import BodyRigidSpringChain
-        return BodyRigidSpringChain(case)
-    return BodyMassSpring(case)
+        return BodyRigidSpringChain(case, world)
+    return BodyMassSpring(case, world)
 
 
 # --------------------------------------------------------------------------- the backend's declaration

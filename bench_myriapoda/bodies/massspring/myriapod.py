@@ -46,7 +46,7 @@ import numpy as np
 from numba import njit
 from scipy.spatial.transform import Rotation
 
-from ...world.terrain import terrain_from_scenario
+from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
@@ -207,7 +207,7 @@ class BodyRigidSpringChain(SupportedSegments):
     n_muscle_segments = 0
     muscle_s = np.zeros(0)
 
-    def __init__(self, case):
+    def __init__(self, case, world=None):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -236,7 +236,9 @@ class BodyRigidSpringChain(SupportedSegments):
         self.segment_pitch_m = lay.pitch
         self.segment_half_extents = np.tile(half, (lay.n_rigid, 1))
 
-        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
+        self.world = world_of(case, world)
+        self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         self.x = np.zeros_like(mesh.nodes)
         self.v = np.zeros_like(mesh.nodes)
@@ -274,7 +276,7 @@ class BodyRigidSpringChain(SupportedSegments):
         """The suite's placement rule (``bodies.placement``) applied to the nodes and box corners."""
         signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
         corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
-        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case)
+        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case, self.world)
         q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)
         x = mesh.nodes @ R0.T + t
         sc = case.scenario

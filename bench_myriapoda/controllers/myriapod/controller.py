@@ -48,7 +48,8 @@ from ...core.protocols import LEGS, SEGMENTS
 from ...kinematics import legs as L
 from ...world import terrain_kernels as TK
 from ...world.food import FoodField
-from ...world.terrain import base_height, terrain_from_scenario
+from ...world.terrain import base_height
+from ...world.world import world_of
 from . import leg_collision as LC
 from . import switcher as SW
 from . import targeter as TG
@@ -174,9 +175,12 @@ class MyriapodController:
     rate_hz = 0.0  # every time step, as the paper (Sec. 6)
 
     def __init__(self, case, n_segments: int | None = None, segment_pitch_m: float | None = None,
-                 record_every: int = 10, segment_half_extents: np.ndarray | None = None):
+                 record_every: int = 10, segment_half_extents: np.ndarray | None = None, world=None):
         self.case = case
         self.record_every = record_every
+        # the run's world (``world.world.World``: its terrain and food), built once by the runner; built from
+        # the case at set-up when not given (a controller made alone)
+        self.world = world
         if n_segments is not None:
             self._setup(case, n_segments, segment_pitch_m, segment_half_extents)
 
@@ -207,7 +211,8 @@ class MyriapodController:
             wave_direction=SW.RETROGRADE if ct.wave_direction == "retrograde" else SW.DIRECT)
         self.tg_params = TG.targeter_params(k1=ct.k1, k2=ct.k2, omega_follow=d(ct.omega_follow_deg_s),
                                             omega_balance=d(ct.omega_balance_deg_s))
-        self.terr_kind, self.terr = terrain_from_scenario(sc)
+        self.world = world_of(case, self.world)
+        self.terr_kind, self.terr = self.world.terrain
         self.contact_distance = lg.contact_distance_m
         self.theta_min = self.sw_params[SW.THETA_PEP]
         h = ct.target_height_m if ct.target_height_m >= 0 else standing_height(self.geom[1], self.sw_params)
@@ -232,7 +237,7 @@ class MyriapodController:
         # random walk's draws are the same with or without them
         self.antennae = (Antennae(case.antennae, case.dt, np.random.default_rng([case.seed, 7]), self.terr)
                          if case.antennae.enabled else None)
-        self.food = FoodField.from_case(case)
+        self.food = FoodField.from_case(case, self.world.food)
         self.has_food = len(self.food) > 0
         self.food_threshold = case.food.threshold
         self.food_signal = np.zeros(2)   # left, right antenna tip

@@ -39,31 +39,40 @@ from numba import njit
 from bench_myriapoda.kinematics.legs import ALPHA, BETA, FEMUR, GAMMA, ROOT_X, ROOT_Y, ROOT_Z, THETA, TIBIA, \
     leg_plane_points, side_sign
 from bench_myriapoda.kinematics.rotations import matvec as _matvec
-from bench_myriapoda.world.terrain_kernels import flat_ground, signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import distance_at_least, flat_ground, signed_distance, surface_normal
 
 from .switcher import STANCE
 
 BISECTION_STEPS = 40   # 2^-40 of one step's angle change: the stopped tip is on the surface to ~1e-12 m
+KNEE_CLEAR_M = 5e-324  # the smallest positive double: phi >= it means phi > 0
 PROJECTION_STEPS = 4   # p -= phi n: exact in one step on planes, cylinder sides and tops, box faces
+
+
+@njit(cache=True, inline="always")
+def _knee_tip_points(c, R, g, side, theta, alpha, beta):
+    """(knee x, y, z, tip x, y, z) [m] of one leg at angles (theta, alpha, beta) on pose (c, R)."""
+    mu, mv, pu, pv = leg_plane_points(alpha, beta, g[FEMUR], g[TIBIA], g[GAMMA])
+    ux, uz = math.sin(theta), side * math.cos(theta)
+    mx, my, mz = _matvec(R, g[ROOT_X] + mu * ux, g[ROOT_Y] + mv, g[ROOT_Z] + mu * uz)
+    px, py, pz = _matvec(R, g[ROOT_X] + pu * ux, g[ROOT_Y] + pv, g[ROOT_Z] + pu * uz)
+    return c[0] + mx, c[1] + my, c[2] + mz, c[0] + px, c[1] + py, c[2] + pz
 
 
 @njit(cache=True)
 def knee_tip_phi(kind, f, c, R, g, side, theta, alpha, beta):
     """(phi of the knee, phi of the tip) [m] of one leg at angles (theta, alpha, beta) on pose (c, R)."""
-    mu, mv, pu, pv = leg_plane_points(alpha, beta, g[FEMUR], g[TIBIA], g[GAMMA])
-    ux, uz = math.sin(theta), side * math.cos(theta)
-    mx, my, mz = _matvec(R, g[ROOT_X] + mu * ux, g[ROOT_Y] + mv, g[ROOT_Z] + mu * uz)
-    px, py, pz = _matvec(R, g[ROOT_X] + pu * ux, g[ROOT_Y] + pv, g[ROOT_Z] + pu * uz)
-    return (signed_distance(kind, f, c[0] + mx, c[1] + my, c[2] + mz),
-            signed_distance(kind, f, c[0] + px, c[1] + py, c[2] + pz))
+    mx, my, mz, px, py, pz = _knee_tip_points(c, R, g, side, theta, alpha, beta)
+    return signed_distance(kind, f, mx, my, mz), signed_distance(kind, f, px, py, pz)
 
 
 @njit(cache=True)
 def _clear_at(kind, f, c, R, g, side, a0, b0, s):
-    """True when the leg at a0 + s (b0 - a0) (angles as 3-tuples) has knee and tip outside."""
-    pm, pt = knee_tip_phi(kind, f, c, R, g, side, a0[0] + s * (b0[0] - a0[0]), a0[1] + s * (b0[1] - a0[1]),
-                          a0[2] + s * (b0[2] - a0[2]))
-    return pm >= 0.0 and pt >= 0.0
+    """True when the leg at a0 + s (b0 - a0) (angles as 3-tuples) has knee and tip outside: ``knee_tip_phi``'s
+    two distances >= 0, asked as ``distance_at_least`` (the same answer, without an obstacle search for a
+    point above the obstacles)."""
+    mx, my, mz, px, py, pz = _knee_tip_points(c, R, g, side, a0[0] + s * (b0[0] - a0[0]), a0[1] + s * (b0[1] - a0[1]),
+                                              a0[2] + s * (b0[2] - a0[2]))
+    return distance_at_least(kind, f, mx, my, mz, 0.0) and distance_at_least(kind, f, px, py, pz, 0.0)
 
 
 @njit(cache=True)
@@ -172,10 +181,15 @@ def knees_inside_and_penetration(states, knees, tips, kind, f, check_knees, ik_f
     # ``signed_distance``, without its two atomic reference-count updates per call)
     flat, ground = flat_ground(kind, f)
     for k in range(tips.shape[0]):
+        pt = tips[k, 1] - ground if flat else signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
+        tip_phi[k] = pt
+        # a knee strictly outside (phi >= the smallest positive double) changes neither ik_failed nor the
+        # depth (-phi < 0 <= deepest): among obstacles ``distance_at_least`` tells so without their search
+        if not flat and distance_at_least(kind, f, knees[k, 0], knees[k, 1], knees[k, 2], KNEE_CLEAR_M):
+            deepest = max(deepest, -pt)
+            continue
         pk = knees[k, 1] - ground if flat else signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2])
         if check_knees and states[k] == STANCE and pk < 0.0:
             ik_failed[k] = True
-        pt = tips[k, 1] - ground if flat else signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
-        tip_phi[k] = pt
         deepest = max(deepest, -pk, -pt)
     return deepest
