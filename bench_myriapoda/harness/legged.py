@@ -60,7 +60,7 @@ class LeggedMonitor:
     """Samples a legged run at the controller's timeline steps and measures it afterwards."""
 
     def __init__(self, case, body, controller: LeggedController, terrain: tuple[int, np.ndarray]):
-        """``terrain``: (kind, f) of the run's terrain (``world.terrain.terrain_from_scenario``), which the
+        """``terrain``: (kind, f) of the run's terrain (``world.world.World.terrain``), which the
         behaviour metrics sample against."""
         self.case = case
         self.body = body

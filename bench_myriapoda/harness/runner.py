@@ -34,7 +34,6 @@ from ..metrics.behaviour import series_behaviour_metrics
 from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
 from ..metrics.shape_tracking import shape_flag_reason
-from ..world.terrain import terrain_from_scenario
 from ..world.water_coupling import WaterCoupling, has_water
 from ..world.world import World, build_world
 from ..fused import legged_walk
@@ -219,8 +218,8 @@ class Creature:
         self.body, self.controller = compose(case, controller, self.world)
         requires, self.open_loop, _ = controller_settings(self.controller)
         legged = LEGS in requires and SEGMENTS in requires
-        # the behaviour metrics' terrain (issue 30 item 1 hands the run's one world to the monitor instead)
-        self.monitor = LeggedMonitor(case, self.body, self.controller, terrain_from_scenario(case.scenario)) \
+        # the behaviour metrics sample the run's one world (issue 30 item 1)
+        self.monitor = LeggedMonitor(case, self.body, self.controller, self.world.terrain) \
             if legged else None
         self.view = LeggedView(self.body, self.controller) if legged else self.body
         self.stepper = Stepper(case, self.body, self.controller, self.monitor, fused=fused)
