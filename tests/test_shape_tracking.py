@@ -26,7 +26,7 @@ import pandas as pd
 import pytest
 
 from bench_myriapoda.controllers.muscle_waves import fill_activation, wave_table
-from bench_myriapoda.controllers.shape_tracking import measured_curvature, track_tick
+from bench_myriapoda.controllers.shape_tracking import TrackGains, TrackState, measured_curvature, track_tick
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.core.protocols import MUSCLES
 from bench_myriapoda.core.series import Series
@@ -127,9 +127,10 @@ def test_a_command_beyond_the_muscle_strength_is_clipped_counted_and_does_not_wi
     waves[1, :4] = (0.1, 2 * math.pi, 1.0, 0.0)  # LATERAL amplitude 0.1
     a, b, lateral, counts = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3)
     straight = np.zeros(n)  # the body does not bend at all
+    gains = tuple(TrackGains(ramp_s=0.0, dt_tick=0.01, strain_per_kappa=-0.1, kp=2.0, ki=5.0, umax=0.02, passes=0))
+    state = tuple(TrackState(a, b, lateral, counts, err=np.zeros(n), tmp=np.zeros(n)))
     for tick in range(200):
-        track_tick(straight, s, waves, 0.0, 0.01 * tick, 0.01, -0.1, 2.0, 5.0, 0.02, a, b, lateral, True, counts,
-                   np.zeros(n), np.zeros(n), 0)
+        track_tick(straight, s, waves, 0.01 * tick, True, gains, state)
         assert np.all(np.abs(lateral) <= 0.02)
     assert counts[0] == 200 * n and counts[1] > 0.9 * counts[0] and counts[2] == 0.02
     # the integral stopped growing once clipped: far below what 2 s of this error would integrate to
