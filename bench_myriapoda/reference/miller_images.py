@@ -184,9 +184,12 @@ def coils_formed_index(series, case, metrics) -> int:
     steady = float(metrics.get("curvature_amplitude", float("nan")))
     if series.segment_centers is None or series.segment_centers.shape[1] < 4 or not steady > 0:
         return fallback
-    # through the same points as the steady figure (one segment pitch apart: the hybrid's boxes)
+    # through the same points as the steady figure (one segment pitch apart: the hybrid's boxes; every centre
+    # where the case names no pitch)
     centers = series.segment_centers
-    kappa, _ = ground_curvature(centers[:, ::pitch_stride(centers[0], case.creature.segment_length_m)])
+    pitch = getattr(case.creature, "segment_length_m", None)
+    stride = pitch_stride(centers[0], float(pitch)) if pitch else 1
+    kappa, _ = ground_curvature(centers[:, ::stride])
     amp = math.sqrt(2.0) * np.sqrt((kappa ** 2).mean(axis=1)) * _body_length(case, metrics)
     formed = amp >= COILS_FORMED * steady
     return int(np.argmax(formed)) if formed.any() else fallback
