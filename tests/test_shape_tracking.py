@@ -56,7 +56,7 @@ ISOTROPIC_MAX_BL_PER_CYCLE = 0.03
 RATIOS = (1.0, 1.5, 2.0, 3.0, 5.0, 10.0)
 BODIES = ("massspring", "fem", "hybrid")
 LONG = pytest.mark.skipif(not os.environ.get("BENCH_LONG_TESTS"),
-                          reason="the whole friction grid, minutes per fem run; set BENCH_LONG_TESTS=1")
+                          reason="the whole friction grid at 78.5 s, minutes per fem or hybrid run; set BENCH_LONG_TESTS=1")
 
 
 def snake_case(body: str, ratio: float, *extra: str, duration: float = DURATION_S):
