@@ -31,9 +31,6 @@ KNOWN_WIDE = {
     ("controllers/myriapod/antennae.py", "antennae_step"),
     ("world/water_kernels.py", "_cell_change"),
     ("kinematics/legs.py", "_stance_result"),
-    # issue 27's shape tracker gained two smoothing scratch arrays on a branch written beside this test (18);
-    # met at the merge: to be packed with the next change to the tracker
-    ("controllers/shape_tracking.py", "track_tick"),
 }
 
 

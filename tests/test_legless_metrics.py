@@ -61,6 +61,47 @@ def test_a_straight_body_has_no_wavelength():
     assert m["curvature_amplitude"] < 1e-9 and math.isnan(m["body_wavelength_bl"])
 
 
+def box_and_link_series(A: float, lam: float, n_boxes: int = 51, box_share: float = 2.0 / 3.0) -> Series:
+    """A hybrid-like centre line on the reference serpenoid: straight boxes (``box_share`` of the pitch) whose
+    headings are the serpenoid's at their centres, joined by links bent at constant curvature between them;
+    recorded as the hybrid records its centres: box, link, box, ... (2 n_boxes - 1), head first."""
+    ts = np.arange(121) / 40 * T_S
+    pitch = L_M / n_boxes
+    cs = []
+    for t in ts:
+        X, _, a, _ = body_shape(A, lam, t / T_S, n_boxes)
+        psi = np.arctan2(a[:, 1], a[:, 0])  # heading of each box toward the head
+        pts, c = [], np.zeros(2)
+        for j in range(n_boxes):
+            d = np.array([math.cos(psi[j]), math.sin(psi[j])])
+            if j > 0:  # the link from box j - 1's back face: an arc turning from psi[j - 1] to psi[j]
+                ln = (1.0 - box_share) * pitch
+                mid = np.array([math.cos(0.5 * (psi[j - 1] + psi[j])), math.sin(0.5 * (psi[j - 1] + psi[j]))])
+                pts.append(c - 0.5 * ln * mid)
+                c = c - ln * mid - 0.5 * box_share * pitch * d
+            else:
+                c = c - 0.5 * box_share * pitch * d
+            pts.append(c)
+            c = c - 0.5 * box_share * pitch * d
+        pts = np.array(pts)
+        cs.append(np.column_stack([pts[:, 0], np.zeros(len(pts)), -pts[:, 1]]))
+    cs = np.array(cs)
+    return Series(t=ts, com=cs.mean(axis=1), head=cs[:, 0], tail=cs[:, -1], segment_centers=cs,
+                  energy=np.zeros((len(ts), 3)), nodes=None)
+
+
+def test_a_body_with_a_box_and_a_link_per_pitch_reads_its_shape_through_its_boxes():
+    """The hybrid's links bend and its boxes do not: three-point curvature through every centre alternates
+    (issue 27: the hybrid snake read 8.1 at a commanded 7); one pitch apart it is the serpenoid's."""
+    s = box_and_link_series(7.0, 1.0)
+    pitch = L_M / 51
+    m = body_shape_metrics(s, 0, len(s.t) - 1, T_S, L_M, pitch_m=pitch)
+    assert m["curvature_amplitude"] == pytest.approx(7.0, rel=SHAPE_REL)
+    assert m["body_wavelength_bl"] == pytest.approx(1.0, rel=SHAPE_REL)
+    every = body_shape_metrics(s, 0, len(s.t) - 1, T_S, L_M)["curvature_amplitude"]
+    assert abs(every - 7.0) > 3 * SHAPE_REL * 7.0, every  # what the metric read before it knew the pitch
+
+
 def _rot_about_axis(roll_deg: float, pitch_deg: float = 0.0) -> np.ndarray:
     """Segment frame (columns axis, dorsal, right) pitched nose-up then rolled about its axis."""
     r, p = math.radians(roll_deg), math.radians(pitch_deg)

@@ -10,8 +10,8 @@ Open loop (``gait.shape_control = "open_loop"``), the lattice bent to 1.42 of 7 
 move (issue 27's table).  The closed loop is the default, at each body's own proportional gain
 (``BodySpec.shape_gain_p``: 2 on the lattice, 0.5 on the fem body, 0.25 on the hybrid; why in
 docs/explanation/shape-tracking.md).  The default run holds ratio 1 and 5 on the lattice (5 cycles) and
-ratio 5 on the fem body (6 cycles); the whole grid (three bodies x six ratios, 6 cycles each, as
-scenarios/matrix/slithering.toml) runs with BENCH_LONG_TESTS=1.
+ratio 5 on the fem body and ratio 3 on the hybrid (4 cycles, 2 of them warm-up); the whole grid (three bodies x six ratios at issue
+27's 78.5 s, 11 cycles, as scenarios/matrix/slithering.toml) runs with BENCH_LONG_TESTS=1.
 """
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ import pandas as pd
 import pytest
 
 from bench_myriapoda.controllers.muscle_waves import fill_activation, wave_table
-from bench_myriapoda.controllers.shape_tracking import measured_curvature, track_tick
+from bench_myriapoda.controllers.shape_tracking import TrackGains, TrackState, measured_curvature, track_tick
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.core.protocols import MUSCLES
 from bench_myriapoda.core.series import Series
@@ -45,14 +45,18 @@ SETTINGS = (f"gait.curvature_amplitude={COMMAND}", "gait.wavelength_bl=1", "gait
             f"friction.mu_forward={MU_F}", "friction.model=coulomb", f"friction.mu_backward={MU_B_OVER_MU_F * MU_F}",
             "metrics.warmup_cycles=3")
 DURATION_S = 43.0  # 6 periods of 7.14 s: 3 warm-up (the ramp and the integral's settling), 3 measured
-SUBSET_S = 35.7  # the default run's subset: 5 periods, 3 warm-up and 2 measured
-GRID_S = DURATION_S  # the whole grid: as scenarios/matrix/slithering.toml
+SUBSET_S = 35.7  # the default run's lattice cases: 5 periods, 3 warm-up and 2 measured
+SHORT_S = 28.6  # the default run's fem and hybrid cases: 4 periods, 2 warm-up (SHORT_WARMUP) and 2 measured (the
+# fewest steady cycles, metrics.min_steady_cycles); they cost ~1 (fem) and ~2.5 (hybrid) CPU s per simulated second,
+# the lattice ~0.15
+SHORT_WARMUP = "metrics.warmup_cycles=2"  # the shape error settles within 2 cycles (0.05 over the third at ratio 1.5)
+GRID_S = 78.5  # the whole grid at the issue's conditions: 11 periods, 3 warm-up and 8 measured (as the matrix file)
 SPEED_REL_TOL = 0.15
 ISOTROPIC_MAX_BL_PER_CYCLE = 0.03
 RATIOS = (1.0, 1.5, 2.0, 3.0, 5.0, 10.0)
 BODIES = ("massspring", "fem", "hybrid")
 LONG = pytest.mark.skipif(not os.environ.get("BENCH_LONG_TESTS"),
-                          reason="the whole friction grid, minutes per fem run; set BENCH_LONG_TESTS=1")
+                          reason="the whole friction grid at 78.5 s, minutes per fem or hybrid run; set BENCH_LONG_TESTS=1")
 
 
 def snake_case(body: str, ratio: float, *extra: str, duration: float = DURATION_S):
@@ -127,9 +131,10 @@ def test_a_command_beyond_the_muscle_strength_is_clipped_counted_and_does_not_wi
     waves[1, :4] = (0.1, 2 * math.pi, 1.0, 0.0)  # LATERAL amplitude 0.1
     a, b, lateral, counts = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3)
     straight = np.zeros(n)  # the body does not bend at all
+    gains = tuple(TrackGains(ramp_s=0.0, dt_tick=0.01, strain_per_kappa=-0.1, kp=2.0, ki=5.0, umax=0.02, passes=0))
+    state = tuple(TrackState(a, b, lateral, counts, err=np.zeros(n), tmp=np.zeros(n)))
     for tick in range(200):
-        track_tick(straight, s, waves, 0.0, 0.01 * tick, 0.01, -0.1, 2.0, 5.0, 0.02, a, b, lateral, True, counts,
-                   np.zeros(n), np.zeros(n), 0)
+        track_tick(straight, s, waves, 0.01 * tick, True, gains, state)
         assert np.all(np.abs(lateral) <= 0.02)
     assert counts[0] == 200 * n and counts[1] > 0.9 * counts[0] and counts[2] == 0.02
     # the integral stopped growing once clipped: far below what 2 s of this error would integrate to
@@ -304,7 +309,11 @@ def test_the_lattice_snake_reaches_the_commanded_shape_and_the_reference_speed(r
 
 
 def test_the_fem_snake_reaches_the_commanded_shape_and_the_reference_speed():
-    check_tracks_and_moves("fem", 5.0)
+    check_tracks_and_moves("fem", 5.0, SHORT_WARMUP, duration=SHORT_S)
+
+
+def test_the_hybrid_snake_reaches_the_commanded_shape_and_the_reference_speed():
+    check_tracks_and_moves("hybrid", 3.0, SHORT_WARMUP, duration=SHORT_S)
 
 
 @LONG

@@ -156,3 +156,39 @@ def test_turning_sections_add_anisotropy_most_where_the_belly_has_least():
     # with mu_b = mu_f as well: no ratchet, the turning sections alone
     iso = steady_slithering(A, LAM, 1.0, 1.0, 1.0, width_bl=W_BL).speed_bl_per_cycle
     assert iso > steady_slithering(A, LAM, 1.0, 1.0, 1.0).speed_bl_per_cycle + 0.005
+
+
+def model_motion_in_world(A_: float, lam: float, mus: tuple, n_points: int, samples: int, cycles: int = 1):
+    """The model's own slithering written out as a recording: (points (T, n, 2) [BL], t (T,) [cycles]), the
+    body shape placed at the pose the quasi-static balance moves it to (``steady_slithering``'s integration)."""
+    from bench_myriapoda.reference.slithering import _balance, _solve
+
+    pos, psi, x = np.zeros(2), 0.0, np.zeros(3)
+    h = 1.0 / samples
+    pts = []
+    for i in range(cycles * samples + 1):
+        X, W, a, w = body_shape(A_, lam, (i * h) % 1.0, n_points)
+        c, s_ = math.cos(psi), math.sin(psi)
+        pts.append(pos + X @ np.array([[c, s_], [-s_, c]]))
+        x, _ = _solve(lambda y: _balance(y, X, W, a, w, mus, 1e-6), x)
+        d = h * x[:2]
+        pos = pos + np.array([c * d[0] - s_ * d[1], s_ * d[0] + c * d[1]])
+        psi += h * x[2]
+    return np.array(pts), np.arange(cycles * samples + 1) * h
+
+
+@pytest.mark.parametrize("ratio", [1.5, 3.0])
+def test_the_model_fed_its_own_recorded_motion_predicts_what_was_recorded(ratio):
+    """recorded_shape_speed on the model's own motion: the recorded and the predicted speed agree with
+    steady_slithering (48 samples a cycle: central differences, one cycle)."""
+    from bench_myriapoda.reference.slithering import recorded_shape_speed
+
+    pts, t = model_motion_in_world(A, LAM, (1.0, 1.5, ratio), 50, 48)
+    recorded, predicted = recorded_shape_speed(pts, t, 1.0, 1.0, 1.0, 1.5, ratio)
+    ref = steady_slithering(A, LAM, 1.0, 1.5, ratio, n_points=50).speed_bl_per_cycle
+    assert recorded == pytest.approx(ref, rel=0.02)
+    assert predicted == pytest.approx(recorded, rel=0.02)
+    # another friction ratio predicts another speed from the same recording: the prediction reads the friction
+    other = recorded_shape_speed(pts, t, 1.0, 1.0, 1.0, 1.5, 2 * ratio)[1]
+    assert other == pytest.approx(steady_slithering(A, LAM, 1.0, 1.5, 2 * ratio, n_points=50).speed_bl_per_cycle,
+                                  rel=0.05)

@@ -18,7 +18,7 @@ def legless_metrics(series: Series, case, body_length_m: float, world=None) -> d
         return {}
     period = case.gait.period_s
     i0, i1 = measurement_window(series, period, case.metrics.warmup_cycles)
-    out = body_shape_metrics(series, i0, i1, period, body_length_m)
+    out = body_shape_metrics(series, i0, i1, period, body_length_m, pitch_m=case.creature.segment_length_m)
     out.update(posture_metrics(series, case.scenario, i0, i1, world))
     out.update(shape_tracking_metrics(series, case, i0, i1))
     return out

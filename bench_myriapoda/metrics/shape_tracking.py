@@ -33,7 +33,7 @@ import numpy as np
 
 from ..core.protocols import LATERAL_GROUND_SIGN
 from ..core.series import Series
-from .body_shape import ground_curvature
+from .body_shape import ground_curvature, pitch_stride
 
 SHAPE_ERROR_THRESHOLD = 0.10
 BENDING_GAITS = ("lateral-undulation", "sidewinding")
@@ -55,13 +55,6 @@ def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:
     ramp = np.ones_like(t) if g.ramp_s <= 0 else np.clip(t / g.ramp_s, 0.0, 1.0)
     theta = k * s[None, :] - omega * t[:, None] + math.radians(g.phase_deg)
     return LATERAL_GROUND_SIGN * ramp[:, None] * (g.curvature_amplitude / L) * np.sin(theta)
-
-
-def pitch_stride(centers0: np.ndarray, pitch_m: float) -> int:
-    """Every how many recorded centres one segment pitch is: 1, or 2 for a body listing two centres per pitch."""
-    chord = np.linalg.norm(np.diff(centers0, axis=0), axis=1)
-    med = float(np.median(chord)) if len(chord) else 0.0
-    return max(1, int(round(pitch_m / med))) if med > 0 else 1
 
 
 def shape_tracking_error(series: Series, case, i0: int, i1: int) -> float:

@@ -177,14 +177,19 @@ def coils_formed_index(series, case, metrics) -> int:
     curvature amplitude, sqrt(2) x the RMS over the interior segment centres of the curvature
     [1/m] x body length [m], reaches ``COILS_FORMED`` x the run's steady ``curvature_amplitude``.
     Without that metric (or if never reached) the old fixed window end, ramp_s + half a period."""
-    from ..metrics.body_shape import ground_curvature
+    from ..metrics.body_shape import ground_curvature, pitch_stride
 
     g = case.gait
     fallback = min(int(np.searchsorted(series.t, g.ramp_s + 0.5 * g.period_s)), len(series.t) - 1)
     steady = float(metrics.get("curvature_amplitude", float("nan")))
     if series.segment_centers is None or series.segment_centers.shape[1] < 4 or not steady > 0:
         return fallback
-    kappa, _ = ground_curvature(series.segment_centers)
+    # through the same points as the steady figure (one segment pitch apart: the hybrid's boxes; every centre
+    # where the case names no pitch)
+    centers = series.segment_centers
+    pitch = getattr(case.creature, "segment_length_m", None)
+    stride = pitch_stride(centers[0], float(pitch)) if pitch else 1
+    kappa, _ = ground_curvature(centers[:, ::stride])
     amp = math.sqrt(2.0) * np.sqrt((kappa ** 2).mean(axis=1)) * _body_length(case, metrics)
     formed = amp >= COILS_FORMED * steady
     return int(np.argmax(formed)) if formed.any() else fallback

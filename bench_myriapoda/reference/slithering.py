@@ -326,3 +326,68 @@ def steady_slithering(curvature_amplitude: float, wavelength_bl: float, mu_f: fl
         max_force_residual=float(max_res),
         method=method,
     )
+
+
+def recorded_shape_speed(points: np.ndarray, t: np.ndarray, period_s: float, body_length_m: float,
+                         mu_f: float, mu_b: float, mu_t: float, width_bl: float = 0.0,
+                         velocity_regularization: float = 1e-6) -> tuple[float, float]:
+    """The kinematic model fed a RECORDED body: its speed from the recorded shape, against the recorded speed.
+
+    points: (T, n, 2) [m] the body's centre line on the ground, head first, x and y with y to the body's left
+    (from above); t: (T,) [s], evenly or unevenly spaced, at least 3 samples; period_s: the gait period [s].
+    At every interior sample the points' velocities are central differences; the rigid part (translation and
+    rotation about the centre of the points, weighted by length) is fitted and removed, what is left is the
+    shape's own motion, and the model's force and torque balance (``friction_density``, uniform weight along
+    the length: each point carries half of each adjacent chord) gives the rigid velocity that this shape
+    would move with on Hu et al.'s anisotropic Coulomb friction (quasi-static, as ``steady_slithering``).
+    width_bl > 0: the belly's two edges, as ``body_shape``.
+
+    Returns (recorded, predicted) [BL per cycle]: the mean velocity of the centre of the points along the mean
+    head axis over the samples, recorded and predicted.  Equal when the simulation's friction and weight act
+    as the model's on the shape the body really took; so a body slower than ``steady_slithering`` at the
+    commanded shape, but as fast as predicted here, is slow because of its shape, not its friction.
+    """
+    P = np.asarray(points, dtype=np.float64) / body_length_m
+    t = np.asarray(t, dtype=np.float64)
+    if P.ndim != 3 or P.shape[2] != 2 or P.shape[0] != t.shape[0] or P.shape[0] < 3 or P.shape[1] < 3:
+        raise ValueError(f"need points (T >= 3, n >= 3, 2) and t (T,), got {P.shape} and {t.shape}")
+    mus = (mu_f, mu_b, mu_t)
+    delta = velocity_regularization
+    h = 0.5 * width_bl
+
+    def tangents(X):
+        a = np.empty_like(X)
+        a[1:-1] = X[:-2] - X[2:]
+        a[0], a[-1] = X[0] - X[1], X[-2] - X[-1]
+        return a / np.linalg.norm(a, axis=1)[:, None]
+
+    rec, pred, axes = [], [], []
+    for k in range(1, len(t) - 1):
+        X = P[k]
+        dt_cycles = (t[k + 1] - t[k - 1]) / period_s
+        U = (P[k + 1] - P[k - 1]) / dt_cycles
+        ln = np.linalg.norm(np.diff(X, axis=0), axis=1)
+        w = np.zeros(len(X))
+        w[:-1] += 0.5 * ln
+        w[1:] += 0.5 * ln
+        w /= w.sum()
+        a = tangents(X)
+        Xc = X - w @ X
+        V = w @ U
+        om = (w @ (Xc[:, 0] * (U[:, 1] - V[1]) - Xc[:, 1] * (U[:, 0] - V[0]))) / (w @ (Xc * Xc).sum(axis=1))
+        W = U - V - om * np.column_stack([-Xc[:, 1], Xc[:, 0]])
+        if h > 0.0:
+            a0, a1 = tangents(P[k - 1]), tangents(P[k + 1])
+            theta_t = np.arctan2(a0[:, 0] * a1[:, 1] - a0[:, 1] * a1[:, 0], (a0 * a1).sum(axis=1)) / dt_cycles
+            n = np.column_stack([-a[:, 1], a[:, 0]])
+            dW = h * theta_t[:, None] * a
+            Xc, W = np.vstack([Xc + h * n, Xc - h * n]), np.vstack([W - dW, W + dW])
+            a, w = np.vstack([a, a]), 0.5 * np.concatenate([w, w])
+        x, _ = _solve(lambda y: _balance(y, Xc, W, a, w, mus, delta), np.array([V[0], V[1], om]))
+        ax = X[0] - X[-1]
+        axes.append(ax / np.linalg.norm(ax))
+        rec.append(V)
+        pred.append(x[:2])
+    ax = np.mean(axes, axis=0)
+    ax /= np.linalg.norm(ax)
+    return float(np.mean(np.array(rec) @ ax)), float(np.mean(np.array(pred) @ ax))
