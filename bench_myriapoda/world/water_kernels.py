@@ -50,6 +50,7 @@ All lengths in metres, times in seconds, g in m/s^2.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -525,6 +526,8 @@ def disturb_points(h, hp, b, x0, z0, dx, pts, vel, radii, dt, c_vert, c_horiz, w
         use_h = sa > 0.0 and sb > 0.0 and vol_h != 0.0
         if not (use_v or use_h):
             continue
+        reach = PointReach(x, z, R1, R2, ex, ez)
+        transfer = PointTransfer(use_v, vol_v, sc, sr, use_h, vol_h, sa, sb)
         # pass 2: largest scale that keeps every depth >= 0
         scale = 1.0
         for ii in range(ilo, ihi + 1):
@@ -532,8 +535,7 @@ def disturb_points(h, hp, b, x0, z0, dx, pts, vel, radii, dt, c_vert, c_horiz, w
                 depth = h[ii, jj] - b[ii, jj]
                 if depth <= wet_eps:
                     continue
-                dv = _cell_change(x0, z0, dx, ii, jj, x, z, R1, R2, ex, ez,
-                                  use_v, vol_v, sc, sr, use_h, vol_h, sa, sb)
+                dv = _cell_change(x0, z0, dx, ii, jj, reach, transfer)
                 dh = dv / cell_area
                 if dh < 0.0 and -dh * scale > depth * (1.0 - 1e-12):
                     scale = depth * (1.0 - 1e-12) / -dh  # the margin keeps rounding from digging below the bed
@@ -542,17 +544,28 @@ def disturb_points(h, hp, b, x0, z0, dx, pts, vel, radii, dt, c_vert, c_horiz, w
             for jj in range(jlo, jhi + 1):
                 if h[ii, jj] - b[ii, jj] <= wet_eps:
                     continue
-                dv = _cell_change(x0, z0, dx, ii, jj, x, z, R1, R2, ex, ez,
-                                  use_v, vol_v, sc, sr, use_h, vol_h, sa, sb)
+                dv = _cell_change(x0, z0, dx, ii, jj, reach, transfer)
                 dh = scale * dv / cell_area
                 h[ii, jj] += dh
                 hp[ii, jj] += dh
     return n_sub
 
 
+# ``_cell_change``'s per-point arguments, built in ``disturb_points`` (numba compiles a namedtuple of scalars as a
+# struct of them).  PointReach: the point's x, z [m], its disc radii R1, R2 = 2 R1 [m] and its unit horizontal
+# heading ex, ez [-] (0 when it does not move sideways).  PointTransfer: the vertical transfer's use flag, volume
+# vol_v [m^3] and kernel sums sc (disc R1), sr (disc R2) [-]; the horizontal transfer's use flag, volume vol_h
+# [m^3] and its half-disc sums ahead sa and behind sb [-].
+PointReach = namedtuple("PointReach", "x z R1 R2 ex ez")
+PointTransfer = namedtuple("PointTransfer", "use_v vol_v sc sr use_h vol_h sa sb")
+
+
 @njit(cache=True, error_model="numpy")
-def _cell_change(x0, z0, dx, ii, jj, x, z, R1, R2, ex, ez, use_v, vol_v, sc, sr, use_h, vol_h, sa, sb):
-    """Volume [m^3] that one point's transfer adds to cell (ii, jj) (``disturb_points``)."""
+def _cell_change(x0, z0, dx, ii, jj, reach, transfer):
+    """Volume [m^3] that one point's transfer adds to cell (ii, jj) (``disturb_points``); reach a
+    ``PointReach``, transfer a ``PointTransfer``."""
+    x, z, R1, R2, ex, ez = reach
+    use_v, vol_v, sc, sr, use_h, vol_h, sa, sb = transfer
     rx = x0 + (ii + 0.5) * dx - x
     rz = z0 + (jj + 0.5) * dx - z
     s = math.sqrt(rx * rx + rz * rz)
