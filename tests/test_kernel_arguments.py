@@ -29,7 +29,6 @@ KNOWN_WIDE = {
     ("bodies/massspring/kernels.py", "advance"),         # the lattice body's step loop
     ("bodies/massspring/kernels.py", "_positions_flat"),
     ("controllers/myriapod/antennae.py", "antennae_step"),
-    ("kinematics/legs.py", "_stance_result"),
 }
 
 

@@ -365,11 +365,9 @@ def stance_ik_and_fk(states, stance, seg_c, seg_R, geom, tips, angles, ik_failed
             ox, oy, oz = _matvec(R, g[ROOT_X], g[ROOT_Y], g[ROOT_Z])
             O[k, 0], O[k, 1], O[k, 2] = c[0] + ox, c[1] + oy, c[2] + oz
             if states[k] == stance:
-                ok, theta, alpha, beta, st, ct, mu, mv = _ik_solve(tips[k, 0] - c[0] - ox, tips[k, 1] - c[1] - oy,
-                                                                   tips[k, 2] - c[2] - oz, R, side, g,
-                                                                   angles[k, THETA])
-                _stance_result(k, ok, theta, alpha, beta, st, ct, mu, mv, R, side, g, angles, ik_failed, theta_min,
-                               O, M)
+                ik = _ik_solve(tips[k, 0] - c[0] - ox, tips[k, 1] - c[1] - oy, tips[k, 2] - c[2] - oz, R, side, g,
+                               angles[k, THETA])
+                _stance_result(k, ik, R, side, g, angles, ik_failed, theta_min, O, M)
                 continue
             ik_failed[k] = False
             mu, mv, pu, pv = leg_plane_points(angles[k, ALPHA], angles[k, BETA], g[FEMUR], g[TIBIA], g[GAMMA])
@@ -406,17 +404,19 @@ def _stance_pair(k0, seg_c, seg_R, geom, tips, angles, ik_failed, theta_min, O, 
     mu1, mv1 = _ik_knee(al1, g1[FEMUR])
     be0 = _ik_bend(u0, v0, al0, mu0, mv0, g0[GAMMA])
     be1 = _ik_bend(u1, v1, al1, mu1, mv1, g1[GAMMA])
-    _stance_result(k0, ok0 and be0 > 0.0, th0, al0, be0, st0, ct0, mu0, mv0, R, s0, g0, angles, ik_failed,
+    _stance_result(k0, (ok0 and be0 > 0.0, th0, al0, be0, st0, ct0, mu0, mv0), R, s0, g0, angles, ik_failed,
                    theta_min, O, M)
-    _stance_result(k1, ok1 and be1 > 0.0, th1, al1, be1, st1, ct1, mu1, mv1, R, s1, g1, angles, ik_failed,
+    _stance_result(k1, (ok1 and be1 > 0.0, th1, al1, be1, st1, ct1, mu1, mv1), R, s1, g1, angles, ik_failed,
                    theta_min, O, M)
 
 
 @njit(cache=True, inline="always")
-def _stance_result(k, ok, theta, alpha, beta, st, ct, mu, mv, R, side, g, angles, ik_failed, theta_min, O, M):
-    """A STANCE leg k's IK result (``_ik_solve``'s tuple) into angles, ik_failed (rule 3 and theta_min) and
+def _stance_result(k, ik, R, side, g, angles, ik_failed, theta_min, O, M):
+    """A STANCE leg k's IK result ik (``_ik_solve``'s tuple (ok, theta, alpha, beta, sin theta, cos theta, mu,
+    mv), scalars that stay in registers once inlined) into angles, ik_failed (rule 3 and theta_min) and
     its knee M[k] from the root O[k]: from the IK's own sines, cosines and knee where it succeeded, else from
     the angles it keeps (``leg_forward_kinematics``' M)."""
+    ok, theta, alpha, beta, st, ct, mu, mv = ik
     ik_failed[k] = not ok
     if ok:
         angles[k, THETA], angles[k, ALPHA], angles[k, BETA] = theta, alpha, beta
