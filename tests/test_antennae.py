@@ -165,10 +165,7 @@ def test_deferred_links_equal_the_full_step_bit_for_bit():
                 t = k * DT
                 c, R = 0.01 * rng.normal(size=3), random_rotation(rng)
                 full.step(c, R, t)
-                n_r, arrived = A.antennae_step(c, R, t, DT, lazy.params, lazy.f, lazy.nominal, lazy.offsets,
-                                               lazy.root_target, lazy.root_omega, lazy.retracting, lazy.contact,
-                                               lazy.rising, lazy.contact_point, lazy.contact_normal,
-                                               lazy.contact_depth, lazy.arrived, lazy.points, lazy.frames, False)
+                n_r, arrived = A.antennae_step(c, R, t, DT, lazy.params, lazy.f, *lazy.step_packs(), False)
                 if arrived:
                     for a in (A.LEFT, A.RIGHT):
                         if lazy.arrived[a]:

@@ -28,7 +28,6 @@ KNOWN_WIDE = {
     ("bodies/contact_kernels.py", "contact_friction"),   # inlined point friction (scalars in registers)
     ("bodies/massspring/kernels.py", "advance"),         # the lattice body's step loop
     ("bodies/massspring/kernels.py", "_positions_flat"),
-    ("controllers/myriapod/antennae.py", "antennae_step"),
 }
 
 

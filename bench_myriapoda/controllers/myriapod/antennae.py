@@ -57,6 +57,7 @@ Parameter vector ``params`` (``antenna_params``), angles in radians:
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -220,12 +221,23 @@ def antennae_forward_kinematics(c, R, params, angles, points, frames):
                 points[a, i + 1, k] = points[a, i, k] + params[P_LINK] * frames[a, i + 1, k, 0]
 
 
+# ``antennae_step``'s state, packed (numba compiles a namedtuple of arrays as a struct of them).  Callers hand
+# them over as plain tuples in these fields' order (``Antennae.step_packs``; ``compiled.controller_step``
+# builds them in compiled code): numba types a plain tuple of arrays in its C dispatcher, a namedtuple in
+# Python (``bodies.rigid_chain``).  The fields are described in ``antennae_step``.
+AntennaMotion = namedtuple("AntennaMotion", "nominal offsets root_target root_omega retracting")
+AntennaContact = namedtuple("AntennaContact", "contact rising contact_point contact_normal contact_depth arrived")
+AntennaShape = namedtuple("AntennaShape", "points frames")
+
+
 @njit(cache=True)
-def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_omega, retracting, contact,
-                  rising, contact_point, contact_normal, contact_depth, arrived, points, frames, links):
+def antennae_step(c, R, t, dt, params, f, motion, touch, shape, links):
     """One antenna update (Sec. 6, step 1) from the head pose (c (3,) [m], R (3, 3)) at time t [s].
 
     f: terrain parameter vector (its obstacle block is queried; the ground is not).
+    motion = ``AntennaMotion`` (nominal, offsets, root_target, root_omega, retracting), touch =
+    ``AntennaContact`` (contact, rising, contact_point, contact_normal, contact_depth, arrived), shape =
+    ``AntennaShape`` (points, frames), each a tuple of these arrays:
     State, updated in place: nominal (2, N, 2) [rad] joint angles of the motion
     (root dynamics and wave); offsets (2, N, 2) [rad] retraction offsets (the
     antenna's joints are nominal + offsets); root_target (2, 2) [rad];
@@ -246,6 +258,9 @@ def antennae_step(c, R, t, dt, params, f, nominal, offsets, root_target, root_om
     depend only on t, the roots and the joint angles this step leaves.  With obstacles ``links`` is ignored.
     Returns (rising edges this step, True when a root arrived at its target).
     """
+    nominal, offsets, root_target, root_omega, retracting = motion
+    contact, rising, contact_point, contact_normal, contact_depth, arrived = touch
+    points, frames = shape
     n_rising = 0
     any_arrived = False
     n = nominal.shape[1]
@@ -451,15 +466,19 @@ class Antennae:
 
     def step(self, c: np.ndarray, R: np.ndarray, t: float) -> None:
         """Update the antennae on the head pose (c (3,) [m], R (3, 3)) at time t [s]."""
-        n_rising, arrived = antennae_step(c, R, t, self.dt, self.params, self.f, self.nominal, self.offsets,
-                                          self.root_target, self.root_omega, self.retracting, self.contact,
-                                          self.rising, self.contact_point, self.contact_normal, self.contact_depth,
-                                          self.arrived, self.points, self.frames, True)
+        n_rising, arrived = antennae_step(c, R, t, self.dt, self.params, self.f, *self.step_packs(), True)
         self.contact_events += n_rising
         if arrived:
             for a in (LEFT, RIGHT):
                 if self.arrived[a]:
                     self.root_target[a] = self._draw()
+
+    def step_packs(self) -> tuple[tuple, tuple, tuple]:
+        """``antennae_step``'s (motion, touch, shape) packs of this state's arrays, plain tuples in the fields'
+        order of ``AntennaMotion``, ``AntennaContact`` and ``AntennaShape``."""
+        return ((self.nominal, self.offsets, self.root_target, self.root_omega, self.retracting),
+                (self.contact, self.rising, self.contact_point, self.contact_normal, self.contact_depth, self.arrived),
+                (self.points, self.frames))
 
     @property
     def tips(self) -> np.ndarray:

@@ -368,10 +368,10 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     has_ant = ints[I_HAS_ANTENNAE] != 0
     if has_ant:
         links = ints[I_ANT_DEFER] == 0 or ant_f[AN.H_NOBST] > 0.0
-        n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f, nominal, offsets,
-                                                 root_target, root_omega, retracting, contact, rising,
-                                                 contact_point, contact_normal, contact_depth, arrived, points,
-                                                 frames, links)
+        n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f,
+                                                 (nominal, offsets, root_target, root_omega, retracting),
+                                                 (contact, rising, contact_point, contact_normal, contact_depth,
+                                                  arrived), (points, frames), links)
         if not links:
             fs[F_ANT_T] = t
             ints[I_ANT_PENDING] = 1
