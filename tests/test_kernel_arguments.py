@@ -26,8 +26,6 @@ KNOWN_WIDE = {
     ("bodies/rigid_kernels.py", "_solve_contacts"),      # one box's contact solve
     ("bodies/contact_kernels.py", "advance_point"),      # inlined point contact (scalars in registers)
     ("bodies/contact_kernels.py", "contact_friction"),   # inlined point friction (scalars in registers)
-    ("bodies/massspring/kernels.py", "advance"),         # the lattice body's step loop
-    ("bodies/massspring/kernels.py", "_positions_flat"),
 }
 
 

@@ -164,8 +164,8 @@ class BodyMassSpring(NodeSegments):
             act = self._rest_actuation
         return K.advance(self.x, self.v, self.inv_mass, self.families.params, act.muscle,
                          self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                         self._xc, self._vc, self._fc, self._st, self._fs, self._act,
-                         self._face_scale, self._spine, self.acc)
+                         (self._xc, self._vc, self._fc, self._st, self._fs, self._face_scale, self._spine),
+                         self._act, self.acc)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""

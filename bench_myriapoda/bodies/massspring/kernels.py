@@ -56,6 +56,7 @@ step; gathering the touching nodes cost about 21 ns per segment and 0.35 us per 
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
@@ -594,15 +595,18 @@ def _flat_phi(plane, h, ms, cs, x, y):
 
 
 @njit(cache=True, error_model="numpy")
-def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, dt, euler, plane, h, ms, cs, nx, ny, nz, r_n, r_t,
-                    max_pen, max_speed2):
+def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, ground, step):
     """Pass (3) of ``_nodes_coulomb_flat``: position update, Miller's collision and the blow-up checks of the
     n_flat nodes of the flat corner-major arrays xf, vf (axis stride xd), velocities and signed distances
     from the work array wf (row length wl), written as selects so that the loop vectorises (its own
     function: in the node pass's body numba joined its variables with those of the (since removed) gather
     pass, and LLVM left it scalar, about 13 ns per node against 3).  pen0: the largest penetration so far [m].
+    ground: ``_flat_ground``'s tuple; step: the tuple of scalars (dt [s], euler (bool), r_n, r_t [-], max_pen
+    [m], max_speed2 [m^2/s^2]).
     Writes each node's penetration (NaN: none) to wf's W_PEN row and status to cd; returns (nodes whose
     penetration exceeds pen0, nodes with a status other than OK)."""
+    plane, h, ms, cs, nx, ny, nz = ground
+    dt, euler, r_n, r_t, max_pen, max_speed2 = step
     xd2 = xd + xd
     ovx, ovy, ovz = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl
     ophi, open_ = np.uint64(W_PHI) * wl, np.uint64(W_PEN) * wl
@@ -740,8 +744,8 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground
                     mus_f, mus_b, mus_t, mu_f, mu_b, mu_t, nx, ny, nz, wf[ovx + n], wf[ovy + n], wf[ovz + n],
                     wf[osx + u], wf[osy + u], wf[osz + u], wf[ojn + n])
     # (3) positions, collisions, checks
-    n_pen, n_bad = _positions_flat(xf, vf, wf, im, cd, acc[ACC_MAX_PEN], n_flat, xd, wl, dt, euler, plane, h, ms, cs,
-                                   nx, ny, nz, r_n, r_t, max_pen, max_speed2)
+    n_pen, n_bad = _positions_flat(xf, vf, wf, im, cd, acc[ACC_MAX_PEN], n_flat, xd, wl, ground,
+                                   (dt, euler, r_n, r_t, max_pen, max_speed2))
     if n_pen > 0:  # a collision left a penetration above the maximum so far: raise it in node order
         for f in range(n_faces):
             for c in range(4):
@@ -788,22 +792,28 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
                       fric, _flat_ground(terr_kind, terr), phys, acc)
 
 
+# ``advance``'s work arrays, packed (numba compiles a namedtuple of arrays as a struct of them).  The body hands
+# them over as a plain tuple in these fields' order: numba types a plain tuple of arrays in its C dispatcher, a
+# namedtuple in Python (``bodies.rigid_chain``).  Shapes in ``advance``.
+LatticeWork = namedtuple("LatticeWork", "xc vc fc st fs face_scale spine")
+
+
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, fparams, act_buf,
-            fric_model, fric, terr_kind, terr, phys, n_steps,
-            xc, vc, fc, st, fs, act, face_scale, spine, acc):
+def advance(x, v, inv_mass, fparams, act_buf, fric_model, fric, terr_kind, terr, phys, n_steps, work, act, acc):
     """Advance the lattice ``n_steps`` steps; return (steps done, status).
 
     State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  fparams: the lattice's
     ``SpringFamilies.params`` (4, 18, stride), its families those of ``lattice.CUBE_FAMILIES``
     (the caller checks).  act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k
     (rows past the last repeat it).  ``act`` (n_seg, 3) is overwritten with row n_steps (the
-    actuation at the end time, which ``energy`` uses), or the last row.  Work arrays: xc, vc
-    (3, 5, stride) and fc (3, 4, stride) with stride = ``lattice.face_stride`` (padding columns
-    and xc, vc's fifth row zero); st, fs (4 stride,); face_scale (n_faces,); spine (n_faces, 3).
+    actuation at the end time, which ``energy`` uses), or the last row.  work = ``LatticeWork``
+    (xc, vc, fc, st, fs, face_scale, spine): xc, vc (3, 5, stride) and fc (3, 4, stride) with
+    stride = ``lattice.face_stride`` (padding columns and xc, vc's fifth row zero); st, fs
+    (4 stride,); face_scale (n_faces,); spine (n_faces, 3).
     ``acc`` accumulates statistics (contact count, steps, max penetration).
     A step that ends in a blow-up stops the loop and returns its status code.
     """
+    xc, vc, fc, st, fs, face_scale, spine = work
     n_nodes = x.shape[0]
     n_faces = n_nodes // 4
     stride = xc.shape[2]
