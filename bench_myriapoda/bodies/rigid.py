@@ -153,14 +153,14 @@ class RigidBoxes:
             else:  # a short header: zero-padded
                 f[: p.shape[0]] = p
         n_done, status = rk.advance(
-            self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents,
-            self.force, self.torque, self.kinematic, self.impulse_cache, int(n_steps),
+            (self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents,
+             self.force, self.torque, self.impulse_cache), self.kinematic, int(n_steps),
             float(dt), _vec3(gravity, "gravity"), int(terrain_kind), f,
-            float(contact.friction), float(contact.restitution),
-            float(contact.bounce_threshold), int(contact.velocity_iterations),
-            float(contact.velocity_tolerance),
-            int(contact.position_iterations), float(contact.position_beta),
-            float(contact.slop), float(max_speed))
+            (float(contact.friction), float(contact.restitution),
+             float(contact.bounce_threshold), int(contact.velocity_iterations),
+             float(contact.velocity_tolerance),
+             int(contact.position_iterations), float(contact.position_beta),
+             float(contact.slop)), float(max_speed))
         if clear_forces:
             self.clear_forces()
         return int(n_done), int(status)

@@ -207,13 +207,14 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
         if not kinematic[i]:
             rk.accumulate_point_forces(att_body[a0:a1], x_att[a0:a1], f_att[a0:a1], c, force, torque)
         a0 = a1
+    boxes = (c, q, vr, w, rmass, inertia_body, half_extents, force, torque, impulse_cache)  # rk.BoxArrays
+    contact = (mu_r, e_r, bounce, n_vel, vel_tol, n_pos, beta, slop)  # rk.ContactParams
+    scratch = (R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam)  # rk.ContactScratch
     for i in range(n_rigid):
         if kinematic[i]:
             continue
-        rk._step_body(i, c, q, vr, w, rmass, inertia_body, half_extents, force, torque,
-                      impulse_cache, dt, gravity, terr_kind, terr, mu_r, e_r, bounce,
-                      n_vel, vel_tol, n_pos, beta, slop, R, Iw, corner_of, lin, ang, resp,
-                      kn, kt, target, lam, phys[RIGID_ANISO:RIGID_ANISO + rk.N_ANISO])
+        rk._step_body(i, boxes, dt, gravity, terr_kind, terr, contact, scratch,
+                      phys[RIGID_ANISO:RIGID_ANISO + rk.N_ANISO])
 
     # (3) attached nodes follow the rigid bodies; those of a kinematic box are already where its
     # unchanged state puts them (step 1's precondition), so only their residual is computed

@@ -52,6 +52,7 @@ No kernel allocates inside its per-step loop; ``advance`` allocates a few
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -72,6 +73,18 @@ ANISO_ON, ANISO_MU_F, ANISO_MU_B, ANISO_MU_T = range(4)
 N_ANISO = 4
 NO_ANISO = np.zeros(N_ANISO)
 _MU_FLOOR = 1e-9  # a zero coefficient in the scaled disk problem: no friction along that axis
+
+# ``_step_body``'s arguments, packed (numba compiles a tuple as a struct of its fields, and a tuple of scalars
+# inlined or passed to ``_step_body`` costs nothing).  Callers build plain tuples in these fields' order
+# (``advance``; ``rigid_chain.rigid_segments_step`` builds them in compiled code), as ``rigid_chain``'s packs.
+# The boxes' arrays (module docstring; c, q, v, w, impulse_cache UPDATED; force, torque (n, 3) read)
+BoxArrays = namedtuple("BoxArrays", "c q v w mass inertia_body half_extents force torque impulse_cache")
+# the contact's scalars (``advance``): mu, restitution, bounce_threshold [m/s], n_velocity_iterations,
+# velocity_tolerance [m/s], n_position_iterations, beta (``advance``'s position_beta), slop [m]
+ContactParams = namedtuple("ContactParams", "mu restitution bounce_threshold n_velocity_iterations "
+                                            "velocity_tolerance n_position_iterations beta slop")
+# the step's scratch, overwritten: R, Iw (3, 3) and ``_solve_contacts``' corner_of ... lam
+ContactScratch = namedtuple("ContactScratch", "R Iw corner_of lin ang resp kn kt target lam")
 
 # Below this rotation angle [rad] sin(a/2)/a is replaced by its Taylor series
 # 1/2 - a^2/48; the neglected a^4/3840 term is far below round-off there.
@@ -507,10 +520,10 @@ def _hu_friction_impulse(a, b, d, u1, u2, m1, m2, lam_n):
 # inlined into its one caller, _step_body: as a kernel of its own numba would optimize and emit its
 # machine code twice (once alone, once linked into _step_body), seconds of compile (README Development notes)
 @njit(cache=True, inline="always")
-def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
-                    bounce_threshold, n_iterations, tolerance, impulse_cache, corner_of,
-                    lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
-    """Velocity-level contact of body i's 8 corners with the terrain; updates v[i], w[i].
+def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
+    """Velocity-level contact of body i's 8 corners with the terrain; updates v[i], w[i].  boxes: a
+    ``BoxArrays``, contact: a ``ContactParams``, scratch: a ``ContactScratch`` (each a plain tuple in its
+    fields' order); R, Iw: body i's rotation and world inverse inertia.
 
     Contacts are the corners with phi < 0.  Each gets a normal impulse lam_n >= 0
     whose target is a separating normal velocity of -e v_n^- when the approach
@@ -548,6 +561,9 @@ def _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitut
     kt (8, 6) the 2x2 tangential inverse effective mass K_t (a, b, d) and its
     inverse; lam (8, 3) accumulated impulses.  Returns the contact count.
     """
+    c, _, v, w, mass, _, half_extents, _, _, impulse_cache = boxes
+    mu, restitution, bounce_threshold, n_iterations, tolerance, _, _, _ = contact
+    R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam = scratch
     inv_m = 1.0 / mass[i]
     aniso_on = aniso[ANISO_ON] != 0.0
     hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
@@ -709,12 +725,13 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
 # --------------------------------------------------------------------------
 
 @njit(cache=True)
-def _step_body(i, c, q, v, w, mass, inertia_body, half_extents, force, torque,
-               impulse_cache, dt, gravity, kind, f, mu, restitution, bounce_threshold,
-               n_velocity_iterations, velocity_tolerance, n_position_iterations, beta,
-               slop, R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam, aniso=NO_ANISO):
-    """Advance dynamic body i by one step dt (kick, contact, drift, projection); ``aniso``: see
-    ``_solve_contacts``."""
+def _step_body(i, boxes, dt, gravity, kind, f, contact, scratch, aniso=NO_ANISO):
+    """Advance dynamic body i by one step dt (kick, contact, drift, projection); boxes: a ``BoxArrays``,
+    contact: a ``ContactParams``, scratch: a ``ContactScratch`` (plain tuples in the fields' order);
+    ``aniso``: see ``_solve_contacts``."""
+    c, q, v, w, mass, inertia_body, half_extents, force, torque, _ = boxes
+    _, _, _, _, _, n_position_iterations, beta, slop = contact
+    R, Iw = scratch[0], scratch[1]
     m = mass[i]
     i0, i1, i2 = inertia_body[i, 0], inertia_body[i, 1], inertia_body[i, 2]
     _rotation_matrix(q[i, 0], q[i, 1], q[i, 2], q[i, 3], R)
@@ -729,9 +746,7 @@ def _step_body(i, c, q, v, w, mass, inertia_body, half_extents, force, torque,
     w[i, 1] += dt * ay
     w[i, 2] += dt * az
 
-    _solve_contacts(i, c, v, w, mass, half_extents, R, Iw, kind, f, mu, restitution,
-                    bounce_threshold, n_velocity_iterations, velocity_tolerance,
-                    impulse_cache, corner_of, lin, ang, resp, kn, kt, target, lam, aniso)
+    _solve_contacts(i, boxes, kind, f, contact, scratch, aniso)
 
     # Drift: position with the new velocity; orientation by the torque-free flow
     # at the post-contact angular momentum L = R I_body R^T w.
@@ -773,12 +788,12 @@ def _check_state(c, q, v, w, half_extents, max_speed):
 
 
 @njit(cache=True)
-def advance(c, q, v, w, mass, inertia_body, half_extents, force, torque, kinematic,
-            impulse_cache, n_steps, dt, gravity, terrain_kind, terrain_params, mu,
-            restitution, bounce_threshold, n_velocity_iterations, velocity_tolerance,
-            n_position_iterations, position_beta, slop, max_speed):
+def advance(boxes, kinematic, n_steps, dt, gravity, terrain_kind, terrain_params, contact, max_speed):
     """Advance all boxes by up to n_steps steps of dt [s]; stop early when unstable.
 
+    boxes: a ``BoxArrays`` (c, q, v, w, mass, inertia_body, half_extents, force, torque, impulse_cache) and
+    contact a ``ContactParams`` (mu, restitution, bounce_threshold, n_velocity_iterations,
+    velocity_tolerance, n_position_iterations, position_beta, slop), plain tuples in the fields' order.
     State arrays (module docstring) are OVERWRITTEN in place for dynamic bodies;
     kinematic bodies are left untouched.  force (n, 3) [N] and torque (n, 3) [N m]
     are read, not cleared: they act as constant loads over the whole call.
@@ -800,6 +815,7 @@ def advance(c, q, v, w, mass, inertia_body, half_extents, force, torque, kinemat
     including the one that produced the bad state (left in the arrays), so the
     failure time is t0 + n_done dt.
     """
+    c, q, v, w, _, _, half_extents, _, _, _ = boxes
     corner_of = np.empty(N_CORNERS, dtype=np.int64)
     lin = np.empty((N_CORNERS, 3, 3))
     ang = np.empty((N_CORNERS, 3, 3))
@@ -810,15 +826,12 @@ def advance(c, q, v, w, mass, inertia_body, half_extents, force, torque, kinemat
     target = np.empty(N_CORNERS)
     R = np.empty((3, 3))
     Iw = np.empty((3, 3))
+    scratch = (R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam)
     for step in range(n_steps):
         for i in range(c.shape[0]):
             if kinematic[i]:
                 continue
-            _step_body(i, c, q, v, w, mass, inertia_body, half_extents, force, torque,
-                       impulse_cache, dt, gravity, terrain_kind, terrain_params, mu,
-                       restitution, bounce_threshold, n_velocity_iterations,
-                       velocity_tolerance, n_position_iterations, position_beta, slop,
-                       R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam)
+            _step_body(i, boxes, dt, gravity, terrain_kind, terrain_params, contact, scratch)
         status = _check_state(c, q, v, w, half_extents, max_speed)
         if status != STATUS_OK:
             return step + 1, status
