@@ -112,9 +112,9 @@ def advance_chain(x, v, inv_mass, rest, muscle, phys, fric_model, fric, terr_kin
             vx = v[i, 0] + dt * f[i, 0] * inv_mass[i]
             vy = v[i, 1] + dt * f[i, 1] * inv_mass[i]
             vz = v[i, 2] + dt * f[i, 2] * inv_mass[i]
-            touching, st = advance_point(x, v, i, vx, vy, vz, sx / sl, sy / sl, sz / sl, dt, terr_kind, terr,
-                                         fric_model, fric, phys[R_N], phys[R_T], fric[CONTACT_DISTANCE],
-                                         phys[MAX_PEN], phys[MAX_SPEED] ** 2, acc, False, 0.0, 0.0, 0.0)
+            touching, st = advance_point(x, v, i, (vx, vy, vz), (sx / sl, sy / sl, sz / sl), terr_kind, terr,
+                                         fric_model, fric, (dt, phys[R_N], phys[R_T], fric[CONTACT_DISTANCE],
+                                         phys[MAX_PEN], phys[MAX_SPEED] ** 2), acc, False, (0.0, 0.0, 0.0))
             if touching:
                 acc[S.ACC_CONTACT_SUM] += 1.0 / n
             if st != S.OK:

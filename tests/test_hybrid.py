@@ -140,8 +140,8 @@ def reference_step(b: BodyHybrid):
         p, v = x0[i], fem.v[i]
         phi = signed_distance(b.terr_kind, b.terr, *p)
         if phi < b.fric[CONTACT_DISTANCE]:
-            v = np.array(contact_friction(b.terr_kind, b.terr, b.fric_model, b.fric, b.phys[K.R_N], *p, *v, *s,
-                                          phi, *(dt * v)))
+            v = np.array(contact_friction(b.terr_kind, b.terr, b.fric_model, b.fric, b.phys[K.R_N], tuple(p),
+                                          tuple(v), tuple(s), phi, tuple(dt * v)))
         q = p + dt * v
         phi_q = signed_distance(b.terr_kind, b.terr, *q)
         if phi_q < 0.0:

@@ -21,8 +21,6 @@ KNOWN_WIDE = {
     ("bodies/fem/kernels.py", "advance"),                # FEMSystem's step loop
     ("bodies/fem/kernels.py", "_store_nodal_forces"),    # inlined per-tet helper (scalars in registers)
     ("bodies/fem/kernels.py", "_fcr_stress"),            # inlined per-tet helper (scalars in registers)
-    ("bodies/contact_kernels.py", "advance_point"),      # inlined point contact (scalars in registers)
-    ("bodies/contact_kernels.py", "contact_friction"),   # inlined point friction (scalars in registers)
 }
 
 

@@ -250,11 +250,11 @@ def test_a_mass_above_the_ground_gets_no_friction_until_its_step_reaches_the_gro
     p[FK.MUS_F], p[FK.MUS_B], p[FK.MUS_T] = 0.5, 0.5, 0.5
     kind, terr = TK.PLANE, np.zeros(TK.N_TERRAIN_PARAMS)  # the plane y = 0
     dt, v = 1e-3, np.array([0.3, -0.2, 0.0])
-    above = contact_friction(kind, terr, FK.COULOMB, p, 0.0, 0.0, 0.002, 0.0, *v, 1.0, 0.0, 0.0,
-                             0.002, *(dt * v))
+    above = contact_friction(kind, terr, FK.COULOMB, p, 0.0, (0.0, 0.002, 0.0), tuple(v), (1.0, 0.0, 0.0),
+                             0.002, tuple(dt * v))
     np.testing.assert_allclose(above, v)
-    reaching = contact_friction(kind, terr, FK.COULOMB, p, 0.0, 0.0, 0.0001, 0.0, *v, 1.0, 0.0, 0.0,
-                                0.0001, *(dt * v))
+    reaching = contact_friction(kind, terr, FK.COULOMB, p, 0.0, (0.0, 0.0001, 0.0), tuple(v), (1.0, 0.0, 0.0),
+                                0.0001, tuple(dt * v))
     np.testing.assert_allclose(reaching, [0.3 - 0.5 * 0.2, -0.2, 0.0])
 
 

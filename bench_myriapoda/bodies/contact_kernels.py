@@ -33,10 +33,11 @@ from .step_status import ACC_MAX_PEN, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_S
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz, sx, sy, sz,
-                     phi, dx, dy, dz):
+def contact_friction(terr_kind, terr, fric_model, fric, r_n, p, vel, s, phi, d):
     """Return (vx, vy, vz) for a mass at p, touching the terrain, with velocity v after forces.
 
+    p = (px, py, pz) [m], vel = (vx, vy, vz) [m/s], s = (sx, sy, sz), d = (dx, dy, dz) [m]: tuples of
+    scalars (inlined, they stay in registers).
     The caller tests contact (signed distance of p below ``fric[CONTACT_DISTANCE]``)
     inline, so the common no-contact path costs no call.  s: unit spine vector
     toward the head at the mass; phi: signed distance of p [m]; d: the mass's travel over the
@@ -46,6 +47,10 @@ def contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy,
     v.n < 0, else 0: friction never exceeds mu times the normal impulse the step delivers.
     The STICK model holds every mass within the contact distance that moves toward the surface.
     """
+    px, py, pz = p
+    vx, vy, vz = vel
+    sx, sy, sz = s
+    dx, dy, dz = d
     nx, ny, nz = surface_normal(terr_kind, terr, px, py, pz)
     vn = vx * nx + vy * ny + vz * nz
     # Miller's caterpillar rule (STICK) is kinematic, not a force law: a mass within the contact
@@ -87,17 +92,21 @@ def collide_path(terr_kind, terr, r_n, r_t, px, py, pz, phi_p, qx, qy, qz, phi_q
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr, fric_model, fric, r_n, r_t,
-                  contact_dist, max_pen, max_speed2, acc, euler, ox, oy, oz):
+def advance_point(x, v, i, vel, s, terr_kind, terr, fric_model, fric, step, acc, euler, old):
     """Move free point mass i one step: friction, position, Miller's collision, checks.
 
-    (vx, vy, vz): its velocity after the step's forces [m/s]; s: unit spine
-    vector at the mass (used by friction only when it touches); the position
+    vel = (vx, vy, vz): its velocity after the step's forces [m/s]; s = (sx, sy, sz): unit spine
+    vector at the mass (used by friction only when it touches); step = (dt [s], r_n, r_t [-],
+    contact_dist [m], max_pen [m], max_speed2 [m^2/s^2]); the position
     update is x += dt v (semi-implicit), or x += dt (v_old + v) / 2 with
-    v_old = (ox, oy, oz) when ``euler`` (Miller's Euler).  Writes x[i], v[i]
+    v_old = old = (ox, oy, oz) when ``euler`` (Miller's Euler).  The tuples hold scalars: inlined, they
+    stay in registers.  Writes x[i], v[i]
     (n, 3); raises acc[ACC_MAX_PEN] to the penetration left by a collision.
     Returns (touching, status) with status a ``step_status`` code.
     """
+    vx, vy, vz = vel
+    dt, r_n, r_t, contact_dist, max_pen, max_speed2 = step
+    ox, oy, oz = old
     px, py, pz = x[i, 0], x[i, 1], x[i, 2]
     phi = signed_distance(terr_kind, terr, px, py, pz)
     touching = phi < contact_dist
@@ -106,8 +115,8 @@ def advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr, fric_mod
             dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
         else:
             dx, dy, dz = dt * vx, dt * vy, dt * vz
-        vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz, sx, sy, sz,
-                                      phi, dx, dy, dz)
+        vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, (px, py, pz), (vx, vy, vz), s,
+                                      phi, (dx, dy, dz))
     if euler:
         qx, qy, qz = px + 0.5 * dt * (ox + vx), py + 0.5 * dt * (oy + vy), pz + 0.5 * dt * (oz + vz)
     else:

@@ -160,9 +160,9 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
             nrm = math.sqrt(sx * sx + sy * sy + sz * sz)
             if nrm > 0.0:
                 sx, sy, sz = sx / nrm, sy / nrm, sz / nrm
-            touching, st = advance_point(x, v, i, vx, vy, vz, sx, sy, sz, dt, terr_kind, terr,
-                                         fric_model, fric, r_n, r_t,
-                                         contact_dist, phys[MAX_PEN], max_speed2, acc, False, 0.0, 0.0, 0.0)
+            touching, st = advance_point(x, v, i, (vx, vy, vz), (sx, sy, sz), terr_kind, terr, fric_model, fric,
+                                         (dt, r_n, r_t, contact_dist, phys[MAX_PEN], max_speed2), acc, False,
+                                         (0.0, 0.0, 0.0))
             n_contact += touching
             if st != OK:
                 status = st

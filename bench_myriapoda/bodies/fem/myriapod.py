@@ -222,9 +222,9 @@ def advance_chain(B, W, acc, n_steps):
                         status = S.RUNAWAY_SPEED
                     continue
             s = node_spine[i]
-            touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1], spine[s, 2],
-                                         dt, terr_kind, terr, fric_model, fric, r_n, r_t, contact_dist, max_pen,
-                                         vmax2, acc, False, 0.0, 0.0, 0.0)
+            touching, st = advance_point(x, v, i, (vx, vy, vz), (spine[s, 0], spine[s, 1], spine[s, 2]),
+                                         terr_kind, terr, fric_model, fric, (dt, r_n, r_t, contact_dist, max_pen,
+                                         vmax2), acc, False, (0.0, 0.0, 0.0))
             n_contact += touching
             if st != S.OK:
                 status = st

@@ -182,9 +182,9 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
                     status = RUNAWAY_SPEED
                 continue
         s = node_link[i]
-        touching, st = advance_point(x, v, i, vx, vy, vz, spine[s, 0], spine[s, 1],
-                                     spine[s, 2], dt, terr_kind, terr, fric_model, fric, r_n, r_t,
-                                     contact_dist, max_pen, vmax2, acc, False, 0.0, 0.0, 0.0)
+        touching, st = advance_point(x, v, i, (vx, vy, vz), (spine[s, 0], spine[s, 1], spine[s, 2]), terr_kind,
+                                     terr, fric_model, fric, (dt, r_n, r_t, contact_dist, max_pen, vmax2), acc,
+                                     False, (0.0, 0.0, 0.0))
         n_contact += touching
         if st != OK:
             status = st

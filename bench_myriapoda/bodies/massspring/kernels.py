@@ -561,8 +561,8 @@ def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fri
                     dx, dy, dz = 0.5 * dt * (ox + vx), 0.5 * dt * (oy + vy), 0.5 * dt * (oz + vz)
                 else:
                     dx, dy, dz = dt * vx, dt * vy, dt * vz
-                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, px, py, pz, vx, vy, vz,
-                                              spine[f, 0], spine[f, 1], spine[f, 2], phi, dx, dy, dz)
+                vx, vy, vz = contact_friction(terr_kind, terr, fric_model, fric, r_n, (px, py, pz), (vx, vy, vz),
+                                              (spine[f, 0], spine[f, 1], spine[f, 2]), phi, (dx, dy, dz))
             if euler:
                 qx = px + 0.5 * dt * (ox + vx)
                 qy = py + 0.5 * dt * (oy + vy)
