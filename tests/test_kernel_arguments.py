@@ -18,9 +18,6 @@ MAX_POSITIONAL = 16
 # covered the legged bodies' step loops: the rigid segment chain's, the FEM chain's and the fused path's).
 KNOWN_WIDE = {
     ("bodies/fem/body_kernels.py", "advance"),          # the legless FEM body's step loop
-    ("bodies/fem/kernels.py", "advance"),                # FEMSystem's step loop
-    ("bodies/fem/kernels.py", "_store_nodal_forces"),    # inlined per-tet helper (scalars in registers)
-    ("bodies/fem/kernels.py", "_fcr_stress"),            # inlined per-tet helper (scalars in registers)
 }
 
 

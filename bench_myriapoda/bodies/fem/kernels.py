@@ -92,6 +92,7 @@ paths with numpy's SVD, including inverted F.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -783,14 +784,16 @@ def pack_tet_coefficients(Dm_inv, vol, mu, lam, coef):
 # Constitutive model and elastic forces
 # --------------------------------------------------------------------------------------
 @njit(cache=True, inline="always", error_model="numpy")
-def _fcr_stress(f00, f01, f02, f10, f11, f12, f20, f21, f22, two_mu, lam,
-                r00, r01, r02, r10, r11, r12, r20, r21, r22):
+def _fcr_stress(F, two_mu, lam, R):
     """First Piola-Kirchhoff stress of eq. 8 in cofactor form.
 
     P = 2 mu (F - R) + lam (J - 1) cof(F), using J F^-T = cof(F) so that P stays
     finite as J -> 0.  The columns of cof(F) are f1 x f2, f2 x f0, f0 x f1 (f_k the
-    columns of F).  Returns (P row-major, J).
+    columns of F).  F, R: tuples of their 9 entries, row-major (inlined, scalars in registers).
+    Returns (P row-major, J).
     """
+    f00, f01, f02, f10, f11, f12, f20, f21, f22 = F
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = R
     c00 = f11 * f22 - f21 * f12
     c10 = f21 * f02 - f01 * f22
     c20 = f01 * f12 - f11 * f02
@@ -818,30 +821,29 @@ def first_piola(F, mu, lam, P):
     (u00, u01, u02, u10, u11, u12, u20, u21, u22, _s0, _s1, _s2,
      v00, v01, v02, v10, v11, v12, v20, v21, v22) = _svd3_core(
         F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
-    p = _fcr_stress(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2],
+    p = _fcr_stress((F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2]),
                     2.0 * mu, lam,
-                    u00 * v00 + u01 * v01 + u02 * v02, u00 * v10 + u01 * v11 + u02 * v12,
-                    u00 * v20 + u01 * v21 + u02 * v22, u10 * v00 + u11 * v01 + u12 * v02,
-                    u10 * v10 + u11 * v11 + u12 * v12, u10 * v20 + u11 * v21 + u12 * v22,
-                    u20 * v00 + u21 * v01 + u22 * v02, u20 * v10 + u21 * v11 + u22 * v12,
-                    u20 * v20 + u21 * v21 + u22 * v22)
+                    (u00 * v00 + u01 * v01 + u02 * v02, u00 * v10 + u01 * v11 + u02 * v12,
+                     u00 * v20 + u01 * v21 + u02 * v22, u10 * v00 + u11 * v01 + u12 * v02,
+                     u10 * v10 + u11 * v11 + u12 * v12, u10 * v20 + u11 * v21 + u12 * v22,
+                     u20 * v00 + u21 * v01 + u22 * v02, u20 * v10 + u21 * v11 + u22 * v12,
+                     u20 * v20 + u21 * v21 + u22 * v22))
     for i in range(3):
         for j in range(3):
             P[i, j] = p[3 * i + j]
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                        r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l):
-    """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign).
+def _store_nodal_forces(F, R, coef, H, b, l):
+    """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign); F, R: tuples of the tet's
+    deformation gradient's and rotation's 9 entries, row-major (inlined, scalars in registers).
 
     Row 3 k + i of H holds component i of the force on local node k + 1, row
     H_NODE0 + i that on local node 0, minus the sum of the three (eq. 10).
     """
     L = LANES
     (p00, p01, p02, p10, p11, p12, p20, p21, p22, _J) = _fcr_stress(
-        f00, f01, f02, f10, f11, f12, f20, f21, f22, coef[b, COEF_TWO_MU * L + l], coef[b, COEF_LAM * L + l],
-        r00, r01, r02, r10, r11, r12, r20, r21, r22)
+        F, coef[b, COEF_TWO_MU * L + l], coef[b, COEF_LAM * L + l], R)
     a00, a01, a02 = coef[b, l], coef[b, L + l], coef[b, 2 * L + l]
     a10, a11, a12 = coef[b, 3 * L + l], coef[b, 4 * L + l], coef[b, 5 * L + l]
     a20, a21, a22 = coef[b, 6 * L + l], coef[b, 7 * L + l], coef[b, 8 * L + l]
@@ -1007,8 +1009,8 @@ def _rotation_stress_pass(F, coef, q, H):
             f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
             r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(q[b, l], q[b, L + l], q[b, 2 * L + l],
                                                                        q[b, 3 * L + l])
-            _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+            _store_nodal_forces((f00, f01, f02, f10, f11, f12, f20, f21, f22),
+                                (r00, r01, r02, r10, r11, r12, r20, r21, r22), coef, H, b, l)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -1037,8 +1039,8 @@ def _fixup_tet(F, coef, q, H, b, l):
     q[b, Q_D * L + l] = dx if small else 0.0
     q[b, (Q_D + 1) * L + l] = dy if small else 0.0
     q[b, (Q_D + 2) * L + l] = dz if small else 0.0
-    _store_nodal_forces(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                        r00, r01, r02, r10, r11, r12, r20, r21, r22, coef, H, b, l)
+    _store_nodal_forces((f00, f01, f02, f10, f11, f12, f20, f21, f22),
+                        (r00, r01, r02, r10, r11, r12, r20, r21, r22), coef, H, b, l)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1529,12 +1531,17 @@ def _maybe_unstable(x, v, vmax2):
     return n_fast > 0 or not math.isfinite(tot)
 
 
+# ``advance``'s arguments, packed (numba compiles a namedtuple as a struct of its fields).  ``FEMSystem`` hands
+# them over as plain tuples in these fields' order: numba types a plain tuple of arrays in its C dispatcher, a
+# namedtuple in Python (``bodies.rigid_chain``).  The fields are described in ``advance``.
+FEMMesh = namedtuple("FEMMesh", "tets inc_ptr inc_off coef mass")
+FEMSolve = namedtuple("FEMSolve", "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val fixed pf_ptr pf_col pf_val")
+FEMGround = namedtuple("FEMGround", "contact terrain_kind terrain_params mu_friction v_limit")
+FEMWork = namedtuple("FEMWork", "q_ws f_fixed f_work b_work F_work H_work")
+
+
 @njit(cache=True, error_model="numpy")
-def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_steps,
-            perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-            fixed, pf_ptr, pf_col, pf_val,
-            contact, terrain_kind, terrain_params, mu_friction, v_limit,
-            q_ws, f_fixed, f_work, b_work, F_work, H_work):
+def advance(x, v, mesh, gravity, f_ext, dt, n_steps, solve, ground, work):
     """Run up to n_steps semi-implicit steps (eqs. 14-15) in one call.
 
     Per step: f = f_E(x^n) + M g + f_ext on the free nodes; solve
@@ -1544,6 +1551,10 @@ def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_step
     free nodes; then the instability check (a non-finite x or v, or a free-node
     speed above v_limit).
 
+    mesh = ``FEMMesh`` (tets, inc_ptr, inc_off, coef, mass), solve = ``FEMSolve`` (perm, sky_first, sky_ptr,
+    sky_L, fp_ptr, fp_col, fp_val, fixed, pf_ptr, pf_col, pf_val), ground = ``FEMGround`` (contact,
+    terrain_kind, terrain_params, mu_friction, v_limit), work = ``FEMWork`` (q_ws, f_fixed, f_work, b_work,
+    F_work, H_work): tuples in these fields' order.
     Inputs: x, v (n_nodes, 3) [m], [m/s], OVERWRITTEN with the new state; tets,
     inc_ptr, inc_off (``node_incidence``), coef, q_ws as in
     ``elastic_forces_gathered``;
@@ -1562,6 +1573,10 @@ def advance(x, v, tets, inc_ptr, inc_off, coef, mass, gravity, f_ext, dt, n_step
     speed; on failure x, v hold the state of the failed step and f_fixed is
     undefined.
     """
+    tets, inc_ptr, inc_off, coef, mass = mesh
+    perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val, fixed, pf_ptr, pf_col, pf_val = solve
+    contact, terrain_kind, terrain_params, mu_friction, v_limit = ground
+    q_ws, f_fixed, f_work, b_work, F_work, H_work = work
     n_nodes = x.shape[0]
     n_fixed = fixed.shape[0]
     vmax2 = v_limit * v_limit

@@ -243,13 +243,12 @@ class FEMSystem:
         else:
             contact, kind, params = True, int(terrain[0]), np.ascontiguousarray(terrain[1], dtype=np.float64)
         steps, status = K.advance(
-            self.x, self.v, self.tets, self._inc_ptr, self._inc_off, self.coef, self.mass,
+            self.x, self.v, (self.tets, self._inc_ptr, self._inc_off, self.coef, self.mass),
             g, fe, float(dt), int(n_steps),
-            s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-            s.fixed, s.pf_ptr, s.pf_col, s.pf_val,
-            contact, kind, params, float(friction), float(v_limit),
-            self._q_ws, self._f_fixed, self._f_work, self._b_work,
-            self._F_work, self._H_work)
+            (s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+             s.fixed, s.pf_ptr, s.pf_col, s.pf_val),
+            (contact, kind, params, float(friction), float(v_limit)),
+            (self._q_ws, self._f_fixed, self._f_work, self._b_work, self._F_work, self._H_work))
         return AdvanceResult(int(steps), int(status))
 
     def elastic_forces(self):
