@@ -279,15 +279,22 @@ def link_step(L, A, B, W, C, acc, step, flat, ground):
     raise NotImplementedError("rigid_chain.link_step runs in compiled code, on a registered link element")
 
 
+# The link element's class -> its step, filled by ``register_link``.
+_LINK_STEPS: dict[type, object] = {}
+
+
 def register_link(cls, impl) -> None:
     """Make the plain function ``impl`` (the parameters of ``link_step``) the step of link elements of
-    namedtuple class ``cls``; inlined into ``advance_chain``."""
-    impl = getattr(impl, "py_func", impl)
+    namedtuple class ``cls``; inlined into ``advance_chain``.  Only fills a table read by the one overload
+    of ``link_step`` below, so importing a link element's module while a kernel is being typed cannot
+    change numba's type of ``link_step`` (``legged_chunk.register`` has the failure that avoids)."""
+    _LINK_STEPS[cls] = getattr(impl, "py_func", impl)
 
-    @overload(link_step, inline="always")
-    def _link_step(L, A, B, W, C, acc, step, flat, ground):
-        if isinstance(L, types.BaseNamedTuple) and L.instance_class is cls:
-            return impl
+
+@overload(link_step, inline="always")
+def _link_step(L, A, B, W, C, acc, step, flat, ground):
+    if isinstance(L, types.BaseNamedTuple):
+        return _LINK_STEPS.get(L.instance_class)
 
 
 @njit(cache=True, error_model="numpy")
