@@ -16,8 +16,11 @@ The sequence here is that one, with two tiny bodies written to a temporary direc
 fresh numba cache: process 1 caches a shared callee for body B's pack; process 2 imports only body A and
 compiles a chunk kernel over A's pack (and a chain over A's link element) whose callee's cache index names
 B's pack, so B's module registers while the chunk is being typed.  On the overload-per-body registration
-both calls failed with that TypingError (checked when this test was written); the test also checks that B
-really was imported during the compile, so it cannot pass without exercising the sequence.  Cost: three
+the chunk failed with that TypingError (checked when this test was written; the same sequence with the real
+bodies at 77cac4e -- process 1 one step of the mass-spring centipede's body, process 2 a fused FEM centipede then
+a fused hybrid centipede on the same fresh cache -- failed the hybrid's chunk at ``legged_walk.py:106`` twice,
+the second attempt at once, as in the matrix run); the test also checks that B
+really was imported during the compile, so it cannot pass without exercising the sequence.  Cost: two
 interpreters and a few small kernels: 5 s of CPU, 10 to 40 s of wall time on the loaded 2-core machine.
 """
 import os
