@@ -29,6 +29,15 @@ CarriedBoxes = namedtuple("CarriedBoxes", "c q vr w kinematic held x v fixed att
                                           "Rseg Rb qtmp dt")
 
 
+def box_chain_centers(box_c: np.ndarray, x: np.ndarray, link_nodes: np.ndarray) -> np.ndarray:
+    """(2 n_boxes - 1, 3) [m]: box 0, link 0, box 1, ..., box n-1 -- the box centres box_c (n_boxes, 3) and each
+    link's node mean (x (n_nodes, 3) [m] at link_nodes (n_boxes - 1, m)); a body's ``segment_centers``."""
+    out = np.empty((2 * len(box_c) - 1, 3))
+    out[0::2] = box_c
+    out[1::2] = x[link_nodes].mean(axis=1)
+    return out
+
+
 def carried_boxes(rb, held, x, v, fixed, att_body, att_local, link_nodes, Rb, qtmp, dt) -> CarriedBoxes:
     """The pack of a body's boxes ``rb`` (``rigid.RigidBoxes``) and its links (module docstring)."""
     return CarriedBoxes(rb.c, rb.q, rb.v, rb.w, rb.kinematic, held, x, v, fixed, att_body, att_local,

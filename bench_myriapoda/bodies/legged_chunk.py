@@ -18,11 +18,11 @@ sample -> ``body.advance(t, 1)``):
 
 The interface: a body offers the fused path by a method ``legged_pack() -> P`` (``LeggedChunkBody``),
 P a namedtuple of a class its own module declares and hands to ``register`` with its four
-implementations.  ``register`` adds them as numba overloads of the four functions below for
-that class, so the fused kernel is written once against this interface, compiled once per
-body's pack type (numba's cache keeps each), and never names a body.  The implementations run
-the same kernels on the same arrays as the body's Python methods, so the two paths give the same
-doubles (tests/test_fused_walk.py).
+implementations.  ``register`` makes them what the four functions below compile to for that class
+(one numba overload each, declared here once, so the order in which bodies register cannot matter),
+so the fused kernel is written once against this interface, compiled once per body's pack type
+(numba's cache keeps each), and never names a body.  The implementations run the same kernels on the
+same arrays as the body's Python methods, so the two paths give the same doubles (tests/test_fused_walk.py).
 """
 from __future__ import annotations
 
@@ -62,36 +62,53 @@ def step(P):
     raise NotImplementedError("legged_chunk.step runs in compiled code, on a registered pack")
 
 
-def _of(P, cls) -> bool:
-    return isinstance(P, types.BaseNamedTuple) and P.instance_class is cls
+# The pack's class -> its four implementations (poses, carry, sample, step), filled by ``register``.
+_IMPLS: dict[type, tuple] = {}
+
+
+def _impl(P, which: int):
+    """The registered implementation number ``which`` for pack type P (None: not a registered pack)."""
+    if isinstance(P, types.BaseNamedTuple):
+        impls = _IMPLS.get(P.instance_class)
+        if impls is not None:
+            return impls[which]
+    return None
 
 
 def register(cls, poses_impl, carry_impl, sample_impl, step_impl) -> None:
     """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample``, ``step``)
     the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
-    inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function."""
-    poses_impl, carry_impl, sample_impl, step_impl = (getattr(f, "py_func", f) for f in
-                                                      (poses_impl, carry_impl, sample_impl, step_impl))
+    inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function.
 
-    @overload(poses, inline="always")
-    def _poses(P):
-        if _of(P, cls):
-            return poses_impl
+    Registering only fills a table: each of the four functions has ONE numba overload, declared below
+    when this module is imported, which picks the implementation by the pack's class when a kernel is
+    typed.  An overload per body (as before) made numba's type of ``poses`` a new ``Function`` (the
+    old one's templates plus the new) each time a body module was imported; a body module can be
+    imported in the middle of typing a kernel (loading a callee from the numba cache unpickles its
+    cached signatures, which imports the module of each pack class in them), and the next nested
+    compile's refresh then gave ``legged_chunk`` two types for ``LC.poses``: "Cannot unify
+    Function(<function poses>) and Function(<function poses>)" (tests/test_legged_chunk_registration.py)."""
+    _IMPLS[cls] = tuple(getattr(f, "py_func", f) for f in (poses_impl, carry_impl, sample_impl, step_impl))
 
-    @overload(carry, inline="always")
-    def _carry(P, kinematic, c_T, R_T):
-        if _of(P, cls):
-            return carry_impl
 
-    @overload(sample, inline="always")
-    def _sample(P, c_out, R_out, links_out):
-        if _of(P, cls):
-            return sample_impl
+@overload(poses, inline="always")
+def _poses(P):
+    return _impl(P, 0)
 
-    @overload(step, inline="always")
-    def _step(P):
-        if _of(P, cls):
-            return step_impl
+
+@overload(carry, inline="always")
+def _carry(P, kinematic, c_T, R_T):
+    return _impl(P, 1)
+
+
+@overload(sample, inline="always")
+def _sample(P, c_out, R_out, links_out):
+    return _impl(P, 2)
+
+
+@overload(step, inline="always")
+def _step(P):
+    return _impl(P, 3)
 
 
 # The rows are copied element-wise, not as out[:] = a: an array assigned to a slice compiles numba's

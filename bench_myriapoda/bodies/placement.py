@@ -11,9 +11,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
 from ..world.terrain import placement_terrain
 from ..world.terrain_kernels import signed_distance
+from .rigid import CORNER_SIGNS
 
 
 MAX_LIFT_ITERATIONS = 60
@@ -59,3 +61,25 @@ def place_points(rest_points: np.ndarray, case, world=None) -> np.ndarray:
     if case.scenario.perturbation_m > 0:
         x += np.random.default_rng(case.seed).normal(scale=case.scenario.perturbation_m, size=x.shape)
     return np.ascontiguousarray(x)
+
+
+def place_box_chain(case, world, nodes, attached, centres, half, rigid, x, v) -> None:
+    """A chain of rigid boxes and its link nodes (the hybrid and the legged mass-spring bodies) placed by the
+    rule above, from their rest build: nodes (n_nodes, 3) [m], attached (n_nodes,) bool (the nodes on the
+    boxes), box centres (n_boxes, 3) [m] and half extents half (3,) [m].  The lowest point is a node or a box
+    corner; the scenario's random perturbation moves the free nodes only (the attached ones stay on their
+    boxes).  OVERWRITES x (n_nodes, 3) [m], v (n_nodes, 3) [m/s] (zero) and the poses of the boxes ``rigid``
+    (``rigid.RigidBoxes``; at rest)."""
+    corners = (centres[:, None, :] + CORNER_SIGNS * half).reshape(-1, 3)
+    R0, t = initial_transform(np.vstack([nodes, corners]), case, world)
+    q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)  # scipy (x, y, z, w) -> (w, x, y, z)
+    placed = nodes @ R0.T + t
+    sc = case.scenario
+    if sc.perturbation_m > 0:
+        free = ~attached
+        placed[free] += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=(free.sum(), 3))
+    x[:] = placed
+    v[:] = 0.0
+    c = centres @ R0.T + t
+    for i in range(len(centres)):
+        rigid.set_pose(i, c=c[i], q=q0, v=np.zeros(3), w=np.zeros(3))

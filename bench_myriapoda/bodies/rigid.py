@@ -83,6 +83,10 @@ def _vec3(x, name: str) -> np.ndarray:
     return a
 
 
+# Corner k of a box sits at CORNER_SIGNS[k] * half extents in its body frame (bit 0: +x, bit 1: +y, bit 2: +z).
+CORNER_SIGNS = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
+
+
 class RigidBoxes:
     """n solid uniform boxes with rigid-body dynamics and terrain contact.
 
@@ -224,6 +228,11 @@ class RigidBoxes:
         out = np.empty((self.n, 3, 3))
         rk.quat_to_matrix(self.q, out)
         return out
+
+    def corners(self) -> np.ndarray:
+        """(n * 8, 3) [m] the boxes' corners, corner k of a box at ``CORNER_SIGNS[k]``."""
+        local = CORNER_SIGNS[None, :, :] * self.half_extents[:, None, :]
+        return (self.c[:, None, :] + np.einsum("nij,nkj->nki", self.rotation_matrices(), local)).reshape(-1, 3)
 
     def world_points(self, i: int, local_points) -> np.ndarray:
         """World positions (m, 3) [m] of body-frame points local_points (m, 3) of body i."""

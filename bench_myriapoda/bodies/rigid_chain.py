@@ -23,6 +23,7 @@ import math
 
 from collections import namedtuple
 
+import numpy as np
 from numba import njit
 from numba.core import types
 from numba.extending import overload
@@ -30,6 +31,7 @@ from numba.extending import overload
 from ..world.terrain_kernels import distance_at_least, flat_ground, signed_distance
 from . import rigid_kernels as rk
 from . import step_status as S
+from .case_scalars import contact_scalars
 from .friction_kernels import CONTACT_DISTANCE, spine_between
 from .step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 
@@ -37,6 +39,8 @@ from .step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATI
 # over as plain tuples in these fields' order and a link element's entry kernel names them (``hybrid.kernels.advance``):
 # numba types a plain tuple of arrays in its C dispatcher, a namedtuple in Python (about 100 us a call for the
 # 18-segment centipede's packs, measured, against 8 us), and names in compiled code cost nothing.
+# So each link element's module has its own entry kernel, a few lines alike by design (``hybrid.kernels.advance``,
+# ``massspring.myriapod.advance_spring_chain``).
 # the boxes (``rigid_kernels`` conventions; c, q, vr, w, impulse_cache UPDATED; mass (n_rigid,) [kg], inertia_body
 # (n_rigid, 3) [kg m^2], half_extents (n_rigid, 3) [m], kinematic (n_rigid,) bool; force, torque (n_rigid, 3) scratch)
 Boxes = namedtuple("Boxes", "c q vr w mass inertia_body half_extents kinematic impulse_cache force torque")
@@ -58,6 +62,23 @@ Coupling = namedtuple("Coupling", "f_att x_att x_pred residual spine Rb R Iw cor
 # the boxes' anisotropic friction, rigid_kernels' ``aniso`` layout (on, mu_f, mu_b, mu_t)
 RIGID_ANISO = 16
 N_PHYS = 16 + rk.N_ANISO
+
+
+def chain_phys(case, dt: float, contact) -> np.ndarray:
+    """(N_PHYS,) the chain's scalars for time step dt [s] and the boxes' contact (``rigid.ContactSettings``);
+    the link element's own (MUSCLES_ON, MUSCLE_GAIN, VOLUME) and the boxes' RIGID_ANISO are left 0 for its
+    body to set."""
+    phys = np.zeros(N_PHYS)
+    contact_scalars(phys, (DT, R_N, R_T, MAX_SPEED, MAX_PEN), case, dt)
+    phys[RIGID_MU] = contact.friction
+    phys[RIGID_RESTITUTION] = contact.restitution
+    phys[BOUNCE_THRESHOLD] = contact.bounce_threshold
+    phys[VEL_ITERATIONS] = contact.velocity_iterations
+    phys[VEL_TOLERANCE] = contact.velocity_tolerance
+    phys[POS_ITERATIONS] = contact.position_iterations
+    phys[POS_BETA] = contact.position_beta
+    phys[SLOP] = contact.slop
+    return phys
 
 # Status codes and the shared statistics (contact fraction sum, steps, deepest
 # penetration) as every body's kernel; the hybrid's own statistics follow them.
@@ -280,15 +301,22 @@ def link_step(L, A, B, W, C, acc, step, flat, ground):
     raise NotImplementedError("rigid_chain.link_step runs in compiled code, on a registered link element")
 
 
+# The link element's class -> its step, filled by ``register_link``.
+_LINK_STEPS: dict[type, object] = {}
+
+
 def register_link(cls, impl) -> None:
     """Make the plain function ``impl`` (the parameters of ``link_step``) the step of link elements of
-    namedtuple class ``cls``; inlined into ``advance_chain``."""
-    impl = getattr(impl, "py_func", impl)
+    namedtuple class ``cls``; inlined into ``advance_chain``.  Only fills a table read by the one overload
+    of ``link_step`` below, so importing a link element's module while a kernel is being typed cannot
+    change numba's type of ``link_step`` (``legged_chunk.register`` has the failure that avoids)."""
+    _LINK_STEPS[cls] = getattr(impl, "py_func", impl)
 
-    @overload(link_step, inline="always")
-    def _link_step(L, A, B, W, C, acc, step, flat, ground):
-        if isinstance(L, types.BaseNamedTuple) and L.instance_class is cls:
-            return impl
+
+@overload(link_step, inline="always")
+def _link_step(L, A, B, W, C, acc, step, flat, ground):
+    if isinstance(L, types.BaseNamedTuple):
+        return _LINK_STEPS.get(L.instance_class)
 
 
 @njit(cache=True, error_model="numpy")

@@ -22,6 +22,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from .rigid import CORNER_SIGNS
+
 # Kinds of triangle surfaces (the animation colours by kind).
 RIGID_BOX = "rigid-box"                  # a rigid segment box (hybrid, legged mass-spring chain)
 FEM_SURFACE = "fem-surface"              # the boundary of an FEM tet mesh (fem body, hybrid links)
@@ -92,12 +94,11 @@ def orient_outward(vertices: np.ndarray, faces: np.ndarray, inside: np.ndarray) 
 
 
 def _box_faces() -> np.ndarray:
-    # corner k of a box sits at signs (bit 0: +x, bit 1: +y, bit 2: +z), the layout of
+    # corner k of a box sits at ``rigid.CORNER_SIGNS[k]`` (bit 0: +x, bit 1: +y, bit 2: +z), the layout of
     # ``box_corners()`` of the rigid-segment bodies; each quad listed around its face
     quads = np.array([[0, 2, 6, 4], [1, 3, 7, 5], [0, 1, 5, 4], [2, 3, 7, 6], [0, 1, 3, 2], [4, 5, 7, 6]])
     tris = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])
-    signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-    return orient_outward(signs, tris, np.zeros((len(tris), 3)))
+    return orient_outward(CORNER_SIGNS, tris, np.zeros((len(tris), 3)))
 
 
 BOX_FACES = _static(_box_faces())  # (12, 3) outward triangles of one box's 8 corners

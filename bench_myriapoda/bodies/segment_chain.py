@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import InputError
+from ..core.protocols import LEGS, SEGMENTS
 
 DERIVED = -1.0  # the body configs' "derive from the creature" value
 
@@ -149,11 +150,20 @@ class SupportedSegments:
     def _observe_segments(self, obs, t: float):
         """Fill the control fields and ``seg_contact`` (a box corner within the contact distance)."""
         from .friction_kernels import CONTACT_DISTANCE
+        from .rigid import CORNER_SIGNS
         from .segment_frames import groups_touching
         self.sense(obs, t)
         c, R = obs.seg_pos, obs.seg_rot
-        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-        corners = (c[:, None, :] + np.einsum("nij,nkj->nki", R, signs[None] * obs.seg_half[:, None, :])).reshape(-1, 3)
+        corners = (c[:, None, :] + np.einsum("nij,nkj->nki", R, CORNER_SIGNS[None] * obs.seg_half[:, None, :])).reshape(-1, 3)
         obs.seg_contact = np.zeros(len(c), dtype=bool)
         groups_touching(corners, 8, self.terr_kind, self.terr, self.fric[CONTACT_DISTANCE], obs.seg_contact)
         return obs
+
+
+class LeggedSegments(SupportedSegments):
+    """A body whose only actuation is its legs' support of its segments (the legged mass-spring and FEM
+    chains): ``SEGMENTS`` and ``LEGS``, no muscle segments."""
+
+    capabilities = frozenset({SEGMENTS, LEGS})
+    n_muscle_segments = 0
+    muscle_s = np.zeros(0)

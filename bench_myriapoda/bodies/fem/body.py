@@ -19,7 +19,6 @@ undulate.
 """
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass
 from functools import cached_property
@@ -32,6 +31,7 @@ from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
 from ...world.world import world_of
+from ..case_scalars import contact_scalars
 from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
@@ -40,6 +40,7 @@ from ..segment_chain import check_chain_segments
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
+from .element_quality import ElementQuality
 from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volumes, tetrahedralize_surface
 from .system import DT_PAPER, FEMSystem
 
@@ -216,12 +217,8 @@ class BodyFEM(NodeSegments):
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(BK.N_PHYS)
         phys[BK.GRAVITY] = case.scenario.gravity_m_s2
-        phys[BK.DT] = case.dt
         phys[BK.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
-        phys[BK.R_N] = case.collision.r_n
-        phys[BK.R_T] = case.collision.r_t
-        phys[BK.MAX_SPEED] = case.stability.max_speed_m_s
-        phys[BK.MAX_PEN] = case.stability.max_penetration_m
+        contact_scalars(phys, (BK.DT, BK.R_N, BK.R_T, BK.MAX_SPEED, BK.MAX_PEN), case, case.dt)
         self.phys = phys
 
         held = np.zeros(len(nodes), dtype=bool)
@@ -238,11 +235,7 @@ class BodyFEM(NodeSegments):
         self._centers = np.zeros((n_seg, 3))
         self._spine = np.zeros((n_seg, 3))
         self.acc = np.zeros(S.N_ACC)
-        self._J = np.zeros(len(tets))
-        self._sigma = np.zeros((len(tets), 3))
-        self._min_J = math.inf
-        self._inverted_max = 0
-        self._max_strain = 0.0
+        self.quality = ElementQuality(len(tets))
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -276,7 +269,7 @@ class BodyFEM(NodeSegments):
         self.x[:], self.v[:], self.acc[:] = x, v, acc
         self.system._q_ws[:] = q
         self.system.Dm_inv_eff[:], self.system.coef[:] = Dm, coef
-        self._min_J, self._inverted_max, self._max_strain = math.inf, 0, 0.0
+        self.quality.reset()
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -284,11 +277,7 @@ class BodyFEM(NodeSegments):
 
     # ------------------------------------------------------------------ observation
     def _sample_invariants(self) -> None:
-        s = self.system
-        FK.tet_invariants(self.x, s.tets, s.Dm_inv_eff, self._J, self._sigma)
-        self._min_J = min(self._min_J, float(self._J.min()))
-        self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
-        self._max_strain = max(self._max_strain, float(np.abs(self._sigma - 1.0).max()))
+        self.quality.sample(self.x, self.system.tets, self.system.Dm_inv_eff)
 
 
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
@@ -320,8 +309,9 @@ class BodyFEM(NodeSegments):
         return ke, el, pg
 
     def extra_metrics(self) -> dict[str, float]:
-        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max),
-                "max_strain": self._max_strain, "n_tets": float(len(self.system.tets)),
+        q = self.quality
+        return {"min_J": q.min_J, "inverted_elements_max": float(q.inverted_max),
+                "max_strain": q.max_strain, "n_tets": float(len(self.system.tets)),
                 "n_nodes": float(len(self.x))}
 
     def contact_fraction_mean(self) -> float:

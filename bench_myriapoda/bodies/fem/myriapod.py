@@ -11,6 +11,21 @@ makes the whole body weigh ``creature.mass_kg``); link tets are the App. A mater
 ``density_kg_m3``, default 1 kg/m^3).  Each part has the hybrid's cells along x
 (``resolution``), so a link is meshed exactly like the hybrid's link.
 
+What it shares with the rigid segment chain (issue 30 item 4)
+-------------------------------------------------------------
+The hybrid and the legged mass-spring bodies are one chain of rigid boxes with a pluggable link element
+(``rigid_chain``: the boxes' step, corner contacts and friction, the attached link nodes; ``carried_boxes``:
+the legs' support of a box).  This body shares what its segments have in common with theirs: the legged
+body's interface and support sequence (``segment_chain.LeggedSegments``: ``apply_support``, ``sense``, the
+segments' corner contact for the observation), the fused walk's interface (``legged_chunk``), the suite's
+point contact for every node (``contact_kernels.advance_point``, as the chain's free link nodes), the
+placement (``placement.place_points``), the case's contact scalars (``case_scalars``) and the element
+quality metrics (``element_quality``, with the hybrid's links).  It does not share the rigid boxes, by
+design: its segments ARE the deformable mesh's stiff blocks (a rigid box joined to FEM links is the hybrid
+body), so there is no box state (c, q, v, w) to step or carry.  A segment's pose is its nodes' best fit,
+not a state; its support is a penalty on its leg-attachment nodes (below), not a kinematic box; its ground
+contact is per node, not per box corner.  Boxes bolted onto it would make it the hybrid again.
+
 Imposing a supported segment's target pose (paper Sec. 4.1)
 -----------------------------------------------------------
 Choice: stiff penalty springs, integrated implicitly per node, NOT Dirichlet
@@ -51,17 +66,19 @@ import numpy as np
 from numba import njit
 
 from ...world.world import world_of
+from ..case_scalars import contact_scalars
 from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
 from ..legged_chunk import copy_frames, copy_rows, register
-from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
+from ...core.protocols import Actuation, Observation
 from ..placement import place_points
-from ..segment_chain import SupportedSegments
+from ..segment_chain import LeggedSegments
 from ..scene import FEM_BLOCK_SURFACE, FEM_SURFACE, Scene, compact, tet_boundary_faces
 from . import kernels as FK
 from .kernels import elastic_forces_gathered, semi_implicit_velocity
+from .element_quality import ElementQuality
 from .mesh import box_grid, segment_cells, signed_volumes
 from .system import FEMSystem
 
@@ -298,17 +315,13 @@ def _block_chain_step(P):
 register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step)
 
 
-class BodyFEMChain(SupportedSegments):
+class BodyFEMChain(LeggedSegments):
     """The centipede as one FEM mesh (module docstring), with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] (the ``FEMSystem``'s arrays).
     """
 
     name = "fem"
-    capabilities = frozenset({SEGMENTS, LEGS})
-    n_muscle_segments = 0
-    muscle_s = np.zeros(0)
-
     def __init__(self, case, world=None):
         cre = case.creature
         cfg = case.body
@@ -359,11 +372,7 @@ class BodyFEMChain(SupportedSegments):
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(N_PHYS)
-        phys[DT] = case.dt
-        phys[R_N] = case.collision.r_n
-        phys[R_TAN] = case.collision.r_t
-        phys[MAX_SPEED] = case.stability.max_speed_m_s
-        phys[MAX_PEN] = case.stability.max_penetration_m
+        contact_scalars(phys, (DT, R_N, R_TAN, MAX_SPEED, MAX_PEN), case, case.dt)
         phys[K_SUPPORT] = cfg.support_stiffness_n_m
         self.phys = phys
         fem.x[:] = place_points(nodes, case, self.world)
@@ -380,10 +389,7 @@ class BodyFEMChain(SupportedSegments):
         self._cent = np.zeros((n, 3))
         self._spine = np.zeros((n, 3))
         self.acc = np.zeros(S.N_ACC)
-        self._J = np.zeros(len(tets))
-        self._sigma = np.zeros((len(tets), 3))
-        self._min_J = math.inf
-        self._inverted_max = 0
+        self.quality = ElementQuality(len(tets))
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -419,7 +425,7 @@ class BodyFEMChain(SupportedSegments):
         self.advance(0.0, 1)
         self.observe(0.0)
         self._restore(saved)
-        self._min_J, self._inverted_max = math.inf, 0
+        self.quality.reset()
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -490,9 +496,7 @@ class BodyFEMChain(SupportedSegments):
         com = m @ self.x / m.sum()
         head = self.x[self.rest[:, 0] >= -1e-9].mean(axis=0)
         tail = self.x[self.rest[:, 0] <= self.rest[:, 0].min() + 1e-9].mean(axis=0)
-        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
-        self._min_J = min(self._min_J, float(self._J.min()))
-        self._inverted_max = max(self._inverted_max, int(np.count_nonzero(self._J <= 0.0)))
+        self.quality.sample(self.x, self.fem.tets, self.fem.Dm_inv)
         obs = Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
                           energy=np.array(self.energy(t)), nodes=self.x.copy() if with_nodes else None)
         return self._observe_segments(obs, t)
@@ -504,7 +508,7 @@ class BodyFEMChain(SupportedSegments):
         return kinetic, self.fem.elastic_energy(), float(-self.gravity[1] * (m @ self.x[:, 1]))
 
     def extra_metrics(self) -> dict[str, float]:
-        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max)}
+        return {"min_J": self.quality.min_J, "inverted_elements_max": float(self.quality.inverted_max)}
 
     def contact_fraction_mean(self) -> float:
         return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))

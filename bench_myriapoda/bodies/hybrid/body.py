@@ -67,13 +67,11 @@ the rigid boxes and the free FEM nodes (attached nodes are part of the boxes).
 """
 from __future__ import annotations
 
-import math
 from collections import namedtuple
 from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from ...core.errors import InputError
 from ...core.feasibility import tet_mesh_footprint
@@ -82,14 +80,15 @@ from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
 from ...world.world import world_of
 from .. import rigid_kernels as rk
-from ..fem import kernels as FK
+from ..fem.element_quality import ElementQuality
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
-from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..carried_boxes import box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
-from ..placement import initial_transform
+from ..placement import place_box_chain
+from ..rigid_chain import chain_phys
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
 from ..segment_chain import (CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes, check_chain_segments,
@@ -291,7 +290,8 @@ class BodyHybrid(SupportedSegments):
         self.world = world_of(case, world)
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
-        self._place(case, mesh, half)
+        place_box_chain(case, self.world, mesh.nodes, mesh.attached, mesh.rigid_centres, half, self.rigid, self.x,
+                        self.v)
         att_local = mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body]
         self.att_local = np.ascontiguousarray(att_local)  # body frame = the build frame
         self._held = np.zeros(lay.n_rigid, dtype=bool)
@@ -304,20 +304,7 @@ class BodyHybrid(SupportedSegments):
                                             else cfg.rigid_friction_mu),
                                   restitution=cfg.rigid_restitution)
         self.contact = contact
-        phys = np.zeros(K.N_PHYS)
-        phys[K.DT] = self.dt
-        phys[K.R_N] = case.collision.r_n
-        phys[K.R_T] = case.collision.r_t
-        phys[K.MAX_SPEED] = case.stability.max_speed_m_s
-        phys[K.MAX_PEN] = case.stability.max_penetration_m
-        phys[K.RIGID_MU] = contact.friction
-        phys[K.RIGID_RESTITUTION] = contact.restitution
-        phys[K.BOUNCE_THRESHOLD] = contact.bounce_threshold
-        phys[K.VEL_ITERATIONS] = contact.velocity_iterations
-        phys[K.VEL_TOLERANCE] = contact.velocity_tolerance
-        phys[K.POS_ITERATIONS] = contact.position_iterations
-        phys[K.POS_BETA] = contact.position_beta
-        phys[K.SLOP] = contact.slop
+        phys = chain_phys(case, self.dt, contact)
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
         # Miller's volume conservation (gait.volume_conserving) thickens a shortening section.  Here the
@@ -334,36 +321,10 @@ class BodyHybrid(SupportedSegments):
         self._b_work = np.zeros((len(self.free), 3))
         self.scratch = CouplingScratch.new(n_fixed, n_rigid, rk.N_CORNERS)
         self.acc = np.zeros(K.N_ACC)
-        self._J = np.zeros(fem.n_tets)
-        self._sigma = np.zeros((fem.n_tets, 3))
-        self._reset_samples()
+        self.quality = ElementQuality(fem.n_tets)
         self.sync_attached()
 
-    # ------------------------------------------------------------------ set-up
-    def _place(self, case, mesh, half) -> None:
-        """Move the build into the world with the suite's placement rule (``bodies.placement``).
-
-        Slope: along the incline, head uphill; suspended: turned to hang along -y
-        from the head; then moved to start_x_m and lifted so that the lowest point
-        (FEM node or box corner) is start_height_m above the surface.  The
-        scenario's random perturbation moves the free nodes only (the attached
-        ones stay on their boxes).
-        """
-        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-        corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
-        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case, self.world)
-        q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)  # scipy (x, y, z, w) -> (w, x, y, z)
-        x = mesh.nodes @ R0.T + t
-        sc = case.scenario
-        if sc.perturbation_m > 0:
-            free = ~mesh.attached
-            x[free] += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=(free.sum(), 3))
-        self.fem.x[:] = x
-        self.fem.v[:] = 0.0
-        c = mesh.rigid_centres @ R0.T + t
-        for i in range(self.layout.n_rigid):
-            self.rigid.set_pose(i, c=c[i], q=q0, v=np.zeros(3), w=np.zeros(3))
-
+    # ------------------------------------------------------------------ state
     @property
     def x(self) -> np.ndarray:
         return self.fem.x
@@ -438,9 +399,9 @@ class BodyHybrid(SupportedSegments):
         self.set_support(np.zeros(self.n_segments, bool), *self.segment_poses(), self.dt)
         self.energy(0.0)
         self.momenta()
-        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
+        self.tet_quality()
         self._restore(saved)
-        self._reset_samples()
+        self.quality.reset()
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -453,10 +414,7 @@ class BodyHybrid(SupportedSegments):
 
     def box_corners(self) -> np.ndarray:
         """(n_rigid * 8, 3) [m] box corners, corner k of a box at signs (bit 0: +x, bit 1: +y, bit 2: +z)."""
-        rb = self.rigid
-        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-        local = signs[None, :, :] * rb.half_extents[:, None, :]
-        return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", self.rotation_matrices(), local)).reshape(-1, 3)
+        return self.rigid.corners()
 
     @cached_property
     def _link_surface(self) -> tuple[np.ndarray, np.ndarray]:
@@ -503,11 +461,7 @@ class BodyHybrid(SupportedSegments):
 
     def segment_centers(self) -> np.ndarray:
         """(2 n_rigid - 1, 3) [m]: rigid 0, link 0, rigid 1, ..., rigid n-1 (box centres, link node means)."""
-        n = self.layout.n_rigid
-        out = np.empty((2 * n - 1, 3))
-        out[0::2] = self.rigid.c
-        out[1::2] = self.x[self.mesh.link_nodes].mean(axis=1)
-        return out
+        return box_chain_centers(self.rigid.c, self.x, self.mesh.link_nodes)
 
     def centre_of_mass(self) -> np.ndarray:
         """(3,) [m] of the boxes and the free nodes (the attached nodes' mass is in the boxes)."""
@@ -522,7 +476,7 @@ class BodyHybrid(SupportedSegments):
         head = rb.c[0] + R[0][:, 0] * half_len
         tail = rb.c[-1] - R[-1][:, 0] * half_len
         com = self.centre_of_mass()
-        self._sample_tets()
+        self.quality.sample(self.x, self.fem.tets, self.fem.Dm_inv)
         nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
         obs = Observation(t=t, segment_centers=self.segment_centers(), com=com, head=head, tail=tail,
                           energy=np.array(self.energy(t)), nodes=nodes)
@@ -555,28 +509,12 @@ class BodyHybrid(SupportedSegments):
         return out[:3].copy(), out[3:].copy()
 
     # ------------------------------------------------------------------ metrics
-    def _reset_samples(self) -> None:
-        self._min_J = math.inf
-        self._inverted_max = 0
-        self._inverted_last = 0
-        self._max_strain = 0.0
-
     def tet_quality(self) -> tuple[float, int, float]:
         """(min J, count of tets with J <= 0, max principal strain max |sigma_i - 1|) of the current state.
 
         One SVD per tet (``fem.kernels.tet_invariants``), F from the rest shape.
         """
-        FK.tet_invariants(self.x, self.fem.tets, self.fem.Dm_inv, self._J, self._sigma)
-        return (float(self._J.min()), int(np.count_nonzero(self._J <= 0.0)),
-                float(np.abs(self._sigma - 1.0).max()))
-
-    def _sample_tets(self) -> None:
-        """Fold this sample's tet quality into the extrema reported by ``extra_metrics``."""
-        min_J, inverted, strain = self.tet_quality()
-        self._min_J = min(self._min_J, min_J)
-        self._inverted_last = inverted
-        self._inverted_max = max(self._inverted_max, inverted)
-        self._max_strain = max(self._max_strain, strain)
+        return self.quality.current(self.x, self.fem.tets, self.fem.Dm_inv)
 
     def coupling_residual(self) -> tuple[float, float]:
         """(max, mean) [m] over all steps and attached nodes of |x_p + dt v_p - x_p(rigid, n+1)|."""
@@ -587,8 +525,9 @@ class BodyHybrid(SupportedSegments):
     def extra_metrics(self) -> dict[str, float]:
         """Tet quality over the observation samples and the coupling residual over all steps."""
         res_max, res_mean = self.coupling_residual()
-        return {"min_J": self._min_J, "inverted_elements_max": float(self._inverted_max),
-                "inverted_elements_final": float(self._inverted_last), "max_strain": self._max_strain,
+        q = self.quality
+        return {"min_J": q.min_J, "inverted_elements_max": float(q.inverted_max),
+                "inverted_elements_final": float(q.inverted_last), "max_strain": q.max_strain,
                 "coupling_residual_max_m": res_max, "coupling_residual_mean_m": res_mean}
 
     def contact_fraction_mean(self) -> float:

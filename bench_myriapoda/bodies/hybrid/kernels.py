@@ -203,6 +203,19 @@ def advance(links, att, boxes, world, coupling, acc, n_steps):
                          n_steps)
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _add_point_momentum(out, m, v, x, i, ox, oy, oz):
+    """out[0:3] += m v[i] [kg m/s], out[3:6] += (x[i] - o) x m v[i] [kg m^2/s] (``momenta``)."""
+    px, py, pz = m * v[i, 0], m * v[i, 1], m * v[i, 2]
+    rx, ry, rz = x[i, 0] - ox, x[i, 1] - oy, x[i, 2] - oz
+    out[0] += px
+    out[1] += py
+    out[2] += pz
+    out[3] += ry * pz - rz * py
+    out[4] += rz * px - rx * pz
+    out[5] += rx * py - ry * px
+
+
 @njit(cache=True, error_model="numpy")
 def momenta(x, v, mass, free, c, vr, w, rmass, inertia_body, Rb, origin, out):
     """Linear and angular momentum of the simulated masses (rigid boxes and free nodes).
@@ -219,25 +232,9 @@ def momenta(x, v, mass, free, c, vr, w, rmass, inertia_body, Rb, origin, out):
     ox, oy, oz = origin[0], origin[1], origin[2]
     for k in range(free.shape[0]):
         i = free[k]
-        m = mass[i]
-        px, py, pz = m * v[i, 0], m * v[i, 1], m * v[i, 2]
-        rx, ry, rz = x[i, 0] - ox, x[i, 1] - oy, x[i, 2] - oz
-        out[0] += px
-        out[1] += py
-        out[2] += pz
-        out[3] += ry * pz - rz * py
-        out[4] += rz * px - rx * pz
-        out[5] += rx * py - ry * px
+        _add_point_momentum(out, mass[i], v, x, i, ox, oy, oz)
     for i in range(c.shape[0]):
-        m = rmass[i]
-        px, py, pz = m * vr[i, 0], m * vr[i, 1], m * vr[i, 2]
-        rx, ry, rz = c[i, 0] - ox, c[i, 1] - oy, c[i, 2] - oz
-        out[0] += px
-        out[1] += py
-        out[2] += pz
-        out[3] += ry * pz - rz * py
-        out[4] += rz * px - rx * pz
-        out[5] += rx * py - ry * px
+        _add_point_momentum(out, rmass[i], vr, c, i, ox, oy, oz)
         # spin: R I_body R^T w
         b0 = Rb[i, 0, 0] * w[i, 0] + Rb[i, 1, 0] * w[i, 1] + Rb[i, 2, 0] * w[i, 2]
         b1 = Rb[i, 0, 1] * w[i, 0] + Rb[i, 1, 1] * w[i, 1] + Rb[i, 2, 1] * w[i, 2]

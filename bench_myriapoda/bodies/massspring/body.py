@@ -21,6 +21,7 @@ from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
 from ...world.world import world_of
+from ..case_scalars import contact_scalars
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
@@ -121,12 +122,8 @@ class BodyMassSpring(NodeSegments):
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
         phys[K.GRAVITY] = case.scenario.gravity_m_s2
-        phys[K.DT] = case.dt
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
-        phys[K.R_N] = case.collision.r_n
-        phys[K.R_T] = case.collision.r_t
-        phys[K.MAX_SPEED] = case.stability.max_speed_m_s
-        phys[K.MAX_PEN] = case.stability.max_penetration_m
+        contact_scalars(phys, (K.DT, K.R_N, K.R_T, K.MAX_SPEED, K.MAX_PEN), case, case.dt)
         phys[K.INTEGRATOR] = K.EULER if cfg.integrator == "euler" else K.SYMPLECTIC
         self.phys = phys
         self.x = place_points(lat.rest_nodes, case, self.world)

@@ -44,24 +44,21 @@ from functools import cached_property
 
 import numpy as np
 from numba import njit
-from scipy.spatial.transform import Rotation
 
 from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
-from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, BOUNCE_THRESHOLD, DT, MAX_PEN, MAX_SPEED, N_ACC,
-                           N_PHYS, POS_BETA, POS_ITERATIONS, R_N, R_T, RIGID_MU, RIGID_RESTITUTION, SLOP, VEL_ITERATIONS,
-                           VEL_TOLERANCE, Attachment, Boxes, Coupling, World, advance_chain, chain_scalars, link_spines, place_attached_nodes,
-                           register_link)
-from ..carried_boxes import box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, Attachment, Boxes, Coupling, World,
+                           advance_chain, chain_phys, chain_scalars, link_spines, place_attached_nodes, register_link)
+from ..carried_boxes import box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
-from ...core.protocols import LEGS, SEGMENTS, Actuation, Observation
-from ..placement import initial_transform
+from ...core.protocols import Actuation, Observation
+from ..placement import place_box_chain
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
-from ..segment_chain import CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes
+from ..segment_chain import CouplingScratch, LeggedSegments, SegmentChainLayout, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
 from .kernels import spring_forces
@@ -195,7 +192,7 @@ def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
                          acc, n_steps)
 
 
-class BodyRigidSpringChain(SupportedSegments):
+class BodyRigidSpringChain(LeggedSegments):
     """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] of the link nodes (attached
@@ -203,10 +200,6 @@ class BodyRigidSpringChain(SupportedSegments):
     """
 
     name = "massspring"
-    capabilities = frozenset({SEGMENTS, LEGS})
-    n_muscle_segments = 0
-    muscle_s = np.zeros(0)
-
     def __init__(self, case, world=None):
         cre = case.creature
         cfg = case.body
@@ -242,7 +235,8 @@ class BodyRigidSpringChain(SupportedSegments):
         self.fric_model, self.fric = friction_params(case.friction)
         self.x = np.zeros_like(mesh.nodes)
         self.v = np.zeros_like(mesh.nodes)
-        self._place(case, mesh, half)
+        place_box_chain(case, self.world, mesh.nodes, mesh.attached, mesh.rigid_centres, half, self.rigid, self.x,
+                        self.v)
         self.att_local = np.ascontiguousarray(mesh.nodes[self.fixed] - mesh.rigid_centres[self.att_body])
         self._held = np.zeros(lay.n_rigid, dtype=np.bool_)
         if sc.suspended:
@@ -251,43 +245,12 @@ class BodyRigidSpringChain(SupportedSegments):
 
         mu = case.friction.mu_transverse if cfg.rigid_friction_mu < 0.0 else cfg.rigid_friction_mu
         self.contact = contact = ContactSettings(friction=mu, restitution=0.0)
-        phys = np.zeros(N_PHYS)
-        phys[DT] = self.dt
-        phys[R_N] = case.collision.r_n
-        phys[R_T] = case.collision.r_t
-        phys[MAX_SPEED] = case.stability.max_speed_m_s
-        phys[MAX_PEN] = case.stability.max_penetration_m
-        phys[RIGID_MU] = contact.friction
-        phys[RIGID_RESTITUTION] = contact.restitution
-        phys[BOUNCE_THRESHOLD] = contact.bounce_threshold
-        phys[VEL_ITERATIONS] = contact.velocity_iterations
-        phys[VEL_TOLERANCE] = contact.velocity_tolerance
-        phys[POS_ITERATIONS] = contact.position_iterations
-        phys[POS_BETA] = contact.position_beta
-        phys[SLOP] = contact.slop
-        self.phys = phys
+        self.phys = chain_phys(case, self.dt, contact)
         n_nodes, n_fixed, n_rigid = len(self.x), len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
         self.scratch = CouplingScratch.new(n_fixed, n_rigid, rk.N_CORNERS)
         self.acc = np.zeros(N_ACC)
         self.sync_attached()
-
-    def _place(self, case, mesh, half) -> None:
-        """The suite's placement rule (``bodies.placement``) applied to the nodes and box corners."""
-        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-        corners = (mesh.rigid_centres[:, None, :] + signs * half).reshape(-1, 3)
-        R0, t = initial_transform(np.vstack([mesh.nodes, corners]), case, self.world)
-        q0 = np.roll(Rotation.from_matrix(R0).as_quat(), 1)
-        x = mesh.nodes @ R0.T + t
-        sc = case.scenario
-        if sc.perturbation_m > 0:
-            free = ~mesh.attached
-            x[free] += np.random.default_rng(case.seed).normal(scale=sc.perturbation_m, size=(free.sum(), 3))
-        self.x[:] = x
-        self.v[:] = 0.0
-        c = mesh.rigid_centres @ R0.T + t
-        for i in range(self.layout.n_rigid):
-            self.rigid.set_pose(i, c=c[i], q=q0, v=np.zeros(3), w=np.zeros(3))
 
     def sync_attached(self) -> None:
         """Put the attached nodes on the boxes' current state."""
@@ -360,11 +323,8 @@ class BodyRigidSpringChain(SupportedSegments):
 
     # ------------------------------------------------------------------ observation
     def box_corners(self) -> np.ndarray:
-        """(n_rigid * 8, 3) [m] box corners."""
-        rb = self.rigid
-        signs = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
-        local = signs[None, :, :] * rb.half_extents[:, None, :]
-        return (rb.c[:, None, :] + np.einsum("nij,nkj->nki", rb.rotation_matrices(), local)).reshape(-1, 3)
+        """(n_rigid * 8, 3) [m] box corners (``rigid.RigidBoxes.corners``)."""
+        return self.rigid.corners()
 
     @cached_property
     def _link_faces(self) -> np.ndarray:
@@ -383,11 +343,7 @@ class BodyRigidSpringChain(SupportedSegments):
 
     def segment_centers(self) -> np.ndarray:
         """(2 n_rigid - 1, 3) [m]: rigid 0, link 0, rigid 1, ... (box centres, link node means)."""
-        n = self.layout.n_rigid
-        out = np.empty((2 * n - 1, 3))
-        out[0::2] = self.rigid.c
-        out[1::2] = self.x[self.mesh.link_nodes].mean(axis=1)
-        return out
+        return box_chain_centers(self.rigid.c, self.x, self.mesh.link_nodes)
 
     def centre_of_mass(self) -> np.ndarray:
         rb = self.rigid
