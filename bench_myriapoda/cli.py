@@ -359,12 +359,12 @@ def cmd_run(args) -> int:
     case = _resolve(args)
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
-    _check_case_fits(case, args, _case_source(args),
-                     keep_nodes=bool(args.record or args.animate or args.export_frames))
+    world = _check_case_fits(case, args, _case_source(args),
+                             keep_nodes=bool(args.record or args.animate or args.export_frames))
     frames, anim_stride = _frame_recorder(args, case)
     bar = ProgressBar(enabled=not args.json and sys.stderr.isatty(), label=f"{case.creature.name}/{case.body.name}",
                       total_s=case.duration, dt=case.dt)
-    result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames)
+    result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames, world=world)
     bar.close()
     unstored = None  # from here on a failed write keeps the result (stored elsewhere, printed) and says so
     run_id = None
@@ -386,7 +386,7 @@ def cmd_run(args) -> int:
         if len(t):
             plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
                               title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
-    written = _write_frame_outputs(args, case, frames, anim_stride)
+    written = _write_frame_outputs(args, case, frames, anim_stride, world)
     if args.json:
         print(json.dumps(result.to_json_dict()))
     else:
@@ -459,8 +459,9 @@ def _frame_recorder(args, case):
     return FrameRecorder(anim_stride), 1
 
 
-def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
-    """Write the animation and the exported frames of what was recorded (up to a blow-up, if any).
+def _write_frame_outputs(args, case, frames, anim_stride: int, world) -> bool:
+    """Write the animation and the exported frames of what was recorded (up to a blow-up, if any), over the
+    run's ``world`` (``world.world.World``, the one the placement check built).
 
     Returns False (after one line on stderr) when a file could not be written; nothing half-written
     is left (both writers write to a temporary name and rename at the end).
@@ -476,9 +477,7 @@ def _write_frame_outputs(args, case, frames, anim_stride: int) -> bool:
     try:
         if args.animate:
             from .report.animate import parse_size, write_animation
-            from .world.terrain import terrain_from_scenario
-
-            terrain = None if case.scenario.terrain == "none" else terrain_from_scenario(case.scenario)
+            terrain = None if world.terrain_none else world.terrain
             title = f"{case.creature.name} / {case.body.name} / {case.gait.name} / {case.scenario.name}"
             water = frames.water()
             if water is not None:
@@ -517,14 +516,14 @@ def cmd_stable_dt(args) -> int:
         from .harness.store import DEFAULT_STORE, check_store
         check_store(args.store or DEFAULT_STORE, "--store")
     case = _resolve(args)
-    _check_case_fits(case, args, _case_source(args))
+    world = _check_case_fits(case, args, _case_source(args))
     show = not args.json and sys.stdout.isatty()
 
     def progress(dt, status):
         if show:
             print(f"  dt = {dt:.4g} s: {status}", file=sys.stderr)
 
-    res = find_stable_dt(case, rel_tol=args.rel_tol, max_runs=args.max_runs, progress=progress)
+    res = find_stable_dt(case, rel_tol=args.rel_tol, max_runs=args.max_runs, progress=progress, world=world)
     metrics = {"stable_dt_max_s": res.stable_dt_max_s, "unstable_dt_min_s": res.unstable_dt_min_s,
                "stable_dt_runs": float(len(res.trials))}
     result = RunResult(case, "error" if res.error else "ok", metrics,
@@ -875,9 +874,10 @@ def _case_source(args) -> str:
     return f"{args.creature}/{args.body}/{args.scenario}"
 
 
-def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildable: bool = True) -> None:
+def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildable: bool = True):
     """(Unless --force) the case fits the resource budget and (``buildable``) its body can be built
-    (core/feasibility.py)."""
+    (core/feasibility.py) and its world too: returns that world (``world.world.World``, built once by
+    ``world.buildable.check_placements``; the caller runs the case in it), None when not ``buildable``."""
     from .core.feasibility import check_budget, check_buildable
     from .world.buildable import check_placements
 
@@ -893,9 +893,10 @@ def _check_case_fits(case, args, source: str, keep_nodes: bool = False, buildabl
     elif not math.isfinite(case.duration / case.dt) or case.duration / case.dt > 2 ** 62:
         raise InputError(source, None, f"duration {case.duration:g} s / dt {case.dt:g} s: too many steps to count, "
                                        "even with --force")
-    if buildable:
-        check_buildable(case, source)
-        check_placements(case, source)
+    if not buildable:
+        return None
+    check_buildable(case, source)
+    return check_placements(case, source)
 
 
 def _check_matrix_flags(args) -> None:

@@ -11,9 +11,8 @@ import os
 import tempfile
 from pathlib import Path
 
-import matplotlib.pyplot as plt
-
 import bench_myriapoda as bm
+from bench_myriapoda.report.figure_files import show_png
 from bench_myriapoda.report.gait_diagram import plot_gait_diagram
 
 SCALE = float(os.environ.get("BENCH_MYRIAPODA_EXAMPLE_SCALE", "1"))
@@ -25,10 +24,4 @@ print("wave:", r.labels.get("wave_direction"), " phase lag:", r.metrics.get("pha
 t, states, _tips = r.raw.extra["leg_timeline"]       # (T,) [s], (T, n_legs) state codes, (T, n_legs, 3) [m]
 png = plot_gait_diagram(t, states, Path(tempfile.mkdtemp()) / "gait.png", last_seconds=1.0,
                         title=f"centipede / hybrid / walk: {r.labels.get('wave_direction', '')} wave")
-# show the PNG (each gallery script stands alone, so these lines recur in them: deliberate)
-image = plt.imread(png)
-fig, ax = plt.subplots(figsize=(image.shape[1] / 100, image.shape[0] / 100), dpi=100)
-ax.imshow(image)
-ax.axis("off")
-fig.tight_layout(pad=0)
-plt.show()
+show_png(png)

@@ -13,11 +13,10 @@ import os
 import tempfile
 from pathlib import Path
 
-import matplotlib.pyplot as plt
-
 from bench_myriapoda.harness import regress as R
 from bench_myriapoda.harness.machine import machine_fingerprint
 from bench_myriapoda.harness.store import record_regress_run
+from bench_myriapoda.report.figure_files import show_png
 from bench_myriapoda.report.regress_history import plot_regress_history
 
 SCALE = float(os.environ.get("BENCH_MYRIAPODA_EXAMPLE_SCALE", "1"))
@@ -37,10 +36,4 @@ for line in R.format_table(R.compare(second, baseline)):
 
 png = plot_regress_history(R.load_history(store), Path(tempfile.mkdtemp()) / "history.png",
                            title="normalized throughput, two runs")
-# show the PNG (each gallery script stands alone, so these lines recur in them: deliberate)
-image = plt.imread(png)
-fig, ax = plt.subplots(figsize=(image.shape[1] / 100, image.shape[0] / 100), dpi=100)
-ax.imshow(image)
-ax.axis("off")
-fig.tight_layout(pad=0)
-plt.show()
+show_png(png)

@@ -107,25 +107,26 @@ def test_record_writes_an_npz_with_the_series(capsys, tmp_path):
         assert json.loads(str(z["case_json"]))["creature"]["name"] == "worm"
 
 
-# A table of bad command lines, one row each: rows alike by design (``duplicates`` pairs them; deliberate).
-BAD_INPUTS = [
+# Bad command lines: (argv, what the message names, what it says is allowed).  Unknown names and combinations:
+BAD_NAMES = [
     (["run", "--creature", "dragon", "--body", "massspring", "--scenario", "flat"], "--creature", "worm"),
     (["run", "--creature", "worm", "--body", "jelly", "--scenario", "flat"], "--body", "massspring"),
     (["run", "--creature", "worm", "--body", "massspring", "--scenario", "moon"], "--scenario", "flat"),
     (["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--gait", "hop"], "--gait", "rectilinear"),
     (["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--gait", "sidewinding"],
      "--gait", "unsupported combination"),
-    (RUN + ["--set", "friction.mu_sideways=0.2"], "friction.mu_sideways", "mu_transverse"),
-    (RUN + ["--set", "planet.gravity=1"], "planet.gravity", "friction"),
-    (RUN + ["--set", "friction.mu_forward=abc"], "friction.mu_forward", "expected a number"),
-    (RUN + ["--set", "creature.segments=2.5"], "creature.segments", "expected an integer"),
-    (RUN + ["--set", "creature.segments=0"], "creature.segments", ">= 1"),
-    (RUN + ["--set", "body.stiffness=-1"], "body.stiffness", ">= 0"),
+]
+# bad ``--set KEY=VALUE`` overrides of RUN: (the override, the key named, what is allowed)
+BAD_SETS = [("friction.mu_sideways=0.2", "friction.mu_sideways", "mu_transverse"),
+            ("planet.gravity=1", "planet.gravity", "friction"),
+            ("friction.mu_forward=abc", "friction.mu_forward", "expected a number"),
+            ("creature.segments=2.5", "creature.segments", "expected an integer"),
+            ("creature.segments=0", "creature.segments", ">= 1"), ("body.stiffness=-1", "body.stiffness", ">= 0"),
+            ("friction.model=ice", "friction.model", "miller, coulomb, stick"),
+            ("creature.name=snake", "creature.name", "--creature"), ("noequals", "--set", "KEY=VALUE")]
+BAD_INPUTS = BAD_NAMES + [(RUN + ["--set", kv], key, allowed) for kv, key, allowed in BAD_SETS] + [
     (RUN + ["--dt", "0"], "--dt", "> 0.0"),
     (RUN + ["--dt", "-0.001"], "--dt", "> 0.0"),
-    (RUN + ["--set", "friction.model=ice"], "friction.model", "miller, coulomb, stick"),
-    (RUN + ["--set", "creature.name=snake"], "creature.name", "--creature"),
-    (RUN + ["--set", "noequals"], "--set", "KEY=VALUE"),
     (RUN + ["--record", "out.txt"], "--record", ".npz"),
     (["run", "--creature", "worm"], "bench-myriapoda", "required"),
     (["frobnicate"], "bench-myriapoda", "invalid choice"),

@@ -125,7 +125,7 @@ def advance_chain(x, v, inv_mass, rest, muscle, phys, fric_model, fric, terr_kin
     return n_steps, S.OK
 
 
-class BodyPointChain:
+class BodyPointChain(S.AccumulatedContact):  # contact_fraction_mean, max_penetration
     """The chain of ``segments + 1`` point masses (module docstring); ``x``, ``v`` (n, 3) [m], [m/s]."""
 
     name = NAME
@@ -215,12 +215,6 @@ class BodyPointChain:
 
     def extra_metrics(self) -> dict[str, float]:
         return {}
-
-    def contact_fraction_mean(self) -> float:
-        return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))
-
-    def max_penetration(self) -> float:
-        return float(self.acc[S.ACC_MAX_PEN])
 
     def scene(self) -> Scene:
         return Scene(springs=np.stack([self.x[:-1], self.x[1:]], axis=1))

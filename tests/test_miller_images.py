@@ -32,50 +32,24 @@ def check(key: str, fn, body: str = BODY) -> MI.ImageCheck:
     return c
 
 
-# One test per Miller image, named after it: the two-line tests are alike by design (``duplicates`` pairs them;
-# deliberate), so that a failure names the image.
-def test_image_1a_worm_nose_slides_forward_on_impact():
-    check("worm-book", MI.worm_nose_slides_forward)
+# Miller's images, run by run: (image, the check of what it shows).  One test each, its id naming the image
+# and the check, so that a failure names the image.
+IMAGES = {
+    "worm-book": [("1a", MI.worm_nose_slides_forward), ("1b", MI.worm_mostly_in_contact),
+                  ("1c", MI.worm_front_bends_over_edge), ("1d", MI.worm_slides_off_edge)],
+    "snake-undulation": [("2b", MI.snake_head_fixed_while_coils_form), ("2d", MI.snake_segments_follow_one_path)],
+    "sidewinder": [("3a", MI.sidewinder_contact_localised), ("3d", MI.sidewinder_travels_diagonally),
+                   ("3", MI.sidewinder_does_not_roll)],
+    "caterpillar-arch": [("4b", MI.caterpillar_arches)],
+    "caterpillar-up": [("4", MI.caterpillar_on_steep_slope)],
+}
+IMAGE_CHECKS = [(key, fn) for key, rows in IMAGES.items() for _, fn in rows]
 
 
-def test_image_1b_worm_mostly_in_contact_after_landing():
-    check("worm-book", MI.worm_mostly_in_contact)
-
-
-def test_image_1c_worm_front_bends_down_over_the_edge():
-    check("worm-book", MI.worm_front_bends_over_edge)
-
-
-def test_image_1d_worm_slides_off_the_edge():
-    check("worm-book", MI.worm_slides_off_edge)
-
-
-def test_image_2b_snake_head_fixed_while_coils_form():
-    check("snake-undulation", MI.snake_head_fixed_while_coils_form)
-
-
-def test_image_2d_snake_segments_follow_one_path():
-    check("snake-undulation", MI.snake_segments_follow_one_path)
-
-
-def test_image_3a_sidewinder_contact_is_localised():
-    check("sidewinder", MI.sidewinder_contact_localised)
-
-
-def test_image_3d_sidewinder_travels_diagonally():
-    check("sidewinder", MI.sidewinder_travels_diagonally)
-
-
-def test_image_3_sidewinder_does_not_roll():
-    check("sidewinder", MI.sidewinder_does_not_roll)
-
-
-def test_image_4b_caterpillar_arches_its_back():
-    check("caterpillar-arch", MI.caterpillar_arches)
-
-
-def test_image_4_caterpillar_climbs_a_steep_slope():
-    check("caterpillar-up", MI.caterpillar_on_steep_slope)
+@pytest.mark.parametrize("key,fn", IMAGE_CHECKS,
+                         ids=[f"{image}-{key}-{fn.__name__}" for key, rows in IMAGES.items() for image, fn in rows])
+def test_image(key, fn):
+    check(key, fn)
 
 
 @pytest.mark.parametrize("body", ["massspring", "fem"])

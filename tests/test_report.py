@@ -19,37 +19,18 @@ from bench_myriapoda.report.baseline import compare_runs
 from bench_myriapoda.report.build import SECTIONS
 from bench_myriapoda.report.matrix_data import MatrixResults
 from bench_myriapoda.report.sweeps import fit_exponent
-from matrix_toml import WORM_ON_A_CLIFF
+from matrix_toml import WORM_ON_A_CLIFF, block, toml_table
 
 
-# (TOML data: matrix blocks are alike by design; ``duplicates`` pairs them with other test matrices)
-MATRIX = """
-[matrix]
-name = "report-test"
-description = "a small matrix that fills every section of the report"
-seeds = [0]
-""" + WORM_ON_A_CLIFF + """
-[[block]]
-creatures = ["centipede"]
-bodies = ["hybrid"]
-scenarios = ["walk"]
-duration = 1.2
-
-[[block]]
-creatures = ["worm"]
-bodies = ["massspring"]
-scenarios = ["flat"]
-duration = 0.3
-grid = { "dt" = [0.002, 0.03], "body.stiffness" = [1.5, 6.0] }
-
-[[block]]
-creatures = ["snake"]
-bodies = ["massspring"]
-gaits = ["lateral-undulation"]
-scenarios = ["flat"]
-duration = 0.1
-grid = { "creature.segments" = [6, 12, 24] }
-"""
+# a small matrix that fills every section of the report
+MATRIX = (toml_table("matrix", name="report-test", description="a small matrix that fills every section of the report",
+                     seeds=[0])
+          + WORM_ON_A_CLIFF
+          + block(creatures=["centipede"], bodies=["hybrid"], scenarios=["walk"], duration=1.2)
+          + block(creatures=["worm"], bodies=["massspring"], scenarios=["flat"], duration=0.3,
+                  grid={"dt": [0.002, 0.03], "body.stiffness": [1.5, 6.0]})
+          + block(creatures=["snake"], bodies=["massspring"], gaits=["lateral-undulation"], scenarios=["flat"],
+                  duration=0.1, grid={"creature.segments": [6, 12, 24]}))
 
 
 class _Refs(HTMLParser):

@@ -289,12 +289,12 @@ def reference_step(states, angles, airborne, touching, ik_failed, p, dt):
     entered = [False] * n
     for k in range(n):
         if states[k] == STANCE and ik_failed[k]:
-            states[k] = SF1
-        if states[k] != STANCE:
-            if not touching[k]:
-                airborne[k] = True
-            elif airborne[k]:
-                states[k], entered[k], airborne[k] = STANCE, True, False
+            states[k] = SF1  # rule 3: a stance leg whose IK failed lifts off
+        swinging = states[k] != STANCE
+        # rule 2: a swinging leg touches down once it has been airborne; off the ground it is airborne
+        entered[k] = bool(swinging and touching[k] and airborne[k])
+        airborne[k] = bool((airborne[k] or not touching[k]) and not entered[k]) if swinging else airborne[k]
+        states[k] = STANCE if entered[k] else states[k]
     for k in range(n):
         if entered[k]:
             continue

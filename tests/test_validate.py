@@ -12,7 +12,7 @@ from bench_myriapoda.validation import analytic, references
 from bench_myriapoda.validation.core import FAIL, INFO, NA, PASS, Context
 from bench_myriapoda.validation.registry import CHECKS
 from bench_myriapoda.validation.run import run_checks, select
-from matrix_toml import WORM_ON_A_CLIFF
+from matrix_toml import WORM_ON_A_CLIFF, block, toml_table
 
 # Checks whose measured verdict is FAIL today, with the reason; the test expects the failure (strict:
 # when the physics is fixed the test says so).  Everything else must PASS (or be INFO, or NOT
@@ -160,26 +160,12 @@ def test_work_precision_plots_have_one_curve_per_body_and_error_falls_with_dt(wo
     assert {p["resolution"] for p in curves[2]["resolution_points"]} == {4}     # hybrid: >= 3 nodes
 
 
-# (TOML data: matrix blocks are alike by design; ``duplicates`` pairs them with other test matrices)
-REPORT_MATRIX = """
-[matrix]
-name = "validation-report-test"
-seeds = [0]
-""" + WORM_ON_A_CLIFF + """
-[[block]]
-creatures = ["snake"]
-bodies = ["massspring"]
-gaits = ["lateral-undulation"]
-scenarios = ["flat"]
-duration = 1.0
-
-[[block]]
-creatures = ["centipede"]
-bodies = ["hybrid"]
-scenarios = ["walk", "hang"]
-duration = 1.2
-set = { "creature.segments" = 6 }
-"""
+REPORT_MATRIX = (toml_table("matrix", name="validation-report-test", seeds=[0])
+                 + WORM_ON_A_CLIFF
+                 + block(creatures=["snake"], bodies=["massspring"], gaits=["lateral-undulation"], scenarios=["flat"],
+                         duration=1.0)
+                 + block(creatures=["centipede"], bodies=["hybrid"], scenarios=["walk", "hang"], duration=1.2,
+                         set_={"creature.segments": 6}))
 
 
 def test_report_has_a_validation_section_and_a_verdict_next_to_every_paper_figure(tmp_path, work_precision, capsys):

@@ -1,7 +1,9 @@
 """The runner builds a run's world once (issue 30 item 1).
 
 The terrain (obstacles included), the food sources and the water's bed are built from the scenario in one
-place, ``world.world.build_world``, and handed to the body, the controller and the metrics.  Every way of
+place, ``world.world.build_world``, and handed to the body, the controller and the metrics; outside a run
+too, the CLI's placement check, its animation and the report's plots of a case each build the case's world
+once (the tests below the line).  Every way of
 building a terrain from a scenario goes through ``world.terrain._base_terrain``, and every way of placing food
 through ``world.food.food_sources``: counted across ``run_case`` for a legless creature among obstacles, a
 legged one with food, and a legged one in water with food, each must run exactly once.  The world's terrain
@@ -90,3 +92,73 @@ def test_a_world_is_frozen():
         world.terr = np.zeros(3)
     kind, f = world.terrain
     assert kind == world.terr_kind and f is world.terr and world.has_water is False
+
+
+# --------------------------------------------------------------------------- outside a run: one build per case
+
+def test_the_cli_run_with_its_animation_builds_the_world_once(monkeypatch, tmp_path, capsys):
+    """``run --animate``: the pre-run placement check builds the world, the run and the animation use it."""
+    from bench_myriapoda.cli import main
+
+    builds = Builds(monkeypatch)
+    gif = tmp_path / "worm.gif"
+    argv = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "fig13-cylinders", "--gait",
+            "rectilinear", "--duration", "0.1", "--no-store", "--animate", str(gif)]
+    for kv in CYLINDERS_SMALL:
+        argv += ["--set", kv]
+    assert main(argv) == 0, capsys.readouterr().err
+    assert gif.is_file()
+    assert builds.terrains == 1, f"the terrain was built {builds.terrains} times by run --animate"
+    assert builds.food == 1, f"the food sources were placed {builds.food} times by run --animate"
+
+
+def test_the_placement_check_returns_the_world_it_built(monkeypatch):
+    from bench_myriapoda.world.buildable import check_placements
+
+    case = resolve_case("centipede", "hybrid", "foraging", duration=0.1)
+    builds = Builds(monkeypatch)
+    world = check_placements(case, "centipede/hybrid/foraging")
+    assert isinstance(world, World) and len(world.food) > 0
+    assert (builds.terrains, builds.food) == (1, 1)
+
+
+def test_a_controller_passed_in_lives_in_the_runs_world(monkeypatch):
+    """A controller built alone (no world) and handed to the creature: one build, the controller's world is
+    the creature's; one built with a world brings it along."""
+    from bench_myriapoda.controllers.myriapod.controller import MyriapodController
+
+    case = resolve_case("centipede", "fem", "foraging", duration=0.1)
+    builds = Builds(monkeypatch)
+    cr = Creature(case, MyriapodController(case))
+    assert (builds.terrains, builds.food) == (1, 1)
+    assert cr.controller.world is cr.world and cr.body.world is cr.world
+    world = build_world(case)
+    builds.terrains = builds.food = 0
+    cr = Creature(case, MyriapodController(case, world=world))
+    assert (builds.terrains, builds.food) == (0, 0)
+    assert cr.world is world and cr.body.world is world
+
+
+def test_the_reports_plots_of_a_case_draw_its_one_world(monkeypatch, tmp_path):
+    """A matrix directory's case is drawn from the side and from above (``report.build``'s paper and trajectory
+    sections, each top view twice): its world is built once, from its stored sections, and the plots draw it."""
+    import json
+
+    import pandas as pd
+
+    from bench_myriapoda.report.matrix_data import MatrixResults
+    from bench_myriapoda.report.series_plots import plot_side_strip
+    from bench_myriapoda.report.trajectories import plot_top_views
+
+    case = resolve_case("centipede", "hybrid", "foraging", duration=0.1)
+    r = run_case(case)
+    assert r.status == "ok", r.message
+    d = case.to_dict()
+    res = MatrixResults(tmp_path, "m", "", [], pd.DataFrame({"case_hash": ["h"], "case_json": [json.dumps(d)]}), [])
+    builds = Builds(monkeypatch)
+    plot_side_strip("side", r.series, d["scenario"], tmp_path / "side.png", world=res.world("h"))
+    for name in ("top.png", "paper_top.png"):
+        plot_top_views([("run", r.series)], tmp_path / name, scenarios=[d["scenario"]], foods=[d["food"]],
+                       worlds=[res.world("h")])
+    assert (builds.terrains, builds.food) == (1, 1)
+    assert np.array_equal(res.world("h").food, build_world(case).food)

@@ -59,24 +59,7 @@ QUICK=quick
 PROBE=probe
 if [ -n "${DEVICE_TINY:-}" ]; then  # the smoke test: two tiny matrices of the same kinds of case
   mkdir -p "$WORK/m"
-  # (matrix data: its blocks are alike by design; ``duplicates`` pairs them with the tests' matrices)
-  cat >"$WORK/m/quick.toml" <<'EOF'
-[matrix]
-name = "quick"
-seeds = [0]
-[[block]]
-creatures = ["worm"]
-bodies = ["massspring"]
-scenarios = ["flat"]
-duration = 0.3
-grid = { "creature.segments" = [4, 6, 8] }
-[[block]]
-creatures = ["snake"]
-bodies = ["massspring"]
-gaits = ["lateral-undulation"]
-scenarios = ["flat"]
-duration = 0.2
-EOF
+  cp "$ROOT/tools/device_matrices/quick.toml" "$WORK/m/quick.toml"  # a data file: the matrix's TOML
   sed 's/name = "quick"/name = "probe"/; s/seeds = \[0\]/seeds = [0, 1]/' "$WORK/m/quick.toml" >"$WORK/m/probe.toml"
   QUICK=$WORK/m/quick.toml
   PROBE=$WORK/m/probe.toml

@@ -10,3 +10,17 @@ STATUS_TEXT = {OK: "ok", NONFINITE: "non-finite position or velocity", RUNAWAY_S
 # accumulator layout (``acc``): statistics gathered inside the step loop
 ACC_CONTACT_SUM, ACC_STEPS, ACC_MAX_PEN = range(3)  # sum of contact fractions, steps, max depth [m]
 N_ACC = 4
+
+
+class AccumulatedContact:
+    """The two contact figures every body reports (``core.protocols.Body``), read from the accumulators its step
+    kernel fills (``self.acc``, N_ACC values in the layout above): a mixin, so a body model need not write them
+    again (``tests/test_fourth_body.py``'s body takes them from here)."""
+
+    def contact_fraction_mean(self) -> float:
+        """Mean share of the body's contact points touching the ground over the steps run [-]."""
+        return float(self.acc[ACC_CONTACT_SUM] / max(self.acc[ACC_STEPS], 1.0))
+
+    def max_penetration(self) -> float:
+        """Deepest penetration of a contact point into the terrain [m]."""
+        return float(self.acc[ACC_MAX_PEN])

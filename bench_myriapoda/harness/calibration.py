@@ -8,11 +8,13 @@ and builds the calibration body through the catalog's factory.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from typing import Any
 
 from ..bodies.curvature_calibration import lateral_gain
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
+from ..world.world import build_world, made_in
 
 
 def needs_curvature_gain(case) -> bool:
@@ -32,6 +34,15 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         # case run at a deliberately unstable dt (stable-dt searches, blow-up tests) still gets its gain
         # and blows up in its own run, where that is recorded as ``unstable``
         cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
-        info["strain_per_curvature"] = lateral_gain(spec.factory, cal_case)
+        info["strain_per_curvature"] = lateral_gain(functools.partial(_in_its_own_world, spec.factory), cal_case)
         info["shape_gain_p"] = float(spec.shape_gain_p)
     return info
+
+
+def _in_its_own_world(factory, cal_case):
+    """The calibration body, made by the catalog's ``factory`` in the calibration case's world.
+
+    That world is legitimately not the run's: the calibration case (``curvature_calibration._calibration_case``)
+    has its own scenario (no ground, no gravity), so its world is built here, once
+    per calibration, through ``build_world`` from that explicit scenario -- not rebuilt inside the factory."""
+    return made_in(factory, cal_case, build_world(cal_case))

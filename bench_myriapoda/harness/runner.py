@@ -18,7 +18,6 @@ anywhere in the run becomes status ``error`` with its message.
 from __future__ import annotations
 
 import copy
-import inspect
 import math
 import time
 import traceback
@@ -35,7 +34,7 @@ from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
 from ..metrics.shape_tracking import shape_flag_reason
 from ..world.water_coupling import WaterCoupling, has_water
-from ..world.world import World, build_world
+from ..world.world import World, build_world, made_in, takes_world  # noqa: F401 (takes_world: its old home)
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
@@ -87,18 +86,12 @@ class UnsupportedCombination(ValueError):
     """A controller requires a capability the body does not have."""
 
 
-def takes_world(make) -> bool:
-    """True when ``make`` (a body factory, a controller class) accepts a ``world`` keyword: it is then given
-    the run's ``World``; one that does not (a user's, written before the world existed) gets the case alone."""
-    try:
-        params = inspect.signature(make).parameters.values()
-    except (TypeError, ValueError):  # a callable without a signature Python can read
-        return False
-    return any(p.name == "world" or p.kind is inspect.Parameter.VAR_KEYWORD for p in params)
-
-
-def _made_in(make, case: Case, world: World):
-    return make(case, world=world) if takes_world(make) else make(case)
+def run_world(case: Case, controller=None, world: World | None = None) -> World:
+    """The one world of a run: ``world`` when given, else the world a controller passed in already built
+    holds (its ``world`` attribute), else ``case``'s, built here."""
+    if world is None and isinstance(getattr(controller, "world", None), World):
+        world = controller.world
+    return build_world(case) if world is None else world
 
 
 def compose(case: Case, controller=None, world: World | None = None):
@@ -106,10 +99,13 @@ def compose(case: Case, controller=None, world: World | None = None):
     the controller reset for that body, both in ``world`` (``world.world.World``, built from the case here
     when None).  Raises UnsupportedCombination when the body cannot honour it."""
     registry.load_all()
-    world = build_world(case) if world is None else world
-    body = _made_in(registry.BODIES[case.body.name].factory, case, world)
+    world = run_world(case, controller, world)
+    body = made_in(registry.BODIES[case.body.name].factory, case, world)
     if controller is None:
-        controller = _made_in(registry.GAITS[case.gait.name].controller, case, world)
+        controller = made_in(registry.GAITS[case.gait.name].controller, case, world)
+    elif getattr(controller, "world", False) is None:
+        # a controller built without a world (it would build its own at reset) is handed the run's one
+        controller.world = world
     requires, _, _ = controller_settings(controller)
     missing = requires - body.capabilities
     if missing:
@@ -214,7 +210,7 @@ class Creature:
     def __init__(self, case: Case, controller=None, fused: bool = True, world: World | None = None):
         self.case = case
         self.own_controller = controller is None
-        self.world = build_world(case) if world is None else world
+        self.world = run_world(case, controller, world)
         self.body, self.controller = compose(case, controller, self.world)
         requires, self.open_loop, _ = controller_settings(self.controller)
         legged = LEGS in requires and SEGMENTS in requires
@@ -270,7 +266,8 @@ def _walk_metrics(series, case, metrics: dict, monitor, length: float):
 
 
 def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_nodes: bool = False,
-             on_sample: Callable[[float, Any, Any], None] | None = None, controller=None) -> RunResult:
+             on_sample: Callable[[float, Any, Any], None] | None = None, controller=None,
+             world: World | None = None) -> RunResult:
     """Simulate ``case`` and return its status, metrics and timings.
 
     ``controller``: a controller object (``core.protocols.Controller``: ``reset`` and
@@ -280,12 +277,14 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
     ``on_sample(t [s], body, water)`` is called at every observation sample, t = 0
     included, after the sample is recorded (e.g. ``report.animate.FrameRecorder``);
     ``water`` is the scenario's ``world.water_coupling.WaterCoupling`` or None.
+    ``world``: the case's ``world.world.World`` when built already (the CLI's placement check builds it);
+    built here when None.
     """
     wall0 = time.perf_counter()
     timings = {"steps": 0, "steps_per_s": float("nan"), "realtime_factor": float("nan"),
                "compile_s": float("nan"), "wall_s": float("nan")}
     try:
-        creature = Creature(case, controller)
+        creature = Creature(case, controller, world=world)
         body, monitor, stepper = creature.body, creature.monitor, creature.stepper
         view = creature.view  # what drawings and the water see: the body with its legs
         c0 = time.perf_counter()

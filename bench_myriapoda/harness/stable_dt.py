@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..core.config import Case
+from ..world.world import build_world
 from .runner import run_case
 
 
@@ -28,8 +29,10 @@ class StableDtResult:
 
 def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_floor: float = 1e-7,
                    dt_ceiling: float | None = None,
-                   progress: Callable[[float, str], None] | None = None) -> StableDtResult:
-    """Bisect dt for ``case`` (its duration and everything else fixed)."""
+                   progress: Callable[[float, str], None] | None = None, world=None) -> StableDtResult:
+    """Bisect dt for ``case`` (its duration and everything else fixed).  ``world``: the case's
+    ``world.world.World`` (it does not depend on dt), built once here when None and shared by every trial."""
+    world = build_world(case) if world is None else world
     ceiling = dt_ceiling if dt_ceiling is not None else case.duration / 20.0
     trials: list[tuple[float, str, float]] = []
 
@@ -37,7 +40,7 @@ def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_flo
         pass
 
     def stable(dt: float) -> bool:
-        r = run_case(dataclasses.replace(case, dt=dt))
+        r = run_case(dataclasses.replace(case, dt=dt), world=world)
         trials.append((dt, r.status, r.metrics.get("t_fail_s", float("nan"))))
         if progress is not None:
             progress(dt, r.status)

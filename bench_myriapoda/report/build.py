@@ -406,7 +406,7 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
     drawn = 0
     # one figure per creature, scenario and body: the seeds of a case are its panels
     for (creature, scenario, body), sub in main.groupby(["creature", "scenario", "body"], sort=True):
-        runs, scen, foods = [], [], []
+        runs, scen, foods, worlds = [], [], [], []
         for _, r in sub.sort_values([c for c in ("gait", "seed") if c in sub]).iterrows():
             rec = res.recording(r.case_hash)
             if rec is None or len(rec["t"]) < 2:
@@ -415,10 +415,11 @@ def _trajectories(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
                          series_from_recording(rec)))
             scen.append(res.case(r.case_hash)["scenario"])
             foods.append(res.case(r.case_hash).get("food"))
+            worlds.append(res.world(r.case_hash))
         if not runs:
             continue
         path = page.fig_dir / f"top_{_slug(creature, scenario, body)}.png"
-        page.draw(path, plot_top_views, runs[:6], path, scenarios=scen[:6], foods=foods[:6])
+        page.draw(path, plot_top_views, runs[:6], path, scenarios=scen[:6], foods=foods[:6], worlds=worlds[:6])
         page.figure(path, f"{creature} on {scenario}, {body} body, seen from above, one row per run. Left: the "
                           "body's centre line at six times (head: dot) and the centre-of-mass path (dashed). "
                           "Right: the centre-of-mass path, zoomed, dots at the six times. Coloured by "
@@ -517,7 +518,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
         slug = _slug(r.case_hash)
         if "side" in fig.images:
             side_png = page.fig_dir / f"paper_side_{slug}.png"
-            page.figure(page.draw(side_png, plot_side_strip, f"{r.label}: side view", s, scen, side_png),
+            page.figure(page.draw(side_png, plot_side_strip, f"{r.label}: side view", s, scen, side_png,
+                                  world=res.world(r.case_hash)),
                         "Side view at six times spaced by the body's motion, coloured from dark purple (first) "
                         "to yellow (last) as the legend's times show, over the terrain.")
         # The gait and trajectory sections have drawn these already (each figure is drawn once): link to them.
@@ -535,7 +537,8 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
                 page.link(top_png, "Seen from above", "trajectories")
             else:
                 top_png = page.fig_dir / f"paper_top_{slug}.png"
-                page.figure(page.draw(top_png, plot_top_views, [(r.label, s)], top_png, scenarios=[scen], foods=[food]),
+                page.figure(page.draw(top_png, plot_top_views, [(r.label, s)], top_png, scenarios=[scen], foods=[food],
+                                      worlds=[res.world(r.case_hash)]),
                             "Seen from above.")
     walks = main[(main.get("scenario") == "walk") & (main.get("creature") == "centipede")] if not main.empty else main
     if not walks.empty:

@@ -89,3 +89,14 @@ def layout_once(fig, path, dpi: float) -> None:
     # off, set_layout_engine(None) detaches the engine instead of making a new one
     with plt.rc_context({"figure.autolayout": False, "figure.constrained_layout.use": False}):
         fig.set_layout_engine(None)
+
+
+def show_png(path) -> None:
+    """Show the PNG file ``path`` as a figure of its own pixel size, without axes: the example gallery shows
+    the figures a script opens, so a script that wrote a report figure to a file shows it this way."""
+    image = plt.imread(path)
+    fig, ax = plt.subplots(figsize=(image.shape[1] / DPI, image.shape[0] / DPI), dpi=DPI)
+    ax.imshow(image)
+    ax.axis("off")
+    fig.tight_layout(pad=0)
+    plt.show()

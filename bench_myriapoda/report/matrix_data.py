@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import json
 import zipfile
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -42,6 +42,8 @@ class MatrixResults:
     grid_keys: list[str]
     df: pd.DataFrame  # one row per case: axes, grid keys, status, message, dt, metric.*, steps_per_s, ...
     unsupported: list[str]
+    # each case's world (``world``), built once however many plots draw the case (issue 30 item 1)
+    worlds: dict = field(default_factory=dict, repr=False, compare=False)
 
     def recording(self, case_hash: str) -> dict[str, np.ndarray] | None:
         """The case's compact recording, or None when it has none."""
@@ -51,6 +53,19 @@ class MatrixResults:
     def case(self, case_hash: str) -> dict:
         """The resolved configuration of a case (``Case.to_dict()``)."""
         return json.loads(self.df.loc[self.df.case_hash == case_hash, "case_json"].iloc[0])
+
+    def world(self, case_hash: str):
+        """The case's ``world.world.World`` (terrain, obstacles, food), built from its stored scenario and food
+        sections on first use and kept: every plot of the case draws the one world."""
+        if case_hash not in self.worlds:
+            from ..core.schema import FoodConfig
+            from ..world.world import world_from_sections
+            from .series_plots import scenario_config, stored_section
+
+            case = self.case(case_hash)
+            self.worlds[case_hash] = world_from_sections(scenario_config(case["scenario"]),
+                                                         stored_section(FoodConfig, case.get("food")))
+        return self.worlds[case_hash]
 
 
 RECORDING_KEYS = ("t", "com", "head", "tail", "segment_centers", "energy")

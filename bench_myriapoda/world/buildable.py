@@ -2,7 +2,8 @@
 
 Random cylinders and food sources are drawn when the world is built; a scenario that leaves no room
 for them is refused before the run starts (an ``InputError`` naming the source and the key, as for
-any other bad value), instead of an ``error`` row after it started.  The body's own limits are
+any other bad value), instead of an ``error`` row after it started.  The check builds the world, and the CLI
+runs the case in that world (issue 30 item 1: one build per case).  The body's own limits are
 ``core.feasibility.check_buildable``.
 """
 from __future__ import annotations
@@ -10,14 +11,16 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from .food import food_sources
 from .meshes import MAX_HASH_CELLS, mesh_file_problem, skull_hash_cells
-from .terrain import random_cylinders
+from .world import World, build_world
 
 
-def check_placements(case, source: str) -> None:
+def check_placements(case, source: str) -> World:
     """Random cylinders and food sources the world builders can place (they raise InputError otherwise), and
-    the surfaces they can build (:func:`check_surfaces`)."""
+    the surfaces they can build (:func:`check_surfaces`).
+
+    Returns the case's world, built here once (``world.build_world``: the placements are checked by building
+    them): the caller hands it to the run and to whatever draws the run, so the check is not a second build."""
     check_surfaces(case, source)
     sc = case.scenario
     if sc.obstacle_cylinders:
@@ -27,14 +30,12 @@ def check_placements(case, source: str) -> None:
             raise InputError(source, "scenario.obstacle_clear_radius_m",
                              f"{sc.obstacle_clear_radius_m} m: no room for random cylinders, the clear disc covers "
                              f"obstacle_region_m {list(sc.obstacle_region_m)}; must be smaller")
-        _reattribute(lambda: random_cylinders(sc), source)
-    if case.food.count and sc.terrain != "mesh":  # on a mesh the terrain takes seconds to build: checked at run time
-        _reattribute(lambda: food_sources(sc, case.food), source)
+    return _reattribute(lambda: build_world(case), source)
 
 
-def _reattribute(fn, source: str) -> None:
+def _reattribute(fn, source: str):
     try:
-        fn()
+        return fn()
     except InputError as exc:
         raise InputError(source, exc.key, exc.message) from None
 

@@ -231,9 +231,10 @@ class TerrainDescription:
         return [dict(type="cylinder", **c) for c in self.cylinders] + [dict(type="box", **b) for b in self.boxes]
 
 
-def terrain_description(sc) -> TerrainDescription:
-    """The scenario's terrain as plot data (see ``TerrainDescription``)."""
-    kind, f = terrain_from_scenario(sc)
+def terrain_description(sc, terrain: tuple[int, np.ndarray] | None = None) -> TerrainDescription:
+    """The scenario's terrain as plot data (see ``TerrainDescription``); ``terrain``: its (kind, f) when built
+    already (``world.World.terrain``), built here when None."""
+    kind, f = terrain_from_scenario(sc) if terrain is None else terrain
     ground = None if sc.terrain == "none" or (sc.terrain == "mesh" and not sc.mesh_ground) else float(sc.ground_height_m)
     d = TerrainDescription(terrain=sc.terrain, kind=kind, f=f, ground_height_m=ground)
     if kind != MESH and sc.terrain != "none":

@@ -7,7 +7,11 @@ terrain used to be rebuilt in about 13 places, a 10^5-triangle mesh terrain each
 cylinders and food sources redrawn each time).  Each of those keeps a fallback that builds its own world when
 it is given none (a body or controller built alone, by a test or a script).  The curvature calibration
 (``harness.calibration``, on a cache miss) measures a short copy of the body in a world of its own (no ground,
-no gravity: ``bodies.curvature_calibration._calibration_case``), which its factory builds from that case.
+no gravity: ``bodies.curvature_calibration._calibration_case``): a different world, which
+``harness.calibration`` builds through ``build_world`` from that case's own scenario.  Outside a run the same
+rule holds: the CLI builds a case's world once in its pre-run placement check (``world.buildable``) and hands
+it to the run and to the animation; the report builds one world per stored case
+(``report.matrix_data.MatrixResults.world``) and hands it to every plot of that case.
 
 What the world holds does not change during a run (Newton's "model", as against the body's state): the
 terrain vector ``terr`` (``terrain_kernels`` layout, obstacles and their grid included) is shared by
@@ -18,6 +22,7 @@ the world holds its bed (the terrain) and whether there is water at all.
 """
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass
 from typing import Any
 
@@ -70,10 +75,30 @@ class World:
 
 def build_world(case) -> World:
     """The world of ``case`` (its ``scenario`` and ``food`` sections): the terrain once, the food on it."""
-    sc = case.scenario
+    return world_from_sections(case.scenario, case.food)
+
+
+def world_from_sections(sc, food) -> World:
+    """The world of a ``ScenarioConfig`` and a ``FoodConfig`` (a stored case's sections, as the report has
+    them): the terrain once, the food on it."""
     kind, f = _terrain.terrain_from_scenario(sc)
-    sources = _food.food_sources(sc, case.food, (kind, f))
+    sources = _food.food_sources(sc, food, (kind, f))
     return World(sc, kind, f, sources)
+
+
+def takes_world(make) -> bool:
+    """True when ``make`` (a body factory, a controller class) accepts a ``world`` keyword: it is then given
+    the run's ``World``; one that does not (a user's, written before the world existed) gets the case alone."""
+    try:
+        params = inspect.signature(make).parameters.values()
+    except (TypeError, ValueError):  # a callable without a signature Python can read
+        return False
+    return any(p.name == "world" or p.kind is inspect.Parameter.VAR_KEYWORD for p in params)
+
+
+def made_in(make, case, world: World):
+    """``make(case)`` in ``world``: passed as its ``world`` keyword when it takes one (``takes_world``)."""
+    return make(case, world=world) if takes_world(make) else make(case)
 
 
 def world_of(case, world: World | None) -> World:

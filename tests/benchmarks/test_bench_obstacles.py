@@ -23,8 +23,7 @@ from numba import njit
 
 from bench_myriapoda.harness.throughput_suite import CENTIPEDE_WALK_IN_STEPS as WALK_IN_STEPS
 from bench_myriapoda.world import terrain_kernels as TK
-
-STEPS_PER_CALL = 300
+from walking_hybrid import STEPS_PER_CALL, query_loop, time_walk_chunks, walker  # noqa: F401 (STEPS_PER_CALL: for scripts)
 N_POINTS = 100_000
 FIG13_DENSITY = 120 / 30.0 ** 2   # cylinders per m^2 (fig13-cylinders at 120 cylinders)
 # 120 of Fig. 13's low cylinders on the ground around and ahead of the body, which lies along -x.  Layout
@@ -33,18 +32,6 @@ FIG13_DENSITY = 120 / 30.0 ** 2   # cylinders per m^2 (fig13-cylinders at 120 cy
 CYLINDERS_120 = ["scenario.obstacle_cylinders=120", "scenario.obstacle_radius_m=[0.3, 0.8]",
                  "scenario.obstacle_height_m=[0.1, 0.4]", "scenario.obstacle_region_m=[-30.0, 15.0, -15.0, 15.0]",
                  "scenario.obstacle_clear_radius_m=1.0", "scenario.terrain_seed=2"]
-
-
-def walker(overrides):
-    from bench_myriapoda.core.config import resolve_case
-    from bench_myriapoda.harness.runner import Creature
-
-    case = resolve_case("centipede", "hybrid", "walk", overrides=overrides)
-    b = Creature(case)  # the hybrid body with its leg controller
-    b.compile()
-    done, status = b.advance(0.0, WALK_IN_STEPS)
-    assert status == 0, b.status_text(status)
-    return case, b
 
 
 def cylinders(n: int) -> list[str]:
@@ -67,28 +54,8 @@ def cylinders(n: int) -> list[str]:
 @pytest.mark.parametrize("ground", ["flat", "cylinders-40", "cylinders-120", "cylinders-1000"])
 def test_bench_walk_flat_vs_cylinders(benchmark, ground):
     case, b = walker(cylinders(int(ground.split("-")[1])) if ground != "flat" else [])
-    t = [WALK_IN_STEPS * case.dt]
-
-    def chunk():
-        done, status = b.advance(t[0], STEPS_PER_CALL)
-        t[0] += done * case.dt
-        assert status == 0
-
-    benchmark.pedantic(chunk, rounds=16, iterations=1, warmup_rounds=1)
     benchmark.extra_info["ground"] = ground
-    if benchmark.stats is not None:
-        benchmark.extra_info["us_per_step"] = benchmark.stats.stats.median / STEPS_PER_CALL * 1e6
-
-
-@njit(cache=True, error_model="numpy")
-def query_loop(kind, f, p):
-    """phi and normal at every point; a checksum so nothing is optimised away."""
-    acc = 0.0
-    for i in range(p.shape[0]):
-        phi = TK.signed_distance(kind, f, p[i, 0], p[i, 1], p[i, 2])
-        nx, ny, nz = TK.surface_normal(kind, f, p[i, 0], p[i, 1], p[i, 2])
-        acc += phi + nx + 2.0 * ny + 3.0 * nz
-    return acc
+    time_walk_chunks(benchmark, case, b, WALK_IN_STEPS, rounds=16)
 
 
 @njit(cache=True, error_model="numpy")

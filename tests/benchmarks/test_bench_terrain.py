@@ -19,24 +19,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from numba import njit
 
 from bench_myriapoda.world import meshes as M
 from bench_myriapoda.world import terrain_kernels as TK
+from walking_hybrid import query_loop, time_walk_chunks, walker
 
 N_POINTS = 100_000
 NEAR_M = 0.01  # [m] points within this of the surface (the skull is about 2 m long)
-
-
-@njit(cache=True, error_model="numpy")
-def query_loop(kind, f, p):
-    """phi and normal at every point; returns a checksum so nothing is optimised away."""
-    acc = 0.0
-    for i in range(p.shape[0]):
-        phi = TK.signed_distance(kind, f, p[i, 0], p[i, 1], p[i, 2])
-        nx, ny, nz = TK.surface_normal(kind, f, p[i, 0], p[i, 1], p[i, 2])
-        acc += phi + nx + 2.0 * ny + 3.0 * nz
-    return acc
 
 
 def near_surface_points(mesh, n, near, seed=0, at_least=0.0):
@@ -107,7 +96,6 @@ def test_bench_query_skull(benchmark, skull, order, zone):
 SLAB_HALF_M = 25.0  # [m] half side of the closed slab the centipede walks on
 SLAB_MAX_EDGE_M = 0.45  # [m]
 WALK_IN_STEPS = 1500
-STEPS_PER_CALL = 300
 
 
 def closed_slab_file(tmp_path_factory):
@@ -121,18 +109,6 @@ def closed_slab_file(tmp_path_factory):
     path = tmp_path_factory.mktemp("slab") / "slab.ply"
     mesh.export(path)
     return path, len(mesh.faces)
-
-
-def walker(overrides, scenario="walk"):
-    from bench_myriapoda.core.config import resolve_case
-    from bench_myriapoda.harness.runner import Creature
-
-    case = resolve_case("centipede", "hybrid", scenario, overrides=["creature.segments=18", *overrides])
-    b = Creature(case)  # the hybrid body with its leg controller
-    b.compile()
-    done, status = b.advance(0.0, WALK_IN_STEPS)
-    assert status == 0, b.status_text(status)
-    return case, b
 
 
 @pytest.fixture(scope="module")
@@ -152,16 +128,7 @@ def test_bench_walk_plane_vs_closed_mesh(benchmark, slab, ground):
                      "scenario.mesh_cell_edges=2.0"]
     elif ground == "skull":
         scenario, n_tris = "fig1-mesh", 101_568
-    case, b = walker(overrides, scenario)
-    t = [WALK_IN_STEPS * case.dt]
-
-    def chunk():
-        done, status = b.advance(t[0], STEPS_PER_CALL)
-        t[0] += done * case.dt
-        assert status == 0
-
-    benchmark.pedantic(chunk, rounds=6, iterations=1, warmup_rounds=1)
+    case, b = walker(["creature.segments=18", *overrides], scenario, walk_in_steps=WALK_IN_STEPS)
     benchmark.extra_info["terrain"] = ground
     benchmark.extra_info["triangles"] = n_tris if ground != "plane" else 0
-    if benchmark.stats is not None:
-        benchmark.extra_info["us_per_step"] = benchmark.stats.stats.median / STEPS_PER_CALL * 1e6
+    time_walk_chunks(benchmark, case, b, WALK_IN_STEPS, rounds=6)
