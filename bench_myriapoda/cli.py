@@ -1141,7 +1141,8 @@ def cmd_keys(args) -> int:
             print(f"[{section}]" + ("  (dt, duration, seed: --dt, --duration, --seed or --set)" if section == "top"
                                     else ""))
         default = "-" if r["default"] is None else json.dumps(r["default"])
-        bodies = f"  ({', '.join(r['bodies'])})" if "bodies" in r else ""
+        bodies = (f"  ({', '.join(r['bodies'])})" if "bodies" in r
+                  else f"  (gaits: {', '.join(r['gaits'])})" if "gaits" in r else "")
         print(f"  {r['key']}{bodies}")
         print(f"      {r['type']}; default {default}" + (f"; {r['allowed_text']}" if r["allowed_text"] else "")
               + (f"; unit {r['unit']}" if r["unit"] else ""))

@@ -39,11 +39,19 @@ def _accepted_by_set() -> set[str]:
     for body, spec in registry.BODIES.items():
         for f in dataclasses.fields(spec.config_cls):
             candidates.setdefault(f"body.{f.name}", (body, f.default))
+    # a gait's own keys (its GaitSpec.config_cls beyond GaitConfig's) are accepted for a case of that gait
+    gait_of: dict[str, str] = {}
+    for gait, spec in registry.GAITS.items():
+        for f in dataclasses.fields(spec.config_cls):
+            if f"gait.{f.name}" not in candidates:
+                candidates[f"gait.{f.name}"] = (None, f.default)
+                gait_of[f"gait.{f.name}"] = gait
     accepted = set()
     for key, (body, value) in candidates.items():
         value = list(value) if isinstance(value, tuple) else value
+        layers = {"gait": {"name": gait_of[key]}} if key in gait_of else {}
         try:
-            apply_override({}, key, value, "--set", body or "massspring")
+            apply_override(layers, key, value, "--set", body or "massspring")
         except InputError as exc:
             if "unknown" in exc.message or "names are chosen" in exc.message:
                 continue

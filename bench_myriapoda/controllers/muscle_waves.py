@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from ..core.protocols import AXIAL, DORSAL, LATERAL, MUSCLES, N_CHANNELS, Actuation, Observation  # noqa: F401
-from ..core.schema import GaitConfig
+from ..core.schema import GaitConfig, rng
 # wave table columns
 AMP, WAVENUMBER, OMEGA, PHASE, PROFILE = 0, 1, 2, 3, 4
 PROFILE_SINE, PROFILE_RAISED = 0.0, 1.0
@@ -56,8 +56,46 @@ CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
 
 @dataclass(frozen=True)
 class MuscleWaveConfig(GaitConfig):
-    """``[gaits.<muscle wave>]``: GaitConfig's keys; a bending gait (``CURVATURE_GAITS``) with a commanded
-    curvature asks the runner for the body's strain per curvature (``commands_curvature``)."""
+    """``[gaits.<muscle wave>]``: GaitConfig's keys (the wave on the main channel) and the muscle waves' own:
+    the commanded shape of a bending wave, sidewinding's vertical wave, arching's axial wave and profile, and
+    the shape control (``controllers.shape_tracking``).  A bending gait (``CURVATURE_GAITS``) with a
+    commanded curvature asks the runner for the body's strain per curvature (``commands_curvature``)."""
+
+    curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
+                                     doc="lateral undulation, sidewinding: commanded peak curvature x body length "
+                                         "[-]; each body turns it into its own strain (bodies/curvature_calibration.py); "
+                                         "0: use the raw strain 'amplitude'")
+    vertical_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="sidewinding: vertical wave strain amplitude")
+    vertical_curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
+                                              doc="sidewinding: commanded peak vertical curvature x body length [-], "
+                                                  "turned into strain with the body's own gain as "
+                                                  "curvature_amplitude; 0: use the raw 'vertical_amplitude'")
+    vertical_phase_deg: float = rng(90.0, doc="sidewinding: phase of the vertical wave relative to the lateral wave [deg]")
+    axial_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="arching: axial strain amplitude of the contraction coupled to the arch")
+    axial_phase_deg: float = rng(180.0, doc="arching: phase of the axial wave relative to the arch (180: arched segments are shortest)")
+    profile: str = rng("sine", choices=("sine", "raised"), doc="'raised' keeps the wave one-sided (arching only upward)")
+    # Shape control of a commanded bending wave (curvature_amplitude > 0; controllers/muscle_waves.py,
+    # docs/explanation/shape-tracking.md).
+    shape_control: str = rng("closed_loop", choices=("closed_loop", "open_loop"),
+                             doc="lateral undulation, sidewinding with curvature_amplitude > 0: 'closed_loop' (default) "
+                                 "measures the ground curvature of the segment frames at shape_control_rate_hz and "
+                                 "corrects each segment's LATERAL strain (calibrated feed-forward + proportional + "
+                                 "per-segment integral of the wave's in-phase and quadrature error); 'open_loop': the "
+                                 "calibrated gain alone, bit for bit as before issue 27 "
+                                 "(docs/explanation/shape-tracking.md)")
+    shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
+                                       doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
+    shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,
+                              doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
+                                  "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
+                                  "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
+    shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
+                                        doc="closed_loop: integral gain of the wave's amplitude and phase error per "
+                                            "gait cycle [-] (rate = this x frequency_hz)")
+    max_muscle_strain: float = rng(0.3, gt=0.0, lt=0.95,
+                                   doc="closed_loop: muscle strength, the largest active fibre strain a muscle can "
+                                       "produce [-]; a command beyond it is clipped and counted in "
+                                       "muscle_saturation_fraction")
 
     def commands_curvature(self) -> bool:
         return self.name in CURVATURE_GAITS and (self.curvature_amplitude > 0.0

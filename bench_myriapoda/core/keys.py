@@ -80,7 +80,7 @@ def config_keys(section: str | None = None) -> list[dict[str, Any]]:
     ``allowed`` (``ge``/``gt``/``le``/``lt``/``choices``/``length``/``multiple``/``ordered``),
     ``allowed_text``, ``unit`` and ``description``; a ``body.*`` key also has ``bodies``, the body
     models that have it with that default (a key with different defaults per model is listed once
-    per default).  Raises :class:`InputError` for an unknown section.
+    per default), and a gait's own key (not ``GaitConfig``'s) has ``gaits``, the gaits that have it.  Raises :class:`InputError` for an unknown section.
     """
     if section is not None and section not in sections():
         raise InputError("keys", None, f"unknown section {section!r}{did_you_mean(section, sections())}; "
@@ -97,6 +97,8 @@ def config_keys(section: str | None = None) -> list[dict[str, Any]]:
         if section in (None, name):
             rows += [_row(f"{name}.{r['key']}", name, r) for r in describe_section(cls)
                      if f"{name}.{r['key']}" not in NAME_KEYS]
+        if name == "gait" and section in (None, name):
+            rows += _own_gait_keys(cls)
     if section in (None, "body"):
         merged: dict[tuple, dict[str, Any]] = {}
         for body, spec in sorted(registry.BODIES.items()):
@@ -111,6 +113,23 @@ def config_keys(section: str | None = None) -> list[dict[str, Any]]:
                     merged[ident] = _row(key, "body", r, [body])
         rows += sorted(merged.values(), key=lambda row: (row["key"], row["bodies"]))
     return rows
+
+
+def _own_gait_keys(base: type) -> list[dict[str, Any]]:
+    """The keys a gait's own configuration class adds to ``base`` (``GaitSpec.config_cls``), one row per key
+    and default with ``gaits``, the gaits that have it (the muscle waves' shape keys, a plugin gait's own)."""
+    common = {f.name for f in dataclasses.fields(base)}
+    merged: dict[tuple, dict[str, Any]] = {}
+    for gait, spec in sorted(registry.GAITS.items()):
+        for r in describe_section(spec.config_cls):
+            if r["key"] in common:
+                continue
+            ident = (r["key"], repr(r["default"]), r["doc"], repr(sorted(r["allowed"].items(), key=str)))
+            if ident not in merged:
+                merged[ident] = _row(f"gait.{r['key']}", "gait", r)
+                merged[ident]["gaits"] = []
+            merged[ident]["gaits"].append(gait)
+    return sorted(merged.values(), key=lambda row: (row["key"], row["gaits"]))
 
 
 def accepted_keys() -> set[str]:

@@ -94,59 +94,27 @@ class CreatureConfig:
 
 @dataclass(frozen=True)
 class GaitConfig:
-    """A travelling muscle wave (Miller Sec. 4).
+    """The keys every gait has: its name, its wave and period, and the volume rule.
 
-    The wave on a channel is ``amplitude * sin(d * 2 pi s / wavelength - 2 pi f t + phase)``
-    with s the rest arc length of a segment centre from the head and d = +1
-    for a wave travelling head to tail, -1 tail to head.  Amplitudes are
-    strains of the muscle fibres (dimensionless), unless ``curvature_amplitude`` commands the shape
-    of a bending wave instead (the same body shape on every body model).
+    The runner and the metrics read the wave of every gait (``harness.runner.wave_speed``, the gait
+    period that sets the metrics' cycles); the bodies read the volume rule.  For a muscle wave (Miller
+    Sec. 4) the wave on a channel is ``amplitude * sin(d * 2 pi s / wavelength - 2 pi f t + phase)``
+    with s the rest arc length of a segment centre from the head and d = +1 for a wave travelling head
+    to tail, -1 tail to head; amplitudes are strains of the muscle fibres (dimensionless).  A gait's
+    own keys live in its own subclass next to its controller (``core.specs.GaitSpec.config_cls``): the
+    muscle waves' commanded shape, sidewinding's vertical wave, arching's axial wave and the shape
+    control are ``controllers.muscle_waves.MuscleWaveConfig``'s.
     """
 
     name: str = rng("", doc="gait (controller) name")
     amplitude: float = rng(0.2, ge=0.0, lt=0.95, doc="main channel strain amplitude")
-    curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
-                                     doc="lateral undulation, sidewinding: commanded peak curvature x body length "
-                                         "[-]; each body turns it into its own strain (bodies/curvature_calibration.py); "
-                                         "0: use the raw strain 'amplitude'")
     wavelength_bl: float = rng(0.5, gt=0.0, doc="wavelength in body lengths (undeformed)")
     frequency_hz: float = rng(1.0, gt=0.0, doc="wave frequency [Hz]")
     phase_deg: float = rng(0.0, doc="phase offset of the main wave [deg]")
     direction: str = rng("head-to-tail", choices=("head-to-tail", "tail-to-head"),
                          doc="way the wave travels along the body (Miller's worm: head to tail)")
-    vertical_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="sidewinding: vertical wave strain amplitude")
-    vertical_curvature_amplitude: float = rng(0.0, ge=0.0, le=60.0,
-                                              doc="sidewinding: commanded peak vertical curvature x body length [-], "
-                                                  "turned into strain with the body's own gain as "
-                                                  "curvature_amplitude; 0: use the raw 'vertical_amplitude'")
-    vertical_phase_deg: float = rng(90.0, doc="sidewinding: phase of the vertical wave relative to the lateral wave [deg]")
-    axial_amplitude: float = rng(0.0, ge=0.0, lt=0.95, doc="arching: axial strain amplitude of the contraction coupled to the arch")
-    axial_phase_deg: float = rng(180.0, doc="arching: phase of the axial wave relative to the arch (180: arched segments are shortest)")
-    profile: str = rng("sine", choices=("sine", "raised"), doc="'raised' keeps the wave one-sided (arching only upward)")
     volume_conserving: bool = rng(False, doc="scale circumferential rest lengths by 1/sqrt(axial stretch) (Miller Sec. 4)")
     ramp_s: float = rng(0.5, ge=0.0, doc="amplitude ramps linearly from 0 over this time [s]")
-    # Shape control of a commanded bending wave (curvature_amplitude > 0; controllers/muscle_waves.py,
-    # docs/explanation/shape-tracking.md).
-    shape_control: str = rng("closed_loop", choices=("closed_loop", "open_loop"),
-                             doc="lateral undulation, sidewinding with curvature_amplitude > 0: 'closed_loop' (default) "
-                                 "measures the ground curvature of the segment frames at shape_control_rate_hz and "
-                                 "corrects each segment's LATERAL strain (calibrated feed-forward + proportional + "
-                                 "per-segment integral of the wave's in-phase and quadrature error); 'open_loop': the "
-                                 "calibrated gain alone, bit for bit as before issue 27 "
-                                 "(docs/explanation/shape-tracking.md)")
-    shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
-                                       doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
-    shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,
-                              doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
-                                  "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
-                                  "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
-    shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
-                                        doc="closed_loop: integral gain of the wave's amplitude and phase error per "
-                                            "gait cycle [-] (rate = this x frequency_hz)")
-    max_muscle_strain: float = rng(0.3, gt=0.0, lt=0.95,
-                                   doc="closed_loop: muscle strength, the largest active fibre strain a muscle can "
-                                       "produce [-]; a command beyond it is clipped and counted in "
-                                       "muscle_saturation_fraction")
 
     @property
     def period_s(self) -> float:
@@ -155,7 +123,9 @@ class GaitConfig:
     def commands_curvature(self) -> bool:
         """Whether this gait commands a body shape (a curvature) that each body turns into its own strain with
         its measured gain (``harness.calibration``).  A gait's own configuration class says so (the muscle
-        waves': ``controllers.muscle_waves.MuscleWaveConfig``); this base class: never."""
+        waves': ``controllers.muscle_waves.MuscleWaveConfig``); this base class: never.  A class that says so also
+        has ``curvature_amplitude``, the commanded lateral peak curvature x body length [-], which the shape
+        metrics (``metrics.shape_tracking``) compare the body's shape with."""
         return False
 
 

@@ -36,13 +36,14 @@ from ..core.series import Series
 from .body_shape import ground_curvature, pitch_stride
 
 SHAPE_ERROR_THRESHOLD = 0.10
-BENDING_GAITS = ("lateral-undulation", "sidewinding")
 
 
 def commands_a_shape(case) -> bool:
-    """True for a bending gait that commands its curvature (the gait's ``curvature_amplitude`` > 0)."""
+    """True for a gait that commands a lateral bending shape: its configuration class says it commands a
+    curvature (``GaitConfig.commands_curvature``, so this module names no gait) and the lateral one,
+    ``curvature_amplitude``, is > 0."""
     g = case.gait
-    return g.name in BENDING_GAITS and g.curvature_amplitude > 0.0 and not case.scenario.passive
+    return g.commands_curvature() and g.curvature_amplitude > 0.0 and not case.scenario.passive
 
 
 def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:

@@ -86,7 +86,8 @@ def keys_page() -> str:
     for section in dict.fromkeys(r["section"] for r in rows):
         lines += [f"## `{section}`", ""]
         lines += _table(("key", "type", "default", "allowed", "unit", "description"),
-                        [(_code(r["key"]) + (f" ({', '.join(r['bodies'])})" if "bodies" in r else ""), r["type"],
+                        [(_code(r["key"]) + (f" ({', '.join(r['bodies'])})" if "bodies" in r else
+                                              f" (gaits: {', '.join(r['gaits'])})" if "gaits" in r else ""), r["type"],
                           r["default"], r["allowed_text"] or "-", r["unit"] or "-", r["description"])
                          for r in rows if r["section"] == section])
     return "\n".join(lines)
