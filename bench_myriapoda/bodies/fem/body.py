@@ -253,14 +253,15 @@ class BodyFEM(NodeSegments):
             act = self._rest_actuation
         s, so = self.system, self.solver
         self.phys[BK.MUSCLES] = 1.0 if act.muscles_on else 0.0
-        return BK.advance(self.x, self.v, s.mass, s.tets, s.Dm_inv, s.vol, s.mu, s.lam, self.tet_seg, self.tet_y,
-                          self.tet_z, act.muscle, so.perm, so.sky_first, so.sky_ptr, so.sky_L,
-                          so.fp_ptr, so.fp_col, so.fp_val, self.node_seg, self.node_seg_b, self.node_w,
-                          self.seg_ptr, self.seg_nodes,
+        return BK.advance(self.x, self.v,
+                          (s.mass, s.tets, s.Dm_inv, s.vol, s.mu, s.lam, self.tet_seg, self.tet_y, self.tet_z),
+                          act.muscle,
+                          (so.perm, so.sky_first, so.sky_ptr, so.sky_L, so.fp_ptr, so.fp_col, so.fp_val),
+                          (self.node_seg, self.node_seg_b, self.node_w, self.seg_ptr, self.seg_nodes),
                           self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                          s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, s._inc_ptr, s._inc_off,
-                          self._force, self._b_work,
-                          self._act, self._centers, self._spine, self.acc)
+                          (s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, s._inc_ptr, s._inc_off,
+                           self._force, self._b_work, self._centers, self._spine),
+                          self._act, self.acc)
 
     def compile(self) -> None:
         x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()

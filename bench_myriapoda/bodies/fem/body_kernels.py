@@ -19,6 +19,7 @@ One step (paper App. A with the suite's muscles and ground contact):
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 from numba import njit
 
@@ -84,12 +85,23 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
         spine_between(centers, i - 1 if i > 0 else 0, i + 1 if i < n_seg - 1 else n_seg - 1, spine, i)
 
 
+# ``advance``'s arguments, packed (numba compiles a namedtuple as a struct of its fields).  ``FEMBody`` hands them
+# over as plain tuples in these fields' order: numba types a plain tuple of arrays in its C dispatcher, a
+# namedtuple in Python (``bodies.rigid_chain``).  The fields are described in ``advance``.
+BodyMesh = namedtuple("BodyMesh", "mass tets Dm_inv vol mu lam tet_seg tet_y tet_z")
+BodyFactor = namedtuple("BodyFactor", "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val")
+NodeFrames = namedtuple("NodeFrames", "node_seg node_seg_b node_w seg_ptr seg_nodes")
+BodyWork = namedtuple("BodyWork", "Dm_inv_eff coef q_ws F_work H_work inc_ptr inc_off force b_work centers spine")
+
+
 @njit(cache=True, error_model="numpy")
-def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_buf,
-            perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-            node_seg, node_seg_b, node_w, seg_ptr, seg_nodes, fric_model, fric, terr_kind, terr, phys, n_steps,
-            Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force, b_work, act, centers, spine, acc):
+def advance(x, v, mesh, act_buf, factor, frames, fric_model, fric, terr_kind, terr, phys, n_steps, work, act, acc):
     """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
+
+    mesh = ``BodyMesh`` (mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z), factor = ``BodyFactor`` (perm,
+    sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val), frames = ``NodeFrames`` (node_seg, node_seg_b, node_w,
+    seg_ptr, seg_nodes), work = ``BodyWork`` (Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force,
+    b_work, centers, spine): tuples in these fields' order.
 
     act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k (rows past the last repeat
     it); read only when phys[MUSCLES] is set (the actuation drives muscles at all).
@@ -103,6 +115,10 @@ def advance(x, v, mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z, act_b
     inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets.  Work arrays are
     overwritten; ``acc`` accumulates statistics (``step_status``).
     """
+    mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z = mesh
+    perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val = factor
+    node_seg, node_seg_b, node_w, seg_ptr, seg_nodes = frames
+    Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force, b_work, centers, spine = work
     g = phys[GRAVITY]
     dt = phys[DT]
     r_n = phys[R_N]
