@@ -199,29 +199,29 @@ FEAT_FACE, FEAT_A, FEAT_B, FEAT_C, FEAT_AB, FEAT_BC, FEAT_CA = 0, 1, 2, 3, 4, 5,
 
 # --------------------------------------------------------------------------- slab
 
-@njit(cache=True, error_model="numpy")
-def _slab_phi(f, x, y):
-    """Signed distance to the union of the ground and a rounded-edge slab (2D in x-y)."""
+@njit(cache=True, error_model="numpy", inline="always")
+def _slab_parts(f, x, y):
+    """(ground's phi, slab's phi, qx, qy) at (x, y): the rounded quarter-infinite box is the sharp box shrunk
+    by r, then offset by r; q is p relative to the shrunk box's corner."""
     ground = y - f[0]
     top, edge, r = f[1], f[2], f[3]
-    # Rounded quarter-infinite box: the sharp box shrunk by r, then offset by r.
     qx = x - (edge - r)
     qy = y - (top - r)
     ox = max(qx, 0.0)
     oy = max(qy, 0.0)
-    slab = math.sqrt(ox * ox + oy * oy) + min(max(qx, qy), 0.0) - r
+    return ground, math.sqrt(ox * ox + oy * oy) + min(max(qx, qy), 0.0) - r, qx, qy
+
+
+@njit(cache=True, error_model="numpy")
+def _slab_phi(f, x, y):
+    """Signed distance to the union of the ground and a rounded-edge slab (2D in x-y)."""
+    ground, slab, _, _ = _slab_parts(f, x, y)
     return min(ground, slab)
 
 
 @njit(cache=True, error_model="numpy")
 def _slab_normal(f, x, y):
-    ground = y - f[0]
-    top, edge, r = f[1], f[2], f[3]
-    qx = x - (edge - r)
-    qy = y - (top - r)
-    ox = max(qx, 0.0)
-    oy = max(qy, 0.0)
-    slab = math.sqrt(ox * ox + oy * oy) + min(max(qx, qy), 0.0) - r
+    ground, slab, qx, qy = _slab_parts(f, x, y)
     if ground <= slab:
         return 0.0, 1.0, 0.0
     if qx > 0.0 and qy > 0.0:
@@ -538,6 +538,8 @@ def obstacles_below_brute(f, x, y, z, best):
 @njit(cache=True, error_model="numpy")
 def closest_point_triangle(px, py, pz, ax, ay, az, bx, by, bz, cx, cy, cz):
     """Closest point of triangle abc to p and its feature code (Ericson, RTCD 5.1.5)."""
+    # Deliberately unrolled, as Ericson writes it: the vertex and edge regions are tested one after another in
+    # straight-line code (``duplicates`` pairs its alike blocks; a loop over the regions would reorder the tests)
     abx, aby, abz = bx - ax, by - ay, bz - az
     acx, acy, acz = cx - ax, cy - ay, cz - az
     apx, apy, apz = px - ax, py - ay, pz - az
