@@ -54,6 +54,12 @@ GAIT_DESCRIPTIONS = {
 CURVATURE_GAITS = ("lateral-undulation", "sidewinding")
 
 
+def _check_harmonics(v) -> str | None:
+    if not all(float(h).is_integer() for h in v) or len(set(v)) != len(v):
+        return "expected distinct whole numbers (temporal harmonics of the wave frequency, e.g. [3, 5])"
+    return None
+
+
 @dataclass(frozen=True)
 class MuscleWaveConfig(GaitConfig):
     """``[gaits.<muscle wave>]``: GaitConfig's keys (the wave on the main channel) and the muscle waves' own:
@@ -92,6 +98,15 @@ class MuscleWaveConfig(GaitConfig):
     shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
                                         doc="closed_loop: integral gain of the wave's amplitude and phase error per "
                                             "gait cycle [-] (rate = this x frequency_hz)")
+    shape_harmonics: list = rng((3.0,), ge=2, le=15, check=_check_harmonics,
+                                doc="closed_loop: temporal harmonics h of the wave frequency whose error each segment also "
+                                    "corrects, amplitude and phase, like the fundamental's, when "
+                                    "shape_harmonic_gain_per_cycle > 0 [-]")
+    shape_harmonic_gain_per_cycle: float = rng(0.0, ge=0.0, le=100.0,
+                                               doc="closed_loop: integral gain of each shape_harmonics correction per gait cycle [-]")
+    shape_harmonic_lead_deg: float = rng(0.0, ge=-180.0, le=180.0,
+                                         doc="closed_loop: phase lead [deg] by which each shape_harmonics correction's "
+                                             "update is rotated, the command-to-curvature lag it compensates")
     max_muscle_strain: float = rng(0.3, gt=0.0, lt=0.95,
                                    doc="closed_loop: muscle strength, the largest active fibre strain a muscle can "
                                        "produce [-]; a command beyond it is clipped and counted in "

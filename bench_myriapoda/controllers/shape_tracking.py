@@ -32,6 +32,15 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
    fem body and 0.25 on the hybrid: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
    until it rolled onto its back, where the muscles' sign on the ground is reversed and the loop locks
    at full strength (docs/explanation/shape-tracking.md);
+3b. **the wave's temporal harmonics** (``gait.shape_harmonics``, on when ``gait.shape_harmonic_gain_per_cycle``
+   > 0; off by default): Coulomb friction turns with the direction of slip, so its load on the body is close to
+   a square wave in time and bends the body with the wave's odd harmonics (the third about 8 % of the
+   fundamental at mu_t / mu_f = 1.5, docs/explanation/shape-tracking.md).  For each harmonic h, u_i also gets
+   ah_i sin(h theta_i) + bh_i cos(h theta_i), integrated like (a_i, b_i) from e_i sin(h theta_i) and
+   e_i cos(h theta_i), with the update rotated by a phase lead delta (``gait.shape_harmonic_lead_deg``):
+   d(ah + i bh)/dt = K_h e^{-i delta} 2 e_i e^{i h theta_i}.  Such an integral converges when the plant's phase
+   lag at h omega, from command to measured curvature, is within 90 degrees of delta, and diverges otherwise
+   (tests/test_shape_tracking.py's model plant); the lag is the body's, measured, not assumed;
 4. **muscle strength**: |u_i| is clipped at ``gait.max_muscle_strain``, the largest active fibre
    strain the muscle can produce.  A clipped command stops its integral from growing further
    (anti-windup) and is counted: ``muscle_saturation_fraction`` is the share of (segment, tick)
@@ -121,8 +130,11 @@ def smooth_along_body(x, passes, tmp):
 # ``track_tick``'s arguments, packed.  The tracker holds them as plain tuples, in these fields' order: numba
 # types a plain tuple at a call in C, a namedtuple in Python (measured ~8 us against ~180 us a call, commit
 # fe4ab02), and ``track_tick`` runs 250 times a simulated second.  The namedtuples name the fields for Python.
-TrackGains = namedtuple("TrackGains", "ramp_s dt_tick strain_per_kappa kp ki umax passes")
-TrackState = namedtuple("TrackState", "a b lateral counts err tmp")
+# The harmonics' fields default to none (empty arrays), the fundamental's tracker alone.
+_NO_HARMONICS = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0))
+TrackGains = namedtuple("TrackGains", "ramp_s dt_tick strain_per_kappa kp ki umax passes harmonics ki_h lead_cos lead_sin",
+                        defaults=_NO_HARMONICS)
+TrackState = namedtuple("TrackState", "a b lateral counts err tmp ah bh", defaults=(np.zeros((0, 0)), np.zeros((0, 0))))
 
 
 @njit(cache=True, error_model="numpy")
@@ -132,14 +144,17 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
     kappa: (n_m,) measured ground curvature [1/m]; s_muscle: (n_m,) [m]; waves: (3, 5) wave table whose
     LATERAL row is the feed-forward; t: the tick's time [s]; counting: count this tick's commands (steady
     window).  gains = (ramp_s [s], dt_tick [s], strain_per_kappa = g L [strain m] (sign included: the strain of a
-    unit ground curvature), kp [-], ki [1/s], umax [-], passes: binomial smoothing passes of the error along the
-    body before the proportional and integral terms (``smooth_along_body``; module docstring, step 3)), in
-    ``TrackGains``' order.  state = (a, b: (n_m,) integral state [strain], updated;
-    lateral: (n_m,) OVERWRITTEN with the clipped LATERAL strain; counts: (3,) += (commands, clipped commands,
-    peak |u| so far) when counting; err, tmp: (n_m,) scratch), in ``TrackState``' order.
+    unit ground curvature), kp [-], ki [1/s] (the fundamental's), umax [-], passes: binomial smoothing passes of
+    the error along the body before the proportional and integral terms (``smooth_along_body``; module docstring,
+    step 3), harmonics: (n_h,) int64 temporal harmonics h >= 2 with their own correction (module docstring,
+    step 3b), ki_h: (n_h,) their gains [1/s], lead_cos, lead_sin: (n_h,) cos and sin of the phase lead [rad]
+    each correction's update is rotated by), in ``TrackGains``' order.  state = (a, b: (n_m,) the fundamental's
+    integral state [strain], updated; lateral: (n_m,) OVERWRITTEN with the clipped LATERAL strain; counts: (3,) +=
+    (commands, clipped commands, peak |u| so far) when counting; err, tmp: (n_m,) scratch; ah, bh: (n_h, n_m) the
+    harmonics' integral state [strain], updated), in ``TrackState``' order.
     """
-    ramp_s, dt_tick, strain_per_kappa, kp, ki, umax, passes = gains
-    a, b, lateral, counts, err, tmp = state
+    ramp_s, dt_tick, strain_per_kappa, kp, ki, umax, passes, harmonics, ki_h, lead_cos, lead_sin = gains
+    a, b, lateral, counts, err, tmp, ah, bh = state
     r = 1.0
     if ramp_s > 0.0 and t < ramp_s:
         r = max(t, 0.0) / ramp_s
@@ -148,6 +163,7 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
     om = waves[_LATERAL, _OMEGA]
     ph = waves[_LATERAL, _PHASE]
     n = s_muscle.shape[0]
+    n_h = harmonics.shape[0]
     for i in range(n):
         th = k * s_muscle[i] - om * t + ph
         err[i] = r * amp * math.sin(th) - strain_per_kappa * kappa[i]
@@ -158,10 +174,20 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
         ref = r * amp * sn
         e = err[i]
         u = ref + a[i] * sn + b[i] * cs + kp * e
+        for j in range(n_h):
+            hth = harmonics[j] * th
+            u += ah[j, i] * math.sin(hth) + bh[j, i] * math.cos(hth)
         clipped = abs(u) > umax
         if not clipped or e * u < 0.0:  # anti-windup: a clipped command's integral only unwinds
             a[i] += ki * dt_tick * 2.0 * e * sn
             b[i] += ki * dt_tick * 2.0 * e * cs
+            for j in range(n_h):
+                hth = harmonics[j] * th
+                ea = 2.0 * e * math.sin(hth)
+                eb = 2.0 * e * math.cos(hth)
+                # the update rotated back by the plant's lag at this harmonic (module docstring, step 3b)
+                ah[j, i] += ki_h[j] * dt_tick * (lead_cos[j] * ea + lead_sin[j] * eb)
+                bh[j, i] += ki_h[j] * dt_tick * (lead_cos[j] * eb - lead_sin[j] * ea)
         if clipped:
             u = umax if u > 0.0 else -umax
         lateral[i] = u
@@ -185,6 +211,12 @@ class ShapeTracker:
         self.dt_tick = 1.0 / float(g.shape_control_rate_hz)
         self.t_steady = float(case.metrics.warmup_cycles) * g.period_s
         self.body_length = float(case.creature.body_length_m)
+        # a gain of 0 switches the harmonics' correction off: none are carried
+        on = float(g.shape_harmonic_gain_per_cycle) > 0.0
+        self.harmonics = np.asarray(g.shape_harmonics if on else (), dtype=np.int64).reshape(-1)
+        self.ki_h = np.full(self.harmonics.shape[0], float(g.shape_harmonic_gain_per_cycle) * float(g.frequency_hz))
+        lead = np.full(self.harmonics.shape[0], math.radians(float(g.shape_harmonic_lead_deg)))
+        self.lead_cos, self.lead_sin = np.cos(lead), np.sin(lead)
         self.ready = False
 
     def reset(self, body_info, strain_per_curvature: float) -> None:
@@ -197,8 +229,10 @@ class ShapeTracker:
         self.kappa = np.zeros(n)
         # plain tuples (``TrackGains``, ``TrackState``: why there)
         self.gains = tuple(TrackGains(self.ramp_s, self.dt_tick, self.strain_per_kappa, self.kp, self.ki, self.umax,
-                                      SMOOTHING_PASSES))
-        self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n)))
+                                      SMOOTHING_PASSES, self.harmonics, self.ki_h, self.lead_cos, self.lead_sin))
+        n_h = self.harmonics.shape[0]
+        self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n),
+                                      np.zeros((n_h, n)), np.zeros((n_h, n))))
         self.s_centre = None
         self.ready = True
 

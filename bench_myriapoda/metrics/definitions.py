@@ -143,6 +143,9 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
      "straight body", "bending gaits"),
     ("shape_not_achieved", "0/1", "1 when `shape_tracking_error` is above 0.10: the body did not make the "
      "commanded shape, so its locomotion is not comparable across bodies", "bending gaits"),
+    ("shape_harmonic_content", "-", "RMS over the interior centre-line points of the measured curvature's temporal "
+     "harmonics 2 to 5 over the steady window x body length / commanded amplitude: 0 for a travelling sine of any "
+     "amplitude and phase (the waveform, not the amplitude or lag)", "bending gaits"),
     ("muscle_saturation_fraction", "-", "share of steady-window (segment, control tick) strain commands clipped at "
      "`gait.max_muscle_strain` (closed-loop shape control only)", "bending gaits"),
     ("muscle_strain_peak", "-", "largest |lateral strain| commanded in the steady window (closed-loop shape control "

@@ -36,6 +36,7 @@ from ..core.series import Series
 from .body_shape import ground_curvature, pitch_stride
 
 SHAPE_ERROR_THRESHOLD = 0.10
+HARMONICS_FITTED = 5  # the temporal harmonics ``curvature_harmonics`` fits: the fundamental and 2 to 5
 
 
 def commands_a_shape(case) -> bool:
@@ -58,24 +59,72 @@ def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:
     return LATERAL_GROUND_SIGN * ramp[:, None] * (g.curvature_amplitude / L) * np.sin(theta)
 
 
-def shape_tracking_error(series: Series, case, i0: int, i1: int) -> float:
-    """RMS (measured - commanded) ground curvature x L / A over samples [i0, i1] (module docstring); NaN when
-    the run has too few samples or centres."""
+def _measured_profile(series: Series, case, i0: int, i1: int):
+    """(s (n,) [m], t (T,) [s], kappa (T, n) [1/m]): the measured ground curvature at the interior points one pitch
+    apart over samples [i0, i1] (module docstring); None when the run has too few samples or centres."""
     centers = series.segment_centers
     if centers is None or i1 - i0 < 2:
-        return float("nan")
+        return None
     stride = pitch_stride(centers[0], case.creature.segment_length_m)
     pts = centers[:, ::stride]
     if pts.shape[1] < 4:
-        return float("nan")
+        return None
     # rest arc length of each point from the head: the head end face to the first point, then the chords at t = 0
     first = float(np.linalg.norm(pts[0, 0] - series.head[0]))
     s = first + np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pts[0], axis=0), axis=1))])
-    t = series.t[i0:i1 + 1]
     kappa, _ = ground_curvature(pts[i0:i1 + 1])
-    diff = kappa - commanded_curvature(case, s[1:-1], t)
+    return s[1:-1], series.t[i0:i1 + 1], kappa
+
+
+def shape_tracking_error(series: Series, case, i0: int, i1: int) -> float:
+    """RMS (measured - commanded) ground curvature x L / A over samples [i0, i1] (module docstring); NaN when
+    the run has too few samples or centres."""
+    prof = _measured_profile(series, case, i0, i1)
+    if prof is None:
+        return float("nan")
+    s, t, kappa = prof
+    diff = kappa - commanded_curvature(case, s, t)
     L = float(case.creature.body_length_m)
     return float(np.sqrt(np.mean(diff ** 2)) * L / case.gait.curvature_amplitude)
+
+
+def curvature_harmonics(series: Series, case, i0: int, i1: int, max_harmonic: int = HARMONICS_FITTED):
+    """(s (n,) [m], c (max_harmonic, n) complex [1/m]): the measured ground curvature's temporal harmonics at
+    each interior point over samples [i0, i1], least-squares fitted as sum_h Im(c_h e^{i h theta}) with the
+    command's phase theta = k s - omega t + phi (``commanded_curvature``; h = 1 .. max_harmonic, plus a
+    constant), so c_1 of the commanded shape is sign A / L; None when the run has too few samples or centres."""
+    prof = _measured_profile(series, case, i0, i1)
+    if prof is None:
+        return None
+    s, t, kappa = prof
+    g = case.gait
+    L = float(case.creature.body_length_m)
+    direction = 1.0 if g.direction == "head-to-tail" else -1.0
+    k = direction * 2.0 * math.pi / (g.wavelength_bl * L)
+    omega = 2.0 * math.pi * g.frequency_hz
+    c = np.zeros((max_harmonic, s.shape[0]), dtype=complex)
+    for j in range(s.shape[0]):
+        theta = k * s[j] - omega * t + math.radians(g.phase_deg)
+        h = np.arange(1, max_harmonic + 1)
+        basis = np.concatenate([np.sin(np.outer(theta, h)), np.cos(np.outer(theta, h)), np.ones((t.shape[0], 1))],
+                               axis=1)
+        coef, *_ = np.linalg.lstsq(basis, kappa[:, j], rcond=None)
+        c[:, j] = coef[:max_harmonic] + 1j * coef[max_harmonic:2 * max_harmonic]
+    return s, c
+
+
+def shape_harmonic_content(series: Series, case, i0: int, i1: int) -> float:
+    """RMS over the interior points of the measured curvature's temporal harmonics 2 to ``HARMONICS_FITTED``
+    over the COMMANDED amplitude [-] (``curvature_harmonics``): 0 for a pure travelling sine in time,
+    whatever its amplitude and phase; NaN when the window is shorter than a cycle."""
+    if series.t[i1] - series.t[i0] < 1.0 / case.gait.frequency_hz:
+        return float("nan")
+    fit = curvature_harmonics(series, case, i0, i1)
+    if fit is None:
+        return float("nan")
+    _, c = fit
+    L = float(case.creature.body_length_m)
+    return float(np.sqrt(np.mean(np.sum(np.abs(c[1:]) ** 2, axis=0))) * L / case.gait.curvature_amplitude)
 
 
 def shape_flag_reason(metrics: dict[str, float], case) -> str:
@@ -97,5 +146,5 @@ def shape_tracking_metrics(series: Series, case, i0: int, i1: int) -> dict[str, 
     if not commands_a_shape(case):
         return {}
     err = shape_tracking_error(series, case, i0, i1)
-    return {"shape_tracking_error": err,
+    return {"shape_tracking_error": err, "shape_harmonic_content": shape_harmonic_content(series, case, i0, i1),
             "shape_not_achieved": float(not (math.isfinite(err) and err <= SHAPE_ERROR_THRESHOLD))}
