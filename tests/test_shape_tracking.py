@@ -390,6 +390,12 @@ def test_the_harmonic_correction_removes_a_third_harmonic_and_its_lead_keeps_a_l
 
 HARMONIC_CORRECTION = ("gait.shape_harmonics=[3]", "gait.shape_harmonic_gain_per_cycle=1",
                        "gait.shape_harmonic_lead_deg=90")
+# The grid's setting per body (scenarios/matrix/slithering-harmonics.toml): the hybrid at gain 1 missed its shape at
+# mu_t / mu_f = 1 (shape_tracking_error 0.153, the harmonic content still falling after 11 cycles); at 0.5 it holds it
+# (0.058) and still reaches the reference at 1.5 (0.0960 against 0.0989 BL/cycle)
+GRID_HARMONIC_CORRECTION = {"massspring": HARMONIC_CORRECTION, "fem": HARMONIC_CORRECTION,
+                            "hybrid": ("gait.shape_harmonics=[3]", "gait.shape_harmonic_gain_per_cycle=0.5",
+                                       "gait.shape_harmonic_lead_deg=90")}
 
 
 def test_the_third_harmonic_correction_makes_the_lattice_snake_follow_the_commanded_waveform():
@@ -412,5 +418,6 @@ def test_the_third_harmonic_correction_makes_the_lattice_snake_follow_the_comman
 def test_every_body_reaches_the_commanded_shape_over_the_friction_grid_with_the_harmonic_correction(body, ratio):
     """The grid of ``test_every_body_reaches_the_commanded_shape_over_the_friction_grid`` with the third harmonic
     corrected (scenarios/matrix/slithering-harmonics.toml): the same bounds, and the waveform's harmonics small."""
-    check_tracks_and_moves(body, ratio, *HARMONIC_CORRECTION, duration=GRID_S)
-    assert slither_for(body, ratio, GRID_S, *CLOSED[body], *HARMONIC_CORRECTION).metrics["shape_harmonic_content"] < 0.05
+    check_tracks_and_moves(body, ratio, *GRID_HARMONIC_CORRECTION[body], duration=GRID_S)
+    assert slither_for(body, ratio, GRID_S, *CLOSED[body],
+                       *GRID_HARMONIC_CORRECTION[body]).metrics["shape_harmonic_content"] < 0.05
