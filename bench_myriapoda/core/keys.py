@@ -59,13 +59,10 @@ def _plain(v: Any) -> Any:
     return list(v) if isinstance(v, tuple) else v
 
 
-def _row(key: str, section: str, r: dict[str, Any], bodies: list[str] | None = None) -> dict[str, Any]:
-    row = {"key": key, "section": section, "type": r["type"], "default": _plain(r["default"]),
-           "allowed": {k: _plain(v) for k, v in r["allowed"].items()}, "allowed_text": _allowed_text(r["allowed"]),
-           "unit": unit_of(key, r["doc"]), "description": r["doc"]}
-    if bodies is not None:
-        row["bodies"] = bodies
-    return row
+def _row(key: str, section: str, r: dict[str, Any]) -> dict[str, Any]:
+    return {"key": key, "section": section, "type": r["type"], "default": _plain(r["default"]),
+            "allowed": {k: _plain(v) for k, v in r["allowed"].items()}, "allowed_text": _allowed_text(r["allowed"]),
+            "unit": unit_of(key, r["doc"]), "description": r["doc"]}
 
 
 def sections() -> list[str]:
@@ -100,18 +97,8 @@ def config_keys(section: str | None = None) -> list[dict[str, Any]]:
         if name == "gait" and section in (None, name):
             rows += _own_gait_keys(cls)
     if section in (None, "body"):
-        merged: dict[tuple, dict[str, Any]] = {}
-        for body, spec in sorted(registry.BODIES.items()):
-            for r in describe_section(spec.config_cls):
-                key = f"body.{r['key']}"
-                if key in NAME_KEYS:
-                    continue
-                ident = (key, repr(r["default"]), r["doc"], repr(sorted(r["allowed"].items(), key=str)))
-                if ident in merged:
-                    merged[ident]["bodies"].append(body)
-                else:
-                    merged[ident] = _row(key, "body", r, [body])
-        rows += sorted(merged.values(), key=lambda row: (row["key"], row["bodies"]))
+        rows += _shared_rows("body", "bodies", ((b, spec.config_cls) for b, spec in registry.BODIES.items()),
+                             skip=lambda key: f"body.{key}" in NAME_KEYS)
     return rows
 
 
@@ -119,17 +106,25 @@ def _own_gait_keys(base: type) -> list[dict[str, Any]]:
     """The keys a gait's own configuration class adds to ``base`` (``GaitSpec.config_cls``), one row per key
     and default with ``gaits``, the gaits that have it (the muscle waves' shape keys, a plugin gait's own)."""
     common = {f.name for f in dataclasses.fields(base)}
+    return _shared_rows("gait", "gaits", ((g, spec.config_cls) for g, spec in registry.GAITS.items()),
+                        skip=lambda key: key in common)
+
+
+def _shared_rows(section: str, owners_field: str, classes, skip) -> list[dict[str, Any]]:
+    """One row per key of the (owner, config class) pairs ``classes`` and per default, description and range,
+    with ``owners_field`` the sorted owners that have it that way; keys for which ``skip(key)`` is true are
+    left out."""
     merged: dict[tuple, dict[str, Any]] = {}
-    for gait, spec in sorted(registry.GAITS.items()):
-        for r in describe_section(spec.config_cls):
-            if r["key"] in common:
+    for owner, cls in sorted(classes, key=lambda oc: oc[0]):
+        for r in describe_section(cls):
+            if skip(r["key"]):
                 continue
             ident = (r["key"], repr(r["default"]), r["doc"], repr(sorted(r["allowed"].items(), key=str)))
             if ident not in merged:
-                merged[ident] = _row(f"gait.{r['key']}", "gait", r)
-                merged[ident]["gaits"] = []
-            merged[ident]["gaits"].append(gait)
-    return sorted(merged.values(), key=lambda row: (row["key"], row["gaits"]))
+                merged[ident] = _row(f"{section}.{r['key']}", section, r)
+                merged[ident][owners_field] = []
+            merged[ident][owners_field].append(owner)
+    return sorted(merged.values(), key=lambda row: (row["key"], row[owners_field]))
 
 
 def accepted_keys() -> set[str]:
