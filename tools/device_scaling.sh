@@ -24,6 +24,9 @@
 # Local smoke test (2 cores, tiny matrices): DEVICE_TINY=1 BIG=2 MID=2 BUDGET_S=2400 OUT=/tmp/x bash tools/device_scaling.sh
 # (SCALING_CACHE=DIR: use that numba cache instead of a fresh one; PY=...: another interpreter)
 # One device call for the targets: OUT=$OUT BUDGET_S=420 bash tools/device_scaling.sh (about 6 minutes on 16 cores).
+# PLAN=repeats: only the cold quick and probe series, then the probe on BIG five times, on 1 once, the quick
+# matrix warm on BIG three times and on MID (about 4 minutes on 16 cores).  PACK=1: $OUT also gets
+# scaling.tar.gz, everything in one file (the device tool returns at most 8 files).
 set -u
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -98,6 +101,16 @@ fixed_costs() {  # spawn and forkserver workers: 1 alone and BIG at once (warm c
 
 series quick-cold-$BIG  "$QUICK" "$BIG" 75
 series probe-cold-$BIG  "$PROBE" "$BIG" 60
+if [ "${PLAN:-full}" = repeats ]; then
+  # PLAN=repeats: the two targets again, the 16-worker series several times (the first full run's probe on 16
+  # read 7.5 s warm and 6.3 s in its cold series: one run each is not a figure)
+  export SEED_FROM=probe-cold-$BIG
+  for i in 1 2 3 4 5; do series probe-warm-$BIG-r$i "$PROBE" "$BIG" 25; done
+  series probe-warm-1 "$PROBE" 1 80
+  for i in 1 2 3; do SEED_FROM=quick-cold-$BIG series quick-warm-$BIG-r$i "$QUICK" "$BIG" 20; done
+  SEED_FROM=quick-cold-$BIG series quick-warm-$MID "$QUICK" "$MID" 20
+  BUDGET_S=0  # nothing of the full plan below starts
+fi
 fixed_costs
 export SEED_FROM=probe-cold-$BIG
 series probe-warm-$BIG  "$PROBE" "$BIG" 25
@@ -156,3 +169,7 @@ for r in rows:
 print("\n".join(lines))
 EOF
 log "done in $(( $(date +%s) - T0 )) s"
+# the device returns at most 8 files: with PACK=1 everything above goes back as one archive too
+if [ -n "${PACK:-}" ]; then
+  tar -czf "$WORK/scaling.tar.gz" -C "$OUT" . && mv "$WORK/scaling.tar.gz" "$OUT/scaling.tar.gz"
+fi

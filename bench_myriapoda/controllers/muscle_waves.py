@@ -100,13 +100,17 @@ class MuscleWaveConfig(GaitConfig):
                                             "gait cycle [-] (rate = this x frequency_hz)")
     shape_harmonics: list = rng((3.0,), ge=2, le=15, check=_check_harmonics,
                                 doc="closed_loop: temporal harmonics h of the wave frequency whose error each segment also "
-                                    "corrects, amplitude and phase, like the fundamental's, when "
-                                    "shape_harmonic_gain_per_cycle > 0 [-]")
-    shape_harmonic_gain_per_cycle: float = rng(0.0, ge=0.0, le=100.0,
-                                               doc="closed_loop: integral gain of each shape_harmonics correction per gait cycle [-]")
-    shape_harmonic_lead_deg: float = rng(0.0, ge=-180.0, le=180.0,
+                                    "corrects, amplitude and phase, like the fundamental's, when the harmonic gain "
+                                    "(shape_harmonic_gain_per_cycle) is > 0 [-]")
+    shape_harmonic_gain_per_cycle: float = rng(-1.0, ge=-1.0, le=100.0,
+                                               doc="closed_loop: integral gain of each shape_harmonics correction per "
+                                                   "gait cycle [-]; -1 (default): the body model's own "
+                                                   "(BodySpec.shape_harmonic_gain_per_cycle: 1 on massspring and fem, "
+                                                   "0.5 on hybrid); 0: no harmonic corrected")
+    shape_harmonic_lead_deg: float = rng(90.0, ge=-180.0, le=180.0,
                                          doc="closed_loop: phase lead [deg] by which each shape_harmonics correction's "
-                                             "update is rotated, the command-to-curvature lag it compensates")
+                                             "update is rotated, the command-to-curvature lag it compensates (90: "
+                                             "measured on the three bodies, docs/explanation/shape-tracking.md)")
     max_muscle_strain: float = rng(0.3, gt=0.0, lt=0.95,
                                    doc="closed_loop: muscle strength, the largest active fibre strain a muscle can "
                                        "produce [-]; a command beyond it is clipped and counted in "

@@ -32,8 +32,10 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
    fem body and 0.25 on the hybrid: smoothed, K_p = 2 still made the fem snake curl beyond the command over ~10 s
    until it rolled onto its back, where the muscles' sign on the ground is reversed and the loop locks
    at full strength (docs/explanation/shape-tracking.md);
-3b. **the wave's temporal harmonics** (``gait.shape_harmonics``, on when ``gait.shape_harmonic_gain_per_cycle``
-   > 0; off by default): Coulomb friction turns with the direction of slip, so its load on the body is close to
+3b. **the wave's temporal harmonics** (``gait.shape_harmonics``, default the third, at
+   ``gait.shape_harmonic_gain_per_cycle``; -1, the default, takes the body's own
+   ``BodySpec.shape_harmonic_gain_per_cycle``: 1 on the lattice and the fem body, 0.5 on the hybrid; 0 switches it
+   off): Coulomb friction turns with the direction of slip, so its load on the body is close to
    a square wave in time and bends the body with the wave's odd harmonics (the third about 8 % of the
    fundamental at mu_t / mu_f = 1.5, docs/explanation/shape-tracking.md).  For each harmonic h, u_i also gets
    ah_i sin(h theta_i) + bh_i cos(h theta_i), integrated like (a_i, b_i) from e_i sin(h theta_i) and
@@ -211,13 +213,22 @@ class ShapeTracker:
         self.dt_tick = 1.0 / float(g.shape_control_rate_hz)
         self.t_steady = float(case.metrics.warmup_cycles) * g.period_s
         self.body_length = float(case.creature.body_length_m)
-        # a gain of 0 switches the harmonics' correction off: none are carried
-        on = float(g.shape_harmonic_gain_per_cycle) > 0.0
-        self.harmonics = np.asarray(g.shape_harmonics if on else (), dtype=np.int64).reshape(-1)
-        self.ki_h = np.full(self.harmonics.shape[0], float(g.shape_harmonic_gain_per_cycle) * float(g.frequency_hz))
-        lead = np.full(self.harmonics.shape[0], math.radians(float(g.shape_harmonic_lead_deg)))
-        self.lead_cos, self.lead_sin = np.cos(lead), np.sin(lead)
+        # < 0: the body's own harmonic gain (``BodySpec.shape_harmonic_gain_per_cycle``), set in ``reset``
+        self.kh_key = float(g.shape_harmonic_gain_per_cycle)
+        self.harmonic_list = tuple(g.shape_harmonics)
+        self.frequency_hz = float(g.frequency_hz)
+        self.lead_rad = math.radians(float(g.shape_harmonic_lead_deg))
+        self._set_harmonics(max(self.kh_key, 0.0))
         self.ready = False
+
+    def _set_harmonics(self, gain_per_cycle: float) -> None:
+        """The harmonics corrected at ``gain_per_cycle`` [-]; a gain of 0 switches the correction off: none are
+        carried (and the loop is the fundamental's alone, bit for bit)."""
+        self.kh = gain_per_cycle
+        self.harmonics = np.asarray(self.harmonic_list if gain_per_cycle > 0.0 else (), dtype=np.int64).reshape(-1)
+        self.ki_h = np.full(self.harmonics.shape[0], gain_per_cycle * self.frequency_hz)
+        lead = np.full(self.harmonics.shape[0], self.lead_rad)
+        self.lead_cos, self.lead_sin = np.cos(lead), np.sin(lead)
 
     def reset(self, body_info, strain_per_curvature: float) -> None:
         """Prepare for a body: its muscle arc positions, pitch and the calibrated gain [strain per curvature x L]."""
@@ -225,6 +236,8 @@ class ShapeTracker:
         self.pitch = float(body_info["segment_pitch_m"])
         self.strain_per_kappa = LATERAL_GROUND_SIGN * strain_per_curvature * self.body_length
         self.kp = self.kp_key if self.kp_key >= 0.0 else float(body_info.get("shape_gain_p", 0.0))
+        self._set_harmonics(self.kh_key if self.kh_key >= 0.0
+                            else float(body_info.get("shape_harmonic_gain_per_cycle", 0.0)))
         n = self.s_muscle.shape[0]
         self.kappa = np.zeros(n)
         # plain tuples (``TrackGains``, ``TrackState``: why there)

@@ -47,6 +47,9 @@ class BodySpec:
     - ``shape_gain_p``: the proportional gain [-] of the closed-loop shape tracking of a bending wave
       (``controllers.shape_tracking``) that this body's own dynamics tolerate; ``gait.shape_gain_p = -1``
       (the default) takes it.  0: the tracker corrects the wave's amplitude and phase only.
+    - ``shape_harmonic_gain_per_cycle``: the integral gain per gait cycle [-] of the same tracker's correction of
+      the wave's temporal harmonics (``gait.shape_harmonics``) that this body's dynamics tolerate;
+      ``gait.shape_harmonic_gain_per_cycle = -1`` (the default) takes it.  0: no harmonic is corrected.
     """
 
     name: str
@@ -60,6 +63,7 @@ class BodySpec:
     default_params: Mapping[str, Any] | None = None
     checks: Mapping[str, bool] = field(default_factory=dict)
     shape_gain_p: float = 0.0
+    shape_harmonic_gain_per_cycle: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -24,8 +24,8 @@ def needs_curvature_gain(case) -> bool:
 
 
 def calibrated_body_info(body, case) -> dict[str, Any]:
-    """``body_info`` plus ``strain_per_curvature`` [-] and the body's ``shape_gain_p`` [-] (``BodySpec``) when
-    the gait commands a curvature."""
+    """``body_info`` plus ``strain_per_curvature`` [-] and the body's ``shape_gain_p`` and
+    ``shape_harmonic_gain_per_cycle`` [-] (``BodySpec``) when the gait commands a curvature."""
     info = body_info(body, case.dt)
     if needs_curvature_gain(case) and MUSCLES in body.capabilities:
         registry.load_all()
@@ -36,6 +36,7 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
         info["strain_per_curvature"] = lateral_gain(functools.partial(_in_its_own_world, spec.factory), cal_case)
         info["shape_gain_p"] = float(spec.shape_gain_p)
+        info["shape_harmonic_gain_per_cycle"] = float(spec.shape_harmonic_gain_per_cycle)
     return info
 
 

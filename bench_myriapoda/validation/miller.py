@@ -26,9 +26,20 @@ MILLER = "Miller 1988"
 PATH_FOLLOWING_MAX_BL = 0.05      # Image 2: segments within 5 % of a body length of the head's path
 SNAKE_MIN_BL_PER_CYCLE = 0.02     # ... while it really moves (VALIDATION.md: isotropic snake stays below this)
 SIDEWINDER_REVERSAL_RATIO = 0.5   # the reversed gait's sideways speed at least half the forward one's
-SLITHERING_REL_TOL = 0.25         # dynamic snake vs the inertia-free kinematic model (Fr small, not zero)
-SLITHERING_RATIOS = (2.0, 4.0, 8.0)  # mu_t / mu_f of the sweep
-SLITHERING_MU_F = 0.1
+# The slithering sweep.  The kinematic model has no inertia, so the snake runs at the Froude number
+# VALIDATION.md names for a comparison with it, L f^2 / (g mu_f) = 0.1: f = 0.140071 Hz for the 2.5 m snake at
+# mu_f = 0.05, with issue 27's shape (curvature x length 7, one wave per body) and mu_b = 1.5 mu_f.  At the snake's
+# own gait (f = 0.5 Hz, two waves per body, mu_f = 0.1: Fr = 0.64) inertia carries the body: the fem snake went
+# 0.10 BL/cycle against the model's 0.052 at mu_t / mu_f = 2 and missed its shape (error 0.16), so that sweep
+# measured the Froude number, not the friction balance.  The tolerance is issue 27's, 15 %: on its whole grid at
+# 78.5 s every body came within 7 % of the model at ratios 1.5 to 10 (docs/explanation/shape-tracking.md).
+SLITHERING_REL_TOL = 0.15
+SLITHERING_RATIOS = (2.0, 5.0, 10.0)  # mu_t / mu_f of the sweep (--quick: the last two)
+SLITHERING_MU_F = 0.05
+SLITHERING_MU_B = 0.075
+SLITHERING_SHAPE = ("gait.curvature_amplitude=7", "gait.wavelength_bl=1", "gait.frequency_hz=0.140071")
+# 6 periods of 7.14 s, 3 warm-up (the closed loop's settling) and 3 measured; --quick: 4, 2 warm-up and 2 measured
+SLITHERING_DURATION_S = {False: (43.0, 3), True: (28.6, 2)}
 
 
 def optional_reference(module: str):
@@ -161,12 +172,13 @@ def judge_caterpillar_slope(t, com, period_s: float, slope_deg: float, speed_bl_
 def _slithering_sweep(ctx: Context, body: str):
     """(ratios, runs) of the snake's mu_t / mu_f sweep (cached by ``ctx.run``: both slithering rows read it)."""
     ratios = SLITHERING_RATIOS[1:] if ctx.quick else SLITHERING_RATIOS
+    duration, warmup = SLITHERING_DURATION_S[bool(ctx.quick)]
     runs = []
     for ratio in ratios:
-        over = ("friction.model=coulomb", f"friction.mu_forward={SLITHERING_MU_F}", "friction.mu_backward=0.3",
-                f"friction.mu_transverse={ratio * SLITHERING_MU_F}")
-        runs.append(ctx.run("snake", body, "flat", "lateral-undulation", duration=8.0 if ctx.quick else 16.0,
-                            overrides=over))
+        over = (*SLITHERING_SHAPE, "friction.model=coulomb", f"friction.mu_forward={SLITHERING_MU_F}",
+                f"friction.mu_backward={SLITHERING_MU_B}", f"friction.mu_transverse={ratio * SLITHERING_MU_F}",
+                f"metrics.warmup_cycles={warmup}")
+        runs.append(ctx.run("snake", body, "flat", "lateral-undulation", duration=duration, overrides=over))
     return ratios, runs
 
 
@@ -186,8 +198,11 @@ def _against_reference(ctx: Context, body: str, shape_of) -> Outcome:
         if not (math.isfinite(curvature) and math.isfinite(wavelength) and wavelength > 0):
             return Outcome("FAIL", None, src, tol, f"mu_t/mu_f {ratio:g}: no measurable body wave (curvature "
                                                    f"{curvature}, wavelength {wavelength})")
-        ref = mod.steady_slithering(curvature, wavelength, SLITHERING_MU_F, 0.3,
-                                    ratio * SLITHERING_MU_F).speed_bl_per_cycle
+        # the belly's width: the bodies touch the ground along two edges, not Hu et al.'s line
+        # (tests/test_slithering_bodies.py measures why)
+        width_bl = r.case.creature.width_m / r.case.creature.body_length_m
+        ref = mod.steady_slithering(curvature, wavelength, SLITHERING_MU_F, SLITHERING_MU_B,
+                                    ratio * SLITHERING_MU_F, width_bl=width_bl).speed_bl_per_cycle
         measured.append(r.metrics["speed_bl_per_cycle"])
         reference.append(float(ref))
         if r.metrics.get("shape_not_achieved") == 1.0:

@@ -621,4 +621,7 @@ BACKEND = BodySpec(
     footprint=footprint, check_buildable=check_buildable, checks=CHECKS,
     # the proportional shape gain its box-and-link chain tolerates once the error is smoothed along the body
     # (controllers/shape_tracking.py): 0.5 blew the snake up at mu_t / mu_f = 1, and 2 at 5
-    shape_gain_p=0.25)
+    shape_gain_p=0.25,
+    # its third-harmonic correction at half the others' gain: at 1 per cycle the snake missed its shape at
+    # mu_t / mu_f = 1 (error 0.153, the harmonic still settling after 11 cycles; docs/explanation/shape-tracking.md)
+    shape_harmonic_gain_per_cycle=0.5)

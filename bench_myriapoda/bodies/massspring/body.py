@@ -277,4 +277,7 @@ BACKEND = BodySpec(
     footprint=footprint, check_buildable=check_buildable, checks=CHECKS,
     # the lattice's proportional shape gain (controllers/shape_tracking.py): without it the tracked snake
     # diverged at mu_t / mu_f = 1 and missed the shape by 0.20 at 5 (docs/explanation/shape-tracking.md)
-    shape_gain_p=2.0)
+    shape_gain_p=2.0,
+    # its third-harmonic correction at gain 1 per cycle: the grid of issue 27 at 78.5 s passes on every ratio
+    # (shape error 0.016-0.058; docs/explanation/shape-tracking.md)
+    shape_harmonic_gain_per_cycle=1.0)
