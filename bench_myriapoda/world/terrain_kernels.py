@@ -388,8 +388,13 @@ def obstacles_below(f, x, y, z, best):
     """(phi, record index) of the nearest obstacle if it is nearer than ``best``, else (best, -1).
 
     Through the obstacle grid (module docstring); the result equals
-    ``obstacles_below_brute``'s bit for bit.
+    ``obstacles_below_brute``'s bit for bit.  A point that the grid's cell tops show to be at least
+    ``best`` from every obstacle (``_obstacles_clear``: a small cutoff above the obstacles, as the
+    obstacle-penetration metric's 0 for body points) gets (best, -1) without the search: what the search
+    returns there, since only a record nearer than best changes it.
     """
+    if f[H_NOBST] > 0.0 and _obstacles_clear(f, x, y, z, best):
+        return best, -1
     d, j, _ = _grid_below(f, x, y, z, best)
     return d, j
 
@@ -407,7 +412,8 @@ def obstacles_below_counted(f, x, y, z, best):
 @njit(cache=True, error_model="numpy", inline="always")
 def _grid_below(f, x, y, z, best):
     """``obstacles_below_counted``'s search, inlined into each of the few kernels that answer a terrain query
-    (``_min_obstacles``, ``_obstacle_or_base_normal``, ``obstacles_below``): one call per query instead of
+    (``_min_obstacles``, ``_nearest_below``, ``_obstacle_or_base_normal``, ``_phi_at_least``,
+    ``obstacles_below``): one call per query instead of
     a chain of three (each call passes f and updates its reference count; issue 30 measured the chain at
     about two thirds of an obstacle query's cost when no obstacle is near)."""
     off = int(f[H_OBST])
@@ -910,6 +916,13 @@ def _min_obstacles(f, phi, x, y, z):
 
 
 @njit(cache=True, error_model="numpy")
+def _nearest_below(f, phi, x, y, z):
+    """(min(phi, the obstacles' phi), the nearest obstacle's record or -1): ``_min_obstacles`` with the record."""
+    d, j, _ = _grid_below(f, x, y, z, phi)
+    return d, j
+
+
+@njit(cache=True, error_model="numpy")
 def _obstacle_or_base_normal(kind, f, x, y, z):
     _, j, _ = _grid_below(f, x, y, z, _base_phi(kind, f, x, y, z))
     if j >= 0:
@@ -936,25 +949,46 @@ def signed_distance(kind, f, x, y, z):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def _grid_scalars(f):
+    """What ``_clear_in_grid`` reads of f's obstacle grid (module docstring): (D - slack [m], origin x0, z0 [m],
+    1/h [1/m], cells nx, nz (floats), nz (int), cell tops offset (int)).  f must have obstacles."""
+    g = int(f[H_OBST]) + OBST_STRIDE * int(f[H_NOBST])
+    return (f[g + 8] - GRID_SLACK_CELLS * f[g], f[g + 2], f[g + 3], f[g + 1], f[g + 4], f[g + 5], int(f[g + 5]),
+            int(f[g + 9]))
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _clear_in_grid(G, f, x, y, z, d):
+    """``_obstacles_clear`` on f's grid scalars G (``_grid_scalars``), read once by a caller with many points."""
+    reach, x0, z0, invh, fnx, fnz, nz, tops = G
+    if not d <= reach:
+        return False
+    u = (x - x0) * invh
+    v = (z - z0) * invh
+    if u >= 0.0 and u < fnx and v >= 0.0 and v < fnz:
+        return y - f[tops + int(u) * nz + int(v)] >= d
+    return u == u and v == v
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def _obstacles_clear(f, x, y, z, d):
     """True when no obstacle of f is nearer than d [m] to p, read from the grid's cell tops (module docstring):
     p inside the grid at least d above its cell's top (every listed record's phi >= y - its top, since its
     vertical distance bounds it; every unlisted one is farther than the reach D), or p outside the grid
     (every footprint farther than D).  Only for d <= D; False when it cannot tell (also for NaN)."""
-    g = int(f[H_OBST]) + OBST_STRIDE * int(f[H_NOBST])
-    if not d <= f[g + 8] - GRID_SLACK_CELLS * f[g]:
-        return False
-    u = (x - f[g + 2]) * f[g + 1]
-    v = (z - f[g + 3]) * f[g + 1]
-    nz = f[g + 5]
-    if u >= 0.0 and u < f[g + 4] and v >= 0.0 and v < nz:
-        return y - f[int(f[g + 9]) + int(u) * int(nz) + int(v)] >= d
-    return u == u and v == v
+    return _clear_in_grid(_grid_scalars(f), f, x, y, z, d)
 
 
 @njit(cache=True, error_model="numpy")
 def _phi_at_least(kind, f, x, y, z, d):
-    return signed_distance(kind, f, x, y, z) >= d
+    """``signed_distance(kind, f, x, y, z) >= d`` for a terrain with obstacles: min(base phi, every obstacle's
+    phi) >= d iff the base's phi is and no obstacle is nearer than d, so the search stops at d (not at the
+    base's phi: fewer records pass its lower bounds) and is not made when the base's phi is below d.  The same
+    boolean, NaN included: a NaN base phi fails the first test as it fails ``>= d``, and a search whose
+    cutoff or point is NaN finds no obstacle either way."""
+    if not _base_phi(kind, f, x, y, z) >= d:
+        return False
+    return _grid_below(f, x, y, z, d)[1] < 0
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -968,6 +1002,41 @@ def distance_at_least(kind, f, x, y, z, d):
     if f[H_NOBST] > 0.0 and not _obstacles_clear(f, x, y, z, d):
         return _phi_at_least(kind, f, x, y, z, d)
     return _base_phi(kind, f, x, y, z) >= d
+
+
+# ``clearance``'s modes (``clearance_view``)
+CLEAR_FLAT = 0       # the plane without obstacles: phi = y - ground
+CLEAR_PLANE_GRID = 1  # the plane with obstacles: the grid's cell tops, then y - ground
+CLEAR_ASK = 2        # any other terrain: ``distance_at_least``
+CLEAR_UNKNOWN = -1   # ``clearance``: ask ``distance_at_least``
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance_view(kind, f):
+    """V = (mode, ground h = f[0] [m], the obstacle grid's scalars): what ``clearance`` reads of terrain
+    (kind, f), read once before a loop of point tests (scalars in registers, not reloaded per point)."""
+    if kind == PLANE and f[H_NOBST] > 0.0:
+        return CLEAR_PLANE_GRID, f[0], _grid_scalars(f)
+    return (CLEAR_FLAT if kind == PLANE else CLEAR_ASK), f[0], (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance(V, f, x, y, z, d):
+    """``distance_at_least(kind, f, x, y, z, d)`` from V = ``clearance_view(kind, f)`` where that needs no
+    search: 1 (phi >= d) or 0 (phi < d) on the plane (without obstacles, or with them where the grid's cell
+    tops show none nearer than d: ``_obstacles_clear``), else CLEAR_UNKNOWN (ask ``distance_at_least``).
+
+    For the hot loops of point tests (a node's contact test, a box corner's), written at the call as
+    ``c = clearance(V, f, ...)``, ``if c < 0: c = distance_at_least(kind, f, ...)``: inlined, this
+    function makes no call, so numba prunes the reference count it takes on f, where an inlined
+    ``distance_at_least`` (its branches hold calls) keeps two atomic updates per point (``flat_ground``);
+    and the grid's scalars are read once per loop.  Issue 30: the walking centipede's 306 node and 144
+    corner tests per step among cylinders, about 9 -> 3 ns each (a kernel timed in a loop).  The same
+    answers: the operations of ``distance_at_least`` on the same doubles (y - f[0] is the plane's phi)."""
+    mode, ground, G = V
+    if mode == CLEAR_FLAT or (mode == CLEAR_PLANE_GRID and _clear_in_grid(G, f, x, y, z, d)):
+        return 1 if y - ground >= d else 0
+    return CLEAR_UNKNOWN
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -994,6 +1063,31 @@ def surface_normal(kind, f, x, y, z):
     elif kind == SLOPE:
         return -math.sin(f[1]), math.cos(f[1]), 0.0
     return _other_normal(kind, f, x, y, z)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def distance_and_normal(kind, f, x, y, z):
+    """(``signed_distance``, *``surface_normal``) at p from one obstacle search instead of two: both search the
+    obstacles below the base's phi, the distance keeps the nearest one's phi, the normal is its normal (the
+    base's when none is nearer).  The same doubles as the two calls (the Targeter's Balancer asks both at
+    each carried segment's centre)."""
+    if kind == PLANE:
+        phi = y - f[0]
+    elif kind == SLOPE:
+        phi = -math.sin(f[1]) * x + math.cos(f[1]) * (y - f[0])
+    else:
+        phi = _other_phi(kind, f, x, y, z)
+    if f[H_NOBST] > 0.0:
+        phi, j = _nearest_below(f, phi, x, y, z)
+        if j >= 0:
+            nx, ny, nz = _obstacle_normal(f, j, x, y, z)
+            return phi, nx, ny, nz
+    if kind == PLANE:
+        return phi, 0.0, 1.0, 0.0
+    elif kind == SLOPE:
+        return phi, -math.sin(f[1]), math.cos(f[1]), 0.0
+    nx, ny, nz = _other_normal(kind, f, x, y, z)
+    return phi, nx, ny, nz
 
 
 @njit(cache=True, error_model="numpy")

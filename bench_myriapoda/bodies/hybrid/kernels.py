@@ -61,7 +61,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ...world.terrain_kernels import distance_at_least
+from ...world.terrain_kernels import clearance, clearance_view, distance_at_least
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -157,6 +157,7 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
     # Ground contact of the free nodes (the suite's point-mass contact) and eq. 15.
     link_spines(B.c, spine)
     n_contact = 0
+    V = clearance_view(terr_kind, terr)  # the terrain's scalars for the nodes' tests, read once per step
     for k in range(n_free):
         i = perm[k]
         # A node clear of the terrain at both ends of its step (phi >= the contact distance now,
@@ -170,11 +171,13 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
         u = np.uint64(i)
         px, py, pz = x[u, 0], x[u, 1], x[u, 2]
         vx, vy, vz = v[u, 0], v[u, 1], v[u, 2]
-        # (``distance_at_least``: the same tests as phi >= ..., answered among obstacles without their search
-        # for the nodes high above them)
-        if (py - ground >= contact_dist) if flat else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
+        # (``clearance``, else ``distance_at_least``: the same tests as phi >= ..., answered among obstacles
+        # without their search for the nodes high above them; on the plane without obstacles y - ground)
+        c = clearance(V, terr, px, py, pz, contact_dist)
+        if (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
             qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            if (qy - ground >= 0.0) if flat else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0):
+            c = clearance(V, terr, qx, qy, qz, 0.0)
+            if (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0):
                 x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz
                 if not math.isfinite(qx + qy + qz + vx + vy + vz):
                     status = NONFINITE
