@@ -137,6 +137,41 @@ def test_threshold_query_equals_the_full_query(n):
                     (kind, x, y, z, d)
 
 
+@pytest.mark.parametrize("n", [1, 60, 400])
+def test_clearance_and_distance_with_normal_answer_as_the_full_queries(n):
+    """The hot loops' forms of the queries (issue 30) give the full queries' answers: ``clearance`` (a loop's
+    terrain scalars read once by ``clearance_view``) is ``distance_at_least`` wherever it answers (1 or 0), and
+    answers on the plane without obstacles always; ``distance_and_normal`` is (``signed_distance``,
+    *``surface_normal``) to the bit, on planes with and without obstacles, a slope and a height field with
+    obstacles, inside and outside the grid, at and just off the obstacles' tops, NaN."""
+    f = random_obstacles(n, 12.0, seed=n)
+    hf = TK.with_obstacles(TK.heightfield_params(0.0, [[0.0, 0.0], [5.0, -3.0]], [0.5, -0.3], [2.0, 3.0]),
+                           TK.obstacle_records(f))
+    rng = np.random.default_rng(300 + n)
+    m = 2000
+    p = np.column_stack([rng.uniform(-30, 30, m), rng.uniform(-1.5, 4.0, m), rng.uniform(-30, 30, m)])
+    tops = TK.obstacle_records(f)[:, 5]
+    p[: m // 4, 1] = rng.choice(tops, m // 4) + rng.choice([0.0, 1e-12, -1e-12, 0.01, 0.3], m // 4)
+    p[:3] = [[np.nan, 0.5, 0.0], [0.0, np.nan, 0.0], [0.0, 0.5, np.nan]]
+    for kind, terr in ((TK.PLANE, f), (TK.HEIGHTFIELD, hf), (TK.PLANE, TK.header(0.3)),
+                       (TK.SLOPE, TK.header(0.1, 0.2))):
+        V = TK.clearance_view(kind, terr)
+        answered = 0
+        for x, y, z in p:
+            for d in (0.0, 0.01, -0.002, 0.3, 50.0):
+                c = TK.clearance(V, terr, x, y, z, d)
+                if c != TK.CLEAR_UNKNOWN:
+                    assert (c == 1) == TK.distance_at_least(kind, terr, x, y, z, d), (kind, x, y, z, d)
+                    answered += 1
+            want = np.array([TK.signed_distance(kind, terr, x, y, z), *TK.surface_normal(kind, terr, x, y, z)])
+            got = np.array(TK.distance_and_normal(kind, terr, x, y, z))
+            assert want.tobytes() == got.tobytes(), (kind, x, y, z)
+        if kind == TK.PLANE and terr[TK.H_NOBST] == 0.0:
+            assert answered == 5 * m
+        elif kind == TK.PLANE:
+            assert answered > 0
+
+
 def test_threshold_query_skips_the_search_above_low_obstacles():
     """The cell tops answer a body node's contact test without the search: points 0.65-1.1 m up (the walking
     centipede's underside and nodes) among Fig. 13's cylinders (at most 0.4 m high), every one of them."""
