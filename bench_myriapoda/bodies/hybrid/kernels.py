@@ -171,13 +171,22 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
         u = np.uint64(i)
         px, py, pz = x[u, 0], x[u, 1], x[u, 2]
         vx, vy, vz = v[u, 0], v[u, 1], v[u, 2]
-        # (``clearance``, else ``distance_at_least``: the same tests as phi >= ..., answered among obstacles
-        # without their search for the nodes high above them; on the plane without obstacles y - ground)
-        c = clearance(V, terr, px, py, pz, contact_dist)
-        if (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
+        # (on the plane without obstacles y - ground; else ``clearance``, then ``distance_at_least`` where it cannot
+        # tell: the same tests as phi >= ..., answered among obstacles without their search for the nodes high
+        # above them)
+        if flat:
+            clear = py - ground >= contact_dist
+        else:
+            c = clearance(V, terr, px, py, pz, contact_dist)
+            clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist)
+        if clear:
             qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            c = clearance(V, terr, qx, qy, qz, 0.0)
-            if (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0):
+            if flat:
+                clear = qy - ground >= 0.0
+            else:
+                c = clearance(V, terr, qx, qy, qz, 0.0)
+                clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0)
+            if clear:
                 x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz
                 if not math.isfinite(qx + qy + qz + vx + vy + vz):
                     status = NONFINITE
