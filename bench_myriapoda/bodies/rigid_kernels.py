@@ -518,6 +518,18 @@ def _hu_friction_impulse(a, b, d, u1, u2, m1, m2, lam_n):
     return m1 * p1 * scale, m2 * p2 * scale
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _corner(R, c, i, corner, hx, hy, hz):
+    """(r, p): corner ``corner`` (0-7; bits 0, 1, 2 set: +x, +y, +z) of box i, with half extents (hx, hy, hz)
+    [m] and rotation matrix R, relative to its centre c[i] (r) and in the world (p = c[i] + r) [m]; the
+    contact loop's and the position projection's corners."""
+    sx = 1.0 if (corner & 1) else -1.0
+    sy = 1.0 if (corner & 2) else -1.0
+    sz = 1.0 if (corner & 4) else -1.0
+    rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
+    return rx, ry, rz, c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+
+
 # inlined into its one caller, _step_body: as a kernel of its own numba would optimize and emit its
 # machine code twice (once alone, once linked into _step_body), seconds of compile (README Development notes)
 @njit(cache=True, inline="always")
@@ -573,11 +585,7 @@ def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
     nc = 0
     V = clearance_view(kind, f)  # the terrain's scalars for the corners' tests
     for corner in range(N_CORNERS):
-        sx = 1.0 if (corner & 1) else -1.0
-        sy = 1.0 if (corner & 2) else -1.0
-        sz = 1.0 if (corner & 4) else -1.0
-        rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
-        px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+        rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
         # signed_distance >= 0, without an obstacle search above them (``clearance``, else ``distance_at_least``)
         cl = clearance(V, f, px, py, pz, 0.0)
         if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, 0.0):
@@ -699,11 +707,7 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
     for _ in range(n_iterations):
         moved = False
         for corner in range(N_CORNERS):
-            sx = 1.0 if (corner & 1) else -1.0
-            sy = 1.0 if (corner & 2) else -1.0
-            sz = 1.0 if (corner & 4) else -1.0
-            rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
-            px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+            rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
             cl = clearance(V, f, px, py, pz, -slop)
             if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, -slop):  # phi >= -slop (as above)
                 continue

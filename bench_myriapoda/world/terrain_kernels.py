@@ -412,7 +412,7 @@ def obstacles_below_counted(f, x, y, z, best):
 @njit(cache=True, error_model="numpy", inline="always")
 def _grid_below(f, x, y, z, best):
     """``obstacles_below_counted``'s search, inlined into each of the few kernels that answer a terrain query
-    (``_min_obstacles``, ``_nearest_below``, ``_obstacle_or_base_normal``, ``_phi_at_least``,
+    (``_min_obstacles``, ``_obstacle_or_base_normal``, ``_phi_at_least``, ``distance_and_normal``,
     ``obstacles_below``): one call per query instead of
     a chain of three (each call passes f and updates its reference count; issue 30 measured the chain at
     about two thirds of an obstacle query's cost when no obstacle is near)."""
@@ -915,11 +915,15 @@ def _min_obstacles(f, phi, x, y, z):
     return _grid_below(f, x, y, z, phi)[0]
 
 
-@njit(cache=True, error_model="numpy")
-def _nearest_below(f, phi, x, y, z):
-    """(min(phi, the obstacles' phi), the nearest obstacle's record or -1): ``_min_obstacles`` with the record."""
-    d, j, _ = _grid_below(f, x, y, z, phi)
-    return d, j
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _base_normal(kind, f, x, y, z):
+    """The base terrain's unit normal at p (``surface_normal`` without obstacles)."""
+    if kind == PLANE:
+        return 0.0, 1.0, 0.0
+    elif kind == SLOPE:
+        return -math.sin(f[1]), math.cos(f[1]), 0.0
+    return _other_normal(kind, f, x, y, z)
 
 
 @njit(cache=True, error_model="numpy")
@@ -927,11 +931,7 @@ def _obstacle_or_base_normal(kind, f, x, y, z):
     _, j, _ = _grid_below(f, x, y, z, _base_phi(kind, f, x, y, z))
     if j >= 0:
         return _obstacle_normal(f, j, x, y, z)
-    if kind == PLANE:
-        return 0.0, 1.0, 0.0
-    elif kind == SLOPE:
-        return -math.sin(f[1]), math.cos(f[1]), 0.0
-    return _other_normal(kind, f, x, y, z)
+    return _base_normal(kind, f, x, y, z)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -1065,28 +1065,20 @@ def surface_normal(kind, f, x, y, z):
     return _other_normal(kind, f, x, y, z)
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy")
 def distance_and_normal(kind, f, x, y, z):
     """(``signed_distance``, *``surface_normal``) at p from one obstacle search instead of two: both search the
     obstacles below the base's phi, the distance keeps the nearest one's phi, the normal is its normal (the
     base's when none is nearer).  The same doubles as the two calls (the Targeter's Balancer asks both at
-    each carried segment's centre)."""
-    if kind == PLANE:
-        phi = y - f[0]
-    elif kind == SLOPE:
-        phi = -math.sin(f[1]) * x + math.cos(f[1]) * (y - f[0])
-    else:
-        phi = _other_phi(kind, f, x, y, z)
+    each carried segment's centre).  Not inlined: one call, where the two inlined queries each took and
+    dropped a reference to f (``flat_ground``)."""
+    phi = _base_phi(kind, f, x, y, z)
     if f[H_NOBST] > 0.0:
-        phi, j = _nearest_below(f, phi, x, y, z)
+        phi, j, _ = _grid_below(f, x, y, z, phi)
         if j >= 0:
             nx, ny, nz = _obstacle_normal(f, j, x, y, z)
             return phi, nx, ny, nz
-    if kind == PLANE:
-        return phi, 0.0, 1.0, 0.0
-    elif kind == SLOPE:
-        return phi, -math.sin(f[1]), math.cos(f[1]), 0.0
-    nx, ny, nz = _other_normal(kind, f, x, y, z)
+    nx, ny, nz = _base_normal(kind, f, x, y, z)
     return phi, nx, ny, nz
 
 

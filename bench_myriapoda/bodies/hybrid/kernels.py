@@ -193,6 +193,12 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
                 elif vx * vx + vy * vy + vz * vz > vmax2:
                     status = RUNAWAY_SPEED
                 continue
+        # a node not clear: ``advance_point`` on its link's spine.  This tail of the loop and the entry kernel
+        # below are alike in each link element by design (``massspring.myriapod._spring_links_step`` and
+        # ``advance_spring_chain``): the call is inlined into each link element's own loop (an inline wrapper
+        # around it would bind its array arguments again at every contact node), and an entry kernel names
+        # its link class, which numba must see as a global (a kernel shared through a closure over the class
+        # would be cached under one name for every class)
         s = node_link[i]
         touching, st = advance_point(x, v, i, (vx, vy, vz), (spine[s, 0], spine[s, 1], spine[s, 2]), terr_kind,
                                      terr, fric_model, fric, (dt, r_n, r_t, contact_dist, max_pen, vmax2), acc,
