@@ -159,7 +159,8 @@ def test_clearance_and_distance_with_normal_answer_as_the_full_queries(n):
         answered = 0
         for x, y, z in p:
             for d in (0.0, 0.01, -0.002, 0.3, 50.0):
-                c = TK.clearance(V, terr, x, y, z, d)
+                k = TK.clearance_cell(V, x, z, d)
+                c = TK.clearance(V, terr[k] if k >= 0 else 0.0, y, d, k)
                 if c != TK.CLEAR_UNKNOWN:
                     assert (c == 1) == TK.distance_at_least(kind, terr, x, y, z, d), (kind, x, y, z, d)
                     answered += 1

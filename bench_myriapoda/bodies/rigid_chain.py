@@ -28,7 +28,8 @@ from numba import njit
 from numba.core import types
 from numba.extending import overload
 
-from ..world.terrain_kernels import clearance, clearance_view, distance_at_least, flat_ground, signed_distance
+from ..world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_at_least, flat_ground,
+                                    signed_distance)
 from . import rigid_kernels as rk
 from . import step_status as S
 from .case_scalars import contact_scalars
@@ -278,7 +279,8 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
             # >= -contact_dist): ``clearance`` (else ``distance_at_least``) answers that among obstacles without
             # their search
             if not flat and -contact_dist <= deepest and -contact_dist <= max_pen:
-                cl = clearance(V, terr, px, py, pz, contact_dist)
+                kc = clearance_cell(V, px, pz, contact_dist)
+                cl = clearance(V, terr[kc] if kc >= 0 else 0.0, py, contact_dist, kc)
                 if (cl > 0) if cl >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
                     continue
             phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)

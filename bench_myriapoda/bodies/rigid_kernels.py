@@ -59,8 +59,8 @@ from numba import njit
 
 from ..kinematics.rotations import mat_t_vec as _matTvec, matvec as _matvec  # noqa: F401 (fem kernels use them from here)
 
-from bench_myriapoda.world.terrain_kernels import (clearance, clearance_view, distance_and_normal, distance_at_least,
-                                                   surface_normal)
+from bench_myriapoda.world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_and_normal,
+                                                   distance_at_least, surface_normal)
 
 STATUS_OK = 0
 STATUS_NONFINITE = 1
@@ -587,7 +587,8 @@ def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
     for corner in range(N_CORNERS):
         rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
         # signed_distance >= 0, without an obstacle search above them (``clearance``, else ``distance_at_least``)
-        cl = clearance(V, f, px, py, pz, 0.0)
+        kc = clearance_cell(V, px, pz, 0.0)
+        cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, 0.0, kc)
         if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, 0.0):
             continue
         nx, ny, nz = surface_normal(kind, f, px, py, pz)
@@ -708,7 +709,8 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
         moved = False
         for corner in range(N_CORNERS):
             rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
-            cl = clearance(V, f, px, py, pz, -slop)
+            kc = clearance_cell(V, px, pz, -slop)
+            cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, -slop, kc)
             if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, -slop):  # phi >= -slop (as above)
                 continue
             phi, nx, ny, nz = distance_and_normal(kind, f, px, py, pz)  # signed_distance, surface_normal

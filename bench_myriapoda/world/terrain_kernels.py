@@ -950,24 +950,31 @@ def signed_distance(kind, f, x, y, z):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _grid_scalars(f):
-    """What ``_clear_in_grid`` reads of f's obstacle grid (module docstring): (D - slack [m], origin x0, z0 [m],
+    """What ``_grid_cell`` reads of f's obstacle grid (module docstring): (D - slack [m], origin x0, z0 [m],
     1/h [1/m], cells nx, nz (floats), nz (int), cell tops offset (int)).  f must have obstacles."""
     g = int(f[H_OBST]) + OBST_STRIDE * int(f[H_NOBST])
     return (f[g + 8] - GRID_SLACK_CELLS * f[g], f[g + 2], f[g + 3], f[g + 1], f[g + 4], f[g + 5], int(f[g + 5]),
             int(f[g + 9]))
 
 
+# ``_grid_cell``'s answers besides a cell top's f-index (>= 0)
+CELL_OUTSIDE = -1    # p outside the grid: no obstacle nearer than d
+CELL_UNKNOWN = -2    # d beyond the reach D, or p NaN: the grid cannot tell
+CELL_FLAT = -3       # (``clearance_cell``) the plane without obstacles
+
+
 @njit(cache=True, error_model="numpy", inline="always")
-def _clear_in_grid(G, f, x, y, z, d):
-    """``_obstacles_clear`` on f's grid scalars G (``_grid_scalars``), read once by a caller with many points."""
+def _grid_cell(G, x, z, d):
+    """Where ``_obstacles_clear`` looks, from f's grid scalars G (``_grid_scalars``) and scalars only: the f-index
+    of p's cell top (no obstacle nearer than d iff y - that top >= d), CELL_OUTSIDE or CELL_UNKNOWN."""
     reach, x0, z0, invh, fnx, fnz, nz, tops = G
     if not d <= reach:
-        return False
+        return CELL_UNKNOWN
     u = (x - x0) * invh
     v = (z - z0) * invh
     if u >= 0.0 and u < fnx and v >= 0.0 and v < fnz:
-        return y - f[tops + int(u) * nz + int(v)] >= d
-    return u == u and v == v
+        return tops + int(u) * nz + int(v)
+    return CELL_OUTSIDE if (u == u and v == v) else CELL_UNKNOWN
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -976,7 +983,8 @@ def _obstacles_clear(f, x, y, z, d):
     p inside the grid at least d above its cell's top (every listed record's phi >= y - its top, since its
     vertical distance bounds it; every unlisted one is farther than the reach D), or p outside the grid
     (every footprint farther than D).  Only for d <= D; False when it cannot tell (also for NaN)."""
-    return _clear_in_grid(_grid_scalars(f), f, x, y, z, d)
+    k = _grid_cell(_grid_scalars(f), x, z, d)
+    return (y - f[k] >= d) if k >= 0 else k == CELL_OUTSIDE
 
 
 @njit(cache=True, error_model="numpy")
@@ -1013,29 +1021,40 @@ CLEAR_UNKNOWN = -1   # ``clearance``: ask ``distance_at_least``
 
 @njit(cache=True, error_model="numpy", inline="always")
 def clearance_view(kind, f):
-    """V = (mode, ground h = f[0] [m], the obstacle grid's scalars): what ``clearance`` reads of terrain
-    (kind, f), read once before a loop of point tests (scalars in registers, not reloaded per point)."""
+    """V = (mode, ground h = f[0] [m], the obstacle grid's scalars): what ``clearance_cell`` and ``clearance``
+    read of terrain (kind, f), read once before a loop of point tests (scalars in registers, not reloaded per
+    point)."""
     if kind == PLANE and f[H_NOBST] > 0.0:
         return CLEAR_PLANE_GRID, f[0], _grid_scalars(f)
     return (CLEAR_FLAT if kind == PLANE else CLEAR_ASK), f[0], (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def clearance(V, f, x, y, z, d):
-    """``distance_at_least(kind, f, x, y, z, d)`` from V = ``clearance_view(kind, f)`` where that needs no
-    search: 1 (phi >= d) or 0 (phi < d) on the plane (without obstacles, or with them where the grid's cell
-    tops show none nearer than d: ``_obstacles_clear``), else CLEAR_UNKNOWN (ask ``distance_at_least``).
+def clearance_cell(V, x, z, d):
+    """Step 1 of ``clearance``: the f-index of p's obstacle-grid cell top to read (>= 0), or CELL_FLAT,
+    CELL_OUTSIDE, CELL_UNKNOWN (also for a terrain that only ``distance_at_least`` answers)."""
+    mode, _, G = V
+    if mode == CLEAR_FLAT:
+        return CELL_FLAT
+    if mode != CLEAR_PLANE_GRID:
+        return CELL_UNKNOWN
+    return _grid_cell(G, x, z, d)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance(V, top, y, d, k):
+    """``distance_at_least(kind, f, x, y, z, d)`` where the grid's cell tops answer it without a search: 1 (phi
+    >= d) or 0 (phi < d), else CLEAR_UNKNOWN (ask ``distance_at_least``).  V = ``clearance_view(kind, f)``,
+    k = ``clearance_cell(V, x, z, d)``, top = f[k] where k >= 0 (read by the caller).
 
     For the hot loops of point tests (a node's contact test, a box corner's), written at the call as
-    ``c = clearance(V, f, ...)``, ``if c < 0: c = distance_at_least(kind, f, ...)``: inlined, this
-    function makes no call, so numba prunes the reference count it takes on f, where an inlined
-    ``distance_at_least`` (its branches hold calls) keeps two atomic updates per point (``flat_ground``);
-    and the grid's scalars are read once per loop.  Issue 30: the walking centipede's 306 node and 144
-    corner tests per step among cylinders, about 9 -> 3 ns each (a kernel timed in a loop).  The same
-    answers: the operations of ``distance_at_least`` on the same doubles (y - f[0] is the plane's phi)."""
-    mode, ground, G = V
-    if mode == CLEAR_FLAT or (mode == CLEAR_PLANE_GRID and _clear_in_grid(G, f, x, y, z, d)):
-        return 1 if y - ground >= d else 0
+    ``k = clearance_cell(V, x, z, d)``, ``c = clearance(V, f[k] if k >= 0 else 0.0, y, d, k)``, ``(c > 0) if
+    c >= 0 else distance_at_least(kind, f, x, y, z, d)``.  Both steps take scalars only: an inlined function
+    that takes f takes and drops a reference to it per point (two atomic updates, which numba's pruning left
+    in the walking centipede's loops, ``flat_ground``), and the grid's scalars are read once per loop.  The
+    same answers: ``distance_at_least``'s operations on the same doubles (y - f[0] is the plane's phi)."""
+    if k == CELL_FLAT or k == CELL_OUTSIDE or (k >= 0 and y - top >= d):
+        return 1 if y - V[1] >= d else 0
     return CLEAR_UNKNOWN
 
 

@@ -61,7 +61,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ...world.terrain_kernels import clearance, clearance_view, distance_at_least
+from ...world.terrain_kernels import clearance, clearance_cell, clearance_view, distance_at_least
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -177,14 +177,16 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
         if flat:
             clear = py - ground >= contact_dist
         else:
-            c = clearance(V, terr, px, py, pz, contact_dist)
+            kc = clearance_cell(V, px, pz, contact_dist)
+            c = clearance(V, terr[kc] if kc >= 0 else 0.0, py, contact_dist, kc)
             clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist)
         if clear:
             qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
             if flat:
                 clear = qy - ground >= 0.0
             else:
-                c = clearance(V, terr, qx, qy, qz, 0.0)
+                kc = clearance_cell(V, qx, qz, 0.0)
+                c = clearance(V, terr[kc] if kc >= 0 else 0.0, qy, 0.0, kc)
                 clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0)
             if clear:
                 x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz

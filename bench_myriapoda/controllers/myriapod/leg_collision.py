@@ -39,8 +39,8 @@ from numba import njit
 from bench_myriapoda.kinematics.legs import ALPHA, BETA, FEMUR, GAMMA, ROOT_X, ROOT_Y, ROOT_Z, THETA, TIBIA, \
     leg_plane_points, side_sign
 from bench_myriapoda.kinematics.rotations import matvec as _matvec
-from bench_myriapoda.world.terrain_kernels import (clearance, clearance_view, distance_at_least, flat_ground,
-                                                   signed_distance, surface_normal)
+from bench_myriapoda.world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_at_least,
+                                                   flat_ground, signed_distance, surface_normal)
 
 from .switcher import STANCE
 
@@ -75,10 +75,12 @@ def _clear_at(kind, f, c, R, g, side, a0, b0, s):
                                               a0[2] + s * (b0[2] - a0[2]))
     # ``clearance``, else ``distance_at_least``: the same answers, with the grid read once and no reference counts
     V = clearance_view(kind, f)
-    cl = clearance(V, f, mx, my, mz, 0.0)
+    kc = clearance_cell(V, mx, mz, 0.0)
+    cl = clearance(V, f[kc] if kc >= 0 else 0.0, my, 0.0, kc)
     if not ((cl > 0) if cl >= 0 else distance_at_least(kind, f, mx, my, mz, 0.0)):
         return False
-    cl = clearance(V, f, px, py, pz, 0.0)
+    kc = clearance_cell(V, px, pz, 0.0)
+    cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, 0.0, kc)
     return (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, 0.0)
 
 
@@ -195,7 +197,8 @@ def knees_inside_and_penetration(states, knees, tips, kind, f, check_knees, ik_f
         # depth (-phi < 0 <= deepest): among obstacles ``clearance`` (else ``distance_at_least``) tells so
         # without their search
         if not flat:
-            cl = clearance(V, f, knees[k, 0], knees[k, 1], knees[k, 2], KNEE_CLEAR_M)
+            kc = clearance_cell(V, knees[k, 0], knees[k, 2], KNEE_CLEAR_M)
+            cl = clearance(V, f[kc] if kc >= 0 else 0.0, knees[k, 1], KNEE_CLEAR_M, kc)
             if (cl > 0) if cl >= 0 else distance_at_least(kind, f, knees[k, 0], knees[k, 1], knees[k, 2],
                                                           KNEE_CLEAR_M):
                 deepest = max(deepest, -pt)
