@@ -443,8 +443,17 @@ def _grid_below(f, x, y, z, best):
     ci = min(int(qu), nx - 1)
     ck = min(int(qv), nz - 1)
     if out == 0.0 and best <= reach - slack:
-        # every record with a bound below best has its footprint within reach of p: listed in p's cell
-        best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (ci * nz + ck) + 2, lst, x, y, z, best, arg)
+        # every record with a bound below best has its footprint within reach of p: listed in p's cell's
+        # widened list; and in its plain list when p is at least best (+ the slack) inside the cell, since
+        # such a footprint then overlaps the cell (a near-ground query: a leg's tip, a cutoff of 0).  Either
+        # list holds every record that can change (best, -1), so both give the same answer; the plain one is
+        # about a fifth as long at Fig. 13's density
+        fu = qu - ci
+        fv = qv - ck
+        inner = min(min(fu, 1.0 - fu), min(fv, 1.0 - fv)) - GRID_SLACK_CELLS
+        c0 = cells + GRID_CELL_STRIDE * (ci * nz + ck)
+        best, arg, m = _scan_cell(f, c0 if (inner >= 0.0 and best * invh <= inner) else c0 + 2, lst, x, y, z,
+                                  best, arg)
         return best, arg, m
     kmax = max(max(ci, nx - 1 - ci), max(ck, nz - 1 - ck))
     for ring in range(kmax + 1):
