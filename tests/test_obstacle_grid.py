@@ -116,25 +116,61 @@ def test_obstacles_within_a_radius_equal_the_loop_in_record_order(n):
             assert list(out[:m]) == want
 
 
+def threshold_scene(n: int, seed: int, m: int):
+    """(f, hf, p) for the threshold queries' tests: n random obstacles on a plane (f) and the same on a height
+    field (hf, whose base phi is not the plane's), and m points (m, 3) [m] inside and outside the grid, inside
+    obstacles, a quarter exactly at and just off the obstacles' tops, the first three with a NaN coordinate."""
+    f = random_obstacles(n, 12.0, seed=n)
+    hf = TK.with_obstacles(TK.heightfield_params(0.0, [[0.0, 0.0], [5.0, -3.0]], [0.5, -0.3], [2.0, 3.0]),
+                           TK.obstacle_records(f))
+    rng = np.random.default_rng(seed)
+    p = np.column_stack([rng.uniform(-30, 30, m), rng.uniform(-1.5, 4.0, m), rng.uniform(-30, 30, m)])
+    tops = TK.obstacle_records(f)[:, 5]
+    p[: m // 4, 1] = rng.choice(tops, m // 4) + rng.choice([0.0, 1e-12, -1e-12, 0.01, 0.3], m // 4)
+    p[:3] = [[np.nan, 0.5, 0.0], [0.0, np.nan, 0.0], [0.0, 0.5, np.nan]]
+    return f, hf, p
+
+
 @pytest.mark.parametrize("n", [1, 7, 60, 400])
 def test_threshold_query_equals_the_full_query(n):
     """``distance_at_least(p, d)`` is ``signed_distance(p) >= d`` for every p and d (issue 30): inside and
     outside the grid, inside obstacles, exactly at and just off the obstacles' tops, NaN, on a plane and on a
     height field (its base phi is not the plane's)."""
-    f = random_obstacles(n, 12.0, seed=n)
-    hf = TK.with_obstacles(TK.heightfield_params(0.0, [[0.0, 0.0], [5.0, -3.0]], [0.5, -0.3], [2.0, 3.0]),
-                           TK.obstacle_records(f))
-    rng = np.random.default_rng(200 + n)
-    m = 3000
-    p = np.column_stack([rng.uniform(-30, 30, m), rng.uniform(-1.5, 4.0, m), rng.uniform(-30, 30, m)])
-    tops = TK.obstacle_records(f)[:, 5]
-    p[: m // 4, 1] = rng.choice(tops, m // 4) + rng.choice([0.0, 1e-12, -1e-12, 0.01, 0.3], m // 4)
-    p[:3] = [[np.nan, 0.5, 0.0], [0.0, np.nan, 0.0], [0.0, 0.5, np.nan]]
+    f, hf, p = threshold_scene(n, 200 + n, 3000)
     for kind, terr in ((TK.PLANE, f), (TK.HEIGHTFIELD, hf)):
         for x, y, z in p:
             for d in (0.0, 0.01, -0.002, 0.3, 1.0, -0.5, 50.0):
                 assert TK.distance_at_least(kind, terr, x, y, z, d) == (TK.signed_distance(kind, terr, x, y, z) >= d), \
                     (kind, x, y, z, d)
+
+
+@pytest.mark.parametrize("n", [1, 60, 400])
+def test_clearance_and_distance_with_normal_answer_as_the_full_queries(n):
+    """The hot loops' forms of the queries (issue 30) give the full queries' answers: ``clearance`` (a loop's
+    terrain scalars read once by ``clearance_view``) is ``distance_at_least`` wherever it answers (1 or 0), and
+    answers on the plane without obstacles always; ``distance_and_normal`` is (``signed_distance``,
+    *``surface_normal``) to the bit, on planes with and without obstacles, a slope and a height field with
+    obstacles, inside and outside the grid, at and just off the obstacles' tops, NaN."""
+    m = 2000
+    f, hf, p = threshold_scene(n, 300 + n, m)
+    for kind, terr in ((TK.PLANE, f), (TK.HEIGHTFIELD, hf), (TK.PLANE, TK.header(0.3)),
+                       (TK.SLOPE, TK.header(0.1, 0.2))):
+        V = TK.clearance_view(kind, terr)
+        answered = 0
+        for x, y, z in p:
+            for d in (0.0, 0.01, -0.002, 0.3, 50.0):
+                k = TK.clearance_cell(V, x, z, d)
+                c = TK.clearance(V, terr[k] if k >= 0 else 0.0, y, d, k)
+                if c != TK.CLEAR_UNKNOWN:
+                    assert (c == 1) == TK.distance_at_least(kind, terr, x, y, z, d), (kind, x, y, z, d)
+                    answered += 1
+            want = np.array([TK.signed_distance(kind, terr, x, y, z), *TK.surface_normal(kind, terr, x, y, z)])
+            got = np.array(TK.distance_and_normal(kind, terr, x, y, z))
+            assert want.tobytes() == got.tobytes(), (kind, x, y, z)
+        if kind == TK.PLANE and terr[TK.H_NOBST] == 0.0:
+            assert answered == 5 * m
+        elif kind == TK.PLANE:
+            assert answered > 0
 
 
 def test_threshold_query_skips_the_search_above_low_obstacles():

@@ -229,6 +229,12 @@ class RigidBoxes:
         rk.quat_to_matrix(self.q, out)
         return out
 
+    def chain_ends(self, R: np.ndarray, length: float) -> tuple[np.ndarray, np.ndarray]:
+        """(head, tail) (3,) [m] of a chain of boxes along their x axes, each ``length`` [m] long: the centre of
+        the first box's front face and of the last box's back face; R: ``rotation_matrices()``."""
+        half_len = 0.5 * length
+        return self.c[0] + R[0][:, 0] * half_len, self.c[-1] - R[-1][:, 0] * half_len
+
     def corners(self) -> np.ndarray:
         """(n * 8, 3) [m] the boxes' corners, corner k of a box at ``CORNER_SIGNS[k]``."""
         local = CORNER_SIGNS[None, :, :] * self.half_extents[:, None, :]

@@ -28,7 +28,8 @@ from numba import njit
 from numba.core import types
 from numba.extending import overload
 
-from ..world.terrain_kernels import distance_at_least, flat_ground, signed_distance
+from ..world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_at_least, flat_ground,
+                                    signed_distance)
 from . import rigid_kernels as rk
 from . import step_status as S
 from .case_scalars import contact_scalars
@@ -254,6 +255,7 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
     # corner depth (after the position projection) and contact count; on the plane without obstacles
     # a corner's distance is y - ground (``flat_ground``)
     flat, ground = flat_ground(terr_kind, terr)
+    V = clearance_view(terr_kind, terr)
     deepest = acc[ACC_MAX_PEN]
     for i in range(n_rigid):
         hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
@@ -274,10 +276,13 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
             py = c[i, 1] + Rb[i, 1, 0] * sx + Rb[i, 1, 1] * sy + Rb[i, 1, 2] * sz
             pz = c[i, 2] + Rb[i, 2, 0] * sx + Rb[i, 2, 1] * sy + Rb[i, 2, 2] * sz
             # a corner at least the contact distance up changes nothing below (deepest and max_pen are >= 0
-            # >= -contact_dist): ``distance_at_least`` answers that among obstacles without their search
-            if not flat and -contact_dist <= deepest and -contact_dist <= max_pen and \
-                    distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
-                continue
+            # >= -contact_dist): ``clearance`` (else ``distance_at_least``) answers that among obstacles without
+            # their search
+            if not flat and -contact_dist <= deepest and -contact_dist <= max_pen:
+                kc = clearance_cell(V, px, pz, contact_dist)
+                cl = clearance(V, terr[kc] if kc >= 0 else 0.0, py, contact_dist, kc)
+                if (cl > 0) if cl >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
+                    continue
             phi = py - ground if flat else signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
                 n_contact += 1

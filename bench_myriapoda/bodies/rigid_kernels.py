@@ -59,7 +59,8 @@ from numba import njit
 
 from ..kinematics.rotations import mat_t_vec as _matTvec, matvec as _matvec  # noqa: F401 (fem kernels use them from here)
 
-from bench_myriapoda.world.terrain_kernels import distance_at_least, signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_and_normal,
+                                                   distance_at_least, surface_normal)
 
 STATUS_OK = 0
 STATUS_NONFINITE = 1
@@ -517,6 +518,18 @@ def _hu_friction_impulse(a, b, d, u1, u2, m1, m2, lam_n):
     return m1 * p1 * scale, m2 * p2 * scale
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _corner(R, c, i, corner, hx, hy, hz):
+    """(r, p): corner ``corner`` (0-7; bits 0, 1, 2 set: +x, +y, +z) of box i, with half extents (hx, hy, hz)
+    [m] and rotation matrix R, relative to its centre c[i] (r) and in the world (p = c[i] + r) [m]; the
+    contact loop's and the position projection's corners."""
+    sx = 1.0 if (corner & 1) else -1.0
+    sy = 1.0 if (corner & 2) else -1.0
+    sz = 1.0 if (corner & 4) else -1.0
+    rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
+    return rx, ry, rz, c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
+
+
 # inlined into its one caller, _step_body: as a kernel of its own numba would optimize and emit its
 # machine code twice (once alone, once linked into _step_body), seconds of compile (README Development notes)
 @njit(cache=True, inline="always")
@@ -570,13 +583,13 @@ def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
     vx, vy, vz = v[i, 0], v[i, 1], v[i, 2]
     wx, wy, wz = w[i, 0], w[i, 1], w[i, 2]
     nc = 0
+    V = clearance_view(kind, f)  # the terrain's scalars for the corners' tests
     for corner in range(N_CORNERS):
-        sx = 1.0 if (corner & 1) else -1.0
-        sy = 1.0 if (corner & 2) else -1.0
-        sz = 1.0 if (corner & 4) else -1.0
-        rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
-        px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-        if distance_at_least(kind, f, px, py, pz, 0.0):  # signed_distance >= 0 (without an obstacle search above them)
+        rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
+        # signed_distance >= 0, without an obstacle search above them (``clearance``, else ``distance_at_least``)
+        kc = clearance_cell(V, px, pz, 0.0)
+        cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, 0.0, kc)
+        if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, 0.0):
             continue
         nx, ny, nz = surface_normal(kind, f, px, py, pz)
         t1x, t1y, t1z, t2x, t2y, t2z = _tangent_basis(nx, ny, nz)
@@ -691,18 +704,16 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
     inv_m = 1.0 / mass[i]
     i0, i1, i2 = inertia_body[i, 0], inertia_body[i, 1], inertia_body[i, 2]
     hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
+    V = clearance_view(kind, f)
     for _ in range(n_iterations):
         moved = False
         for corner in range(N_CORNERS):
-            sx = 1.0 if (corner & 1) else -1.0
-            sy = 1.0 if (corner & 2) else -1.0
-            sz = 1.0 if (corner & 4) else -1.0
-            rx, ry, rz = _matvec(R, sx * hx, sy * hy, sz * hz)
-            px, py, pz = c[i, 0] + rx, c[i, 1] + ry, c[i, 2] + rz
-            if distance_at_least(kind, f, px, py, pz, -slop):  # phi >= -slop (see the contact loop)
+            rx, ry, rz, px, py, pz = _corner(R, c, i, corner, hx, hy, hz)
+            kc = clearance_cell(V, px, pz, -slop)
+            cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, -slop, kc)
+            if (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, -slop):  # phi >= -slop (as above)
                 continue
-            phi = signed_distance(kind, f, px, py, pz)
-            nx, ny, nz = surface_normal(kind, f, px, py, pz)
+            phi, nx, ny, nz = distance_and_normal(kind, f, px, py, pz)  # signed_distance, surface_normal
             k = _inv_mass_along(inv_m, Iw, rx, ry, rz, nx, ny, nz, nx, ny, nz)
             p = -beta * (phi + slop) / k
             c[i, 0] += p * nx * inv_m

@@ -388,8 +388,13 @@ def obstacles_below(f, x, y, z, best):
     """(phi, record index) of the nearest obstacle if it is nearer than ``best``, else (best, -1).
 
     Through the obstacle grid (module docstring); the result equals
-    ``obstacles_below_brute``'s bit for bit.
+    ``obstacles_below_brute``'s bit for bit.  A point that the grid's cell tops show to be at least
+    ``best`` from every obstacle (``_obstacles_clear``: a small cutoff above the obstacles, as the
+    obstacle-penetration metric's 0 for body points) gets (best, -1) without the search: what the search
+    returns there, since only a record nearer than best changes it.
     """
+    if f[H_NOBST] > 0.0 and _obstacles_clear(f, x, y, z, best):
+        return best, -1
     d, j, _ = _grid_below(f, x, y, z, best)
     return d, j
 
@@ -407,7 +412,8 @@ def obstacles_below_counted(f, x, y, z, best):
 @njit(cache=True, error_model="numpy", inline="always")
 def _grid_below(f, x, y, z, best):
     """``obstacles_below_counted``'s search, inlined into each of the few kernels that answer a terrain query
-    (``_min_obstacles``, ``_obstacle_or_base_normal``, ``obstacles_below``): one call per query instead of
+    (``_min_obstacles``, ``_obstacle_or_base_normal``, ``_phi_at_least``, ``distance_and_normal``,
+    ``obstacles_below``): one call per query instead of
     a chain of three (each call passes f and updates its reference count; issue 30 measured the chain at
     about two thirds of an obstacle query's cost when no obstacle is near)."""
     off = int(f[H_OBST])
@@ -437,8 +443,17 @@ def _grid_below(f, x, y, z, best):
     ci = min(int(qu), nx - 1)
     ck = min(int(qv), nz - 1)
     if out == 0.0 and best <= reach - slack:
-        # every record with a bound below best has its footprint within reach of p: listed in p's cell
-        best, arg, m = _scan_cell(f, cells + GRID_CELL_STRIDE * (ci * nz + ck) + 2, lst, x, y, z, best, arg)
+        # every record with a bound below best has its footprint within reach of p: listed in p's cell's
+        # widened list; and in its plain list when p is at least best (+ the slack) inside the cell, since
+        # such a footprint then overlaps the cell (a near-ground query: a leg's tip, a cutoff of 0).  Either
+        # list holds every record that can change (best, -1), so both give the same answer; the plain one is
+        # about a fifth as long at Fig. 13's density
+        fu = qu - ci
+        fv = qv - ck
+        inner = min(min(fu, 1.0 - fu), min(fv, 1.0 - fv)) - GRID_SLACK_CELLS
+        c0 = cells + GRID_CELL_STRIDE * (ci * nz + ck)
+        best, arg, m = _scan_cell(f, c0 if (inner >= 0.0 and best * invh <= inner) else c0 + 2, lst, x, y, z,
+                                  best, arg)
         return best, arg, m
     kmax = max(max(ci, nx - 1 - ci), max(ck, nz - 1 - ck))
     for ring in range(kmax + 1):
@@ -909,16 +924,23 @@ def _min_obstacles(f, phi, x, y, z):
     return _grid_below(f, x, y, z, phi)[0]
 
 
-@njit(cache=True, error_model="numpy")
-def _obstacle_or_base_normal(kind, f, x, y, z):
-    _, j, _ = _grid_below(f, x, y, z, _base_phi(kind, f, x, y, z))
-    if j >= 0:
-        return _obstacle_normal(f, j, x, y, z)
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _base_normal(kind, f, x, y, z):
+    """The base terrain's unit normal at p (``surface_normal`` without obstacles)."""
     if kind == PLANE:
         return 0.0, 1.0, 0.0
     elif kind == SLOPE:
         return -math.sin(f[1]), math.cos(f[1]), 0.0
     return _other_normal(kind, f, x, y, z)
+
+
+@njit(cache=True, error_model="numpy")
+def _obstacle_or_base_normal(kind, f, x, y, z):
+    _, j, _ = _grid_below(f, x, y, z, _base_phi(kind, f, x, y, z))
+    if j >= 0:
+        return _obstacle_normal(f, j, x, y, z)
+    return _base_normal(kind, f, x, y, z)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -936,25 +958,54 @@ def signed_distance(kind, f, x, y, z):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def _grid_scalars(f):
+    """What ``_grid_cell`` reads of f's obstacle grid (module docstring): (D - slack [m], origin x0, z0 [m],
+    1/h [1/m], cells nx, nz (floats), nz (int), cell tops offset (int)).  f must have obstacles."""
+    g = int(f[H_OBST]) + OBST_STRIDE * int(f[H_NOBST])
+    return (f[g + 8] - GRID_SLACK_CELLS * f[g], f[g + 2], f[g + 3], f[g + 1], f[g + 4], f[g + 5], int(f[g + 5]),
+            int(f[g + 9]))
+
+
+# ``_grid_cell``'s answers besides a cell top's f-index (>= 0)
+CELL_OUTSIDE = -1    # p outside the grid: no obstacle nearer than d
+CELL_UNKNOWN = -2    # d beyond the reach D, or p NaN: the grid cannot tell
+CELL_FLAT = -3       # (``clearance_cell``) the plane without obstacles
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _grid_cell(G, x, z, d):
+    """Where ``_obstacles_clear`` looks, from f's grid scalars G (``_grid_scalars``) and scalars only: the f-index
+    of p's cell top (no obstacle nearer than d iff y - that top >= d), CELL_OUTSIDE or CELL_UNKNOWN."""
+    reach, x0, z0, invh, fnx, fnz, nz, tops = G
+    if not d <= reach:
+        return CELL_UNKNOWN
+    u = (x - x0) * invh
+    v = (z - z0) * invh
+    if u >= 0.0 and u < fnx and v >= 0.0 and v < fnz:
+        return tops + int(u) * nz + int(v)
+    return CELL_OUTSIDE if (u == u and v == v) else CELL_UNKNOWN
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def _obstacles_clear(f, x, y, z, d):
     """True when no obstacle of f is nearer than d [m] to p, read from the grid's cell tops (module docstring):
     p inside the grid at least d above its cell's top (every listed record's phi >= y - its top, since its
     vertical distance bounds it; every unlisted one is farther than the reach D), or p outside the grid
     (every footprint farther than D).  Only for d <= D; False when it cannot tell (also for NaN)."""
-    g = int(f[H_OBST]) + OBST_STRIDE * int(f[H_NOBST])
-    if not d <= f[g + 8] - GRID_SLACK_CELLS * f[g]:
-        return False
-    u = (x - f[g + 2]) * f[g + 1]
-    v = (z - f[g + 3]) * f[g + 1]
-    nz = f[g + 5]
-    if u >= 0.0 and u < f[g + 4] and v >= 0.0 and v < nz:
-        return y - f[int(f[g + 9]) + int(u) * int(nz) + int(v)] >= d
-    return u == u and v == v
+    k = _grid_cell(_grid_scalars(f), x, z, d)
+    return (y - f[k] >= d) if k >= 0 else k == CELL_OUTSIDE
 
 
 @njit(cache=True, error_model="numpy")
 def _phi_at_least(kind, f, x, y, z, d):
-    return signed_distance(kind, f, x, y, z) >= d
+    """``signed_distance(kind, f, x, y, z) >= d`` for a terrain with obstacles: min(base phi, every obstacle's
+    phi) >= d iff the base's phi is and no obstacle is nearer than d, so the search stops at d (not at the
+    base's phi: fewer records pass its lower bounds) and is not made when the base's phi is below d.  The same
+    boolean, NaN included: a NaN base phi fails the first test as it fails ``>= d``, and a search whose
+    cutoff or point is NaN finds no obstacle either way."""
+    if not _base_phi(kind, f, x, y, z) >= d:
+        return False
+    return _grid_below(f, x, y, z, d)[1] < 0
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -968,6 +1019,52 @@ def distance_at_least(kind, f, x, y, z, d):
     if f[H_NOBST] > 0.0 and not _obstacles_clear(f, x, y, z, d):
         return _phi_at_least(kind, f, x, y, z, d)
     return _base_phi(kind, f, x, y, z) >= d
+
+
+# ``clearance``'s modes (``clearance_view``)
+CLEAR_FLAT = 0       # the plane without obstacles: phi = y - ground
+CLEAR_PLANE_GRID = 1  # the plane with obstacles: the grid's cell tops, then y - ground
+CLEAR_ASK = 2        # any other terrain: ``distance_at_least``
+CLEAR_UNKNOWN = -1   # ``clearance``: ask ``distance_at_least``
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance_view(kind, f):
+    """V = (mode, ground h = f[0] [m], the obstacle grid's scalars): what ``clearance_cell`` and ``clearance``
+    read of terrain (kind, f), read once before a loop of point tests (scalars in registers, not reloaded per
+    point)."""
+    if kind == PLANE and f[H_NOBST] > 0.0:
+        return CLEAR_PLANE_GRID, f[0], _grid_scalars(f)
+    return (CLEAR_FLAT if kind == PLANE else CLEAR_ASK), f[0], (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance_cell(V, x, z, d):
+    """Step 1 of ``clearance``: the f-index of p's obstacle-grid cell top to read (>= 0), or CELL_FLAT,
+    CELL_OUTSIDE, CELL_UNKNOWN (also for a terrain that only ``distance_at_least`` answers)."""
+    mode, _, G = V
+    if mode == CLEAR_FLAT:
+        return CELL_FLAT
+    if mode != CLEAR_PLANE_GRID:
+        return CELL_UNKNOWN
+    return _grid_cell(G, x, z, d)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def clearance(V, top, y, d, k):
+    """``distance_at_least(kind, f, x, y, z, d)`` where the grid's cell tops answer it without a search: 1 (phi
+    >= d) or 0 (phi < d), else CLEAR_UNKNOWN (ask ``distance_at_least``).  V = ``clearance_view(kind, f)``,
+    k = ``clearance_cell(V, x, z, d)``, top = f[k] where k >= 0 (read by the caller).
+
+    For the hot loops of point tests (a node's contact test, a box corner's), written at the call as
+    ``k = clearance_cell(V, x, z, d)``, ``c = clearance(V, f[k] if k >= 0 else 0.0, y, d, k)``, ``(c > 0) if
+    c >= 0 else distance_at_least(kind, f, x, y, z, d)``.  Both steps take scalars only: an inlined function
+    that takes f takes and drops a reference to it per point (two atomic updates, which numba's pruning left
+    in the walking centipede's loops, ``flat_ground``), and the grid's scalars are read once per loop.  The
+    same answers: ``distance_at_least``'s operations on the same doubles (y - f[0] is the plane's phi)."""
+    if k == CELL_FLAT or k == CELL_OUTSIDE or (k >= 0 and y - top >= d):
+        return 1 if y - V[1] >= d else 0
+    return CLEAR_UNKNOWN
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -994,6 +1091,23 @@ def surface_normal(kind, f, x, y, z):
     elif kind == SLOPE:
         return -math.sin(f[1]), math.cos(f[1]), 0.0
     return _other_normal(kind, f, x, y, z)
+
+
+@njit(cache=True, error_model="numpy")
+def distance_and_normal(kind, f, x, y, z):
+    """(``signed_distance``, *``surface_normal``) at p from one obstacle search instead of two: both search the
+    obstacles below the base's phi, the distance keeps the nearest one's phi, the normal is its normal (the
+    base's when none is nearer).  The same doubles as the two calls (the Targeter's Balancer asks both at
+    each carried segment's centre).  Not inlined: one call, where the two inlined queries each took and
+    dropped a reference to f (``flat_ground``)."""
+    phi = _base_phi(kind, f, x, y, z)
+    if f[H_NOBST] > 0.0:
+        phi, j, _ = _grid_below(f, x, y, z, phi)
+        if j >= 0:
+            nx, ny, nz = _obstacle_normal(f, j, x, y, z)
+            return phi, nx, ny, nz
+    nx, ny, nz = _base_normal(kind, f, x, y, z)
+    return phi, nx, ny, nz
 
 
 @njit(cache=True, error_model="numpy")

@@ -162,6 +162,8 @@ def default_dt(cfg: FEMConfig) -> float:
 class BodyFEM(NodeSegments):
     """A segmented creature as one connected tetrahedral mesh, lying along +x (head first)."""
 
+    # the declarations and the case's unpacking below are alike in every body class by design (as in
+    # ``massspring.body.BodyMassSpring``)
     name = "fem"
     capabilities = frozenset({MUSCLES})
 

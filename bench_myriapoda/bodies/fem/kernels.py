@@ -190,6 +190,8 @@ def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
     floor = _JACOBI_ABS_FLOOR * (a00 + a11 + a22)
     for _sweep in range(_JACOBI_MAX_SWEEPS):
         rotated = False
+        # Deliberately unrolled: the three pairs' rotations are written out one after another on scalars in
+        # registers (``duplicates`` pairs their alike blocks; a loop over the pairs would index arrays).
         # pair (0, 1); the third index r = 2
         if _needs_rotation(a00, a11, a01, floor):
             c, s, t = _jacobi_cs(a00, a11, a01)
@@ -210,7 +212,7 @@ def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
             v21 = s * v20 + c * v21
             v20 = r0
             rotated = True
-        # pair (0, 2); r = 1
+        # pair (0, 2); r = 1 (unrolled, as pair (0, 1))
         if _needs_rotation(a00, a22, a02, floor):
             c, s, t = _jacobi_cs(a00, a22, a02)
             a00 -= t * a02
@@ -230,7 +232,7 @@ def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
             v22 = s * v20 + c * v22
             v20 = r0
             rotated = True
-        # pair (1, 2); r = 0
+        # pair (1, 2); r = 0 (unrolled, as pair (0, 1))
         if _needs_rotation(a11, a22, a12, floor):
             c, s, t = _jacobi_cs(a11, a22, a12)
             a11 -= t * a12

@@ -472,9 +472,7 @@ class BodyHybrid(SupportedSegments):
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         rb = self.rigid
         R = self.rotation_matrices()
-        half_len = 0.5 * self.layout.rigid_length
-        head = rb.c[0] + R[0][:, 0] * half_len
-        tail = rb.c[-1] - R[-1][:, 0] * half_len
+        head, tail = rb.chain_ends(R, self.layout.rigid_length)
         com = self.centre_of_mass()
         self.quality.sample(self.x, self.fem.tets, self.fem.Dm_inv)
         nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
@@ -592,8 +590,6 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
           "paper.control-turn": False, "paper.foraging": False, "paper.avoidance": False,
           "throughput.sec6-headline": True}
 
-# The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
-# declaration, not repeated logic.
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
 # ``hybrid.kernels.advance``'s arguments without n_steps
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
@@ -612,6 +608,8 @@ def _hybrid_legged_step(P):
 
 register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
 
+# The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
+# declaration, not repeated logic.
 BACKEND = BodySpec(
     name="hybrid",
     description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered "

@@ -61,7 +61,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ...world.terrain_kernels import distance_at_least
+from ...world.terrain_kernels import clearance, clearance_cell, clearance_view, distance_at_least
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -157,6 +157,7 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
     # Ground contact of the free nodes (the suite's point-mass contact) and eq. 15.
     link_spines(B.c, spine)
     n_contact = 0
+    V = clearance_view(terr_kind, terr)  # the terrain's scalars for the nodes' tests, read once per step
     for k in range(n_free):
         i = perm[k]
         # A node clear of the terrain at both ends of its step (phi >= the contact distance now,
@@ -170,17 +171,36 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
         u = np.uint64(i)
         px, py, pz = x[u, 0], x[u, 1], x[u, 2]
         vx, vy, vz = v[u, 0], v[u, 1], v[u, 2]
-        # (``distance_at_least``: the same tests as phi >= ..., answered among obstacles without their search
-        # for the nodes high above them)
-        if (py - ground >= contact_dist) if flat else distance_at_least(terr_kind, terr, px, py, pz, contact_dist):
+        # (on the plane without obstacles y - ground; else ``clearance``, then ``distance_at_least`` where it cannot
+        # tell: the same tests as phi >= ..., answered among obstacles without their search for the nodes high
+        # above them)
+        if flat:
+            clear = py - ground >= contact_dist
+        else:
+            kc = clearance_cell(V, px, pz, contact_dist)
+            c = clearance(V, terr[kc] if kc >= 0 else 0.0, py, contact_dist, kc)
+            clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, px, py, pz, contact_dist)
+        if clear:
             qx, qy, qz = px + dt * vx, py + dt * vy, pz + dt * vz
-            if (qy - ground >= 0.0) if flat else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0):
+            if flat:
+                clear = qy - ground >= 0.0
+            else:
+                kc = clearance_cell(V, qx, qz, 0.0)
+                c = clearance(V, terr[kc] if kc >= 0 else 0.0, qy, 0.0, kc)
+                clear = (c > 0) if c >= 0 else distance_at_least(terr_kind, terr, qx, qy, qz, 0.0)
+            if clear:
                 x[u, 0], x[u, 1], x[u, 2] = qx, qy, qz
                 if not math.isfinite(qx + qy + qz + vx + vy + vz):
                     status = NONFINITE
                 elif vx * vx + vy * vy + vz * vz > vmax2:
                     status = RUNAWAY_SPEED
                 continue
+        # a node not clear: ``advance_point`` on its link's spine.  This tail of the loop and the entry kernel
+        # below are alike in each link element by design (``massspring.myriapod._spring_links_step`` and
+        # ``advance_spring_chain``): the call is inlined into each link element's own loop (an inline wrapper
+        # around it would bind its array arguments again at every contact node), and an entry kernel names
+        # its link class, which numba must see as a global (a kernel shared through a closure over the class
+        # would be cached under one name for every class)
         s = node_link[i]
         touching, st = advance_point(x, v, i, (vx, vy, vz), (spine[s, 0], spine[s, 1], spine[s, 2]), terr_kind,
                                      terr, fric_model, fric, (dt, r_n, r_t, contact_dist, max_pen, vmax2), acc,

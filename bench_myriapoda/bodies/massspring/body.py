@@ -90,6 +90,8 @@ class BodyMassSpring(NodeSegments):
     terrain, turned to lie along a slope if the terrain is one.
     """
 
+    # the declarations and the case's unpacking below are alike in every body class by design (as in
+    # ``fem.body.BodyFEM``)
     name = "massspring"
     capabilities = frozenset({MUSCLES})
 

@@ -66,7 +66,7 @@ from numba.extending import intrinsic
 from numba.np.numpy_support import carray
 
 from ...world.terrain_kernels import H_NOBST, PLANE, SLOPE, signed_distance, surface_normal
-from ..contact_kernels import collide_path, contact_friction
+from ..contact_kernels import collide_path, contact_friction, reflect_beyond, reflect_velocity
 from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
                            RUNAWAY_SPEED, STATUS_TEXT)
@@ -521,6 +521,14 @@ def coulomb_friction_batch(p, nx, ny, nz, vx, vy, vz, sx, sy, sz, jn, count):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def _node_scalars(phys, fric):
+    """The node blocks' step constants: (gravity [m/s^2], dt [s], r_n, r_t [-], Euler integrator (bool), contact
+    distance [m], max penetration [m], max speed^2 [m^2/s^2]) from phys and fric."""
+    return (phys[GRAVITY], phys[DT], phys[R_N], phys[R_T], phys[INTEGRATOR] == EULER, fric[CONTACT_DISTANCE],
+            phys[MAX_PEN], phys[MAX_SPEED] * phys[MAX_SPEED])
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric, terr_kind, terr, phys, acc):
     """One step of every free node (any friction model and terrain): ``advance``'s node block.
 
@@ -531,13 +539,7 @@ def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fri
     """
     n_faces = inv_mass.shape[0] // 4
     n_seg = n_faces - 1
-    g = phys[GRAVITY]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    euler = phys[INTEGRATOR] == EULER
-    contact_dist = fric[CONTACT_DISTANCE]
-    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    g, dt, r_n, r_t, euler, contact_dist, _, max_speed2 = _node_scalars(phys, fric)
     n_contact = 0
     status = OK
     for f in range(n_faces):
@@ -551,7 +553,7 @@ def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fri
             vy = oy + dt * (fc[1, c, f] * im - g)
             vz = oz + dt * fc[2, c, f] * im
             # The other backends call contact_kernels.advance_point for this block; here it stays
-            # written out: measured in one process, the call costs this (cheap) lattice step 13 %.
+            # written out, deliberately: measured in one process, the call costs this (cheap) lattice step 13 %.
             px, py, pz = xc[0, c, f], xc[1, c, f], xc[2, c, f]
             phi = signed_distance(terr_kind, terr, px, py, pz)
             if phi < contact_dist:
@@ -626,18 +628,13 @@ def _positions_flat(xf, vf, wf, im, cd, pen0, n_flat, xd, wl, ground, step):
         # contact_kernels.collide_path: crossing point, reflection of the part beyond, push-out
         s = 0.0 if phi <= 0.0 else phi / (phi - phi_q)
         ix, iy, iz = px + s * (qx - px), py + s * (qy - py), pz + s * (qz - pz)
-        dx, dy, dz = qx - ix, qy - iy, qz - iz
-        dn = dx * nx + dy * ny + dz * nz
-        tx, ty, tz = dx - dn * nx, dy - dn * ny, dz - dn * nz
-        rx = ix - r_n * dn * nx + r_t * tx
-        ry = iy - r_n * dn * ny + r_t * ty
-        rz = iz - r_n * dn * nz + r_t * tz
+        rx, ry, rz = reflect_beyond(ix, iy, iz, qx, qy, qz, nx, ny, nz, r_n, r_t)
         vn = vx * nx + vy * ny + vz * nz
         into = vn < 0.0
-        wx, wy, wz = vx - vn * nx, vy - vn * ny, vz - vn * nz
-        bx = r_t * wx - r_n * vn * nx if into else vx
-        by = r_t * wy - r_n * vn * ny if into else vy
-        bz = r_t * wz - r_n * vn * nz if into else vz
+        bx, by, bz = reflect_velocity(vx, vy, vz, vn, nx, ny, nz, r_n, r_t)  # taken where into (selects below)
+        bx = bx if into else vx
+        by = by if into else vy
+        bz = bz if into else vz
         phi_r = _flat_phi(plane, h, ms, cs, rx, ry)
         inside = phi_r < 0.0
         rx = rx - phi_r * nx if inside else rx
@@ -694,14 +691,7 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground
     ``advance`` call (a sine, a cosine and the normal's call per step were a fixed cost of the step).
     Returns (nodes within the contact distance, status)."""
     n_flat = 4 * stride
-    g = phys[GRAVITY]
-    dt = phys[DT]
-    r_n = phys[R_N]
-    r_t = phys[R_T]
-    euler = phys[INTEGRATOR] == EULER
-    contact_dist = fric[CONTACT_DISTANCE]
-    max_pen = phys[MAX_PEN]
-    max_speed2 = phys[MAX_SPEED] * phys[MAX_SPEED]
+    g, dt, r_n, r_t, euler, contact_dist, max_pen, max_speed2 = _node_scalars(phys, fric)
     plane, h, ms, cs, nx, ny, nz = ground
     xd2, fd2 = xd + xd, fd + fd
     ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl

@@ -170,6 +170,8 @@ def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
             if st != OK:
                 status = st
             continue
+        # a node not clear: ``advance_point`` on its link's spine; alike in each link element by design, as is
+        # the entry kernel below (``hybrid.kernels._fem_links_step`` and ``advance`` say why)
         s = node_link[i]
         touching, st = advance_point(x, v, i, (vx, vy, vz), (spine[s, 0], spine[s, 1], spine[s, 2]), terr_kind,
                                      terr, fric_model, fric, (dt, r_n, r_t, contact_dist, max_pen, vmax2), acc,
@@ -357,9 +359,7 @@ class BodyRigidSpringChain(LeggedSegments):
     def observe(self, t: float, with_nodes: bool = False) -> Observation:
         rb = self.rigid
         R = rb.rotation_matrices()
-        half_len = 0.5 * self.layout.rigid_length
-        head = rb.c[0] + R[0][:, 0] * half_len
-        tail = rb.c[-1] - R[-1][:, 0] * half_len
+        head, tail = rb.chain_ends(R, self.layout.rigid_length)
         nodes = np.vstack([self.x, self.box_corners()]) if with_nodes else None
         obs = Observation(t=t, segment_centers=self.segment_centers(), com=self.centre_of_mass(), head=head,
                           tail=tail, energy=np.array(self.energy(t)), nodes=nodes)

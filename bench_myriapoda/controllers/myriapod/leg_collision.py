@@ -39,7 +39,8 @@ from numba import njit
 from bench_myriapoda.kinematics.legs import ALPHA, BETA, FEMUR, GAMMA, ROOT_X, ROOT_Y, ROOT_Z, THETA, TIBIA, \
     leg_plane_points, side_sign
 from bench_myriapoda.kinematics.rotations import matvec as _matvec
-from bench_myriapoda.world.terrain_kernels import distance_at_least, flat_ground, signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import (clearance, clearance_cell, clearance_view, distance_at_least,
+                                                   flat_ground, signed_distance, surface_normal)
 
 from .switcher import STANCE
 
@@ -72,7 +73,15 @@ def _clear_at(kind, f, c, R, g, side, a0, b0, s):
     point above the obstacles)."""
     mx, my, mz, px, py, pz = _knee_tip_points(c, R, g, side, a0[0] + s * (b0[0] - a0[0]), a0[1] + s * (b0[1] - a0[1]),
                                               a0[2] + s * (b0[2] - a0[2]))
-    return distance_at_least(kind, f, mx, my, mz, 0.0) and distance_at_least(kind, f, px, py, pz, 0.0)
+    # ``clearance``, else ``distance_at_least``: the same answers, with the grid read once and no reference counts
+    V = clearance_view(kind, f)
+    kc = clearance_cell(V, mx, mz, 0.0)
+    cl = clearance(V, f[kc] if kc >= 0 else 0.0, my, 0.0, kc)
+    if not ((cl > 0) if cl >= 0 else distance_at_least(kind, f, mx, my, mz, 0.0)):
+        return False
+    kc = clearance_cell(V, px, pz, 0.0)
+    cl = clearance(V, f[kc] if kc >= 0 else 0.0, py, 0.0, kc)
+    return (cl > 0) if cl >= 0 else distance_at_least(kind, f, px, py, pz, 0.0)
 
 
 @njit(cache=True)
@@ -180,14 +189,20 @@ def knees_inside_and_penetration(states, knees, tips, kind, f, check_knees, ik_f
     # on the plane without obstacles phi = y - ground (``flat_ground``: the same doubles as
     # ``signed_distance``, without its two atomic reference-count updates per call)
     flat, ground = flat_ground(kind, f)
+    V = clearance_view(kind, f)
     for k in range(tips.shape[0]):
         pt = tips[k, 1] - ground if flat else signed_distance(kind, f, tips[k, 0], tips[k, 1], tips[k, 2])
         tip_phi[k] = pt
         # a knee strictly outside (phi >= the smallest positive double) changes neither ik_failed nor the
-        # depth (-phi < 0 <= deepest): among obstacles ``distance_at_least`` tells so without their search
-        if not flat and distance_at_least(kind, f, knees[k, 0], knees[k, 1], knees[k, 2], KNEE_CLEAR_M):
-            deepest = max(deepest, -pt)
-            continue
+        # depth (-phi < 0 <= deepest): among obstacles ``clearance`` (else ``distance_at_least``) tells so
+        # without their search
+        if not flat:
+            kc = clearance_cell(V, knees[k, 0], knees[k, 2], KNEE_CLEAR_M)
+            cl = clearance(V, f[kc] if kc >= 0 else 0.0, knees[k, 1], KNEE_CLEAR_M, kc)
+            if (cl > 0) if cl >= 0 else distance_at_least(kind, f, knees[k, 0], knees[k, 1], knees[k, 2],
+                                                          KNEE_CLEAR_M):
+                deepest = max(deepest, -pt)
+                continue
         pk = knees[k, 1] - ground if flat else signed_distance(kind, f, knees[k, 0], knees[k, 1], knees[k, 2])
         if check_knees and states[k] == STANCE and pk < 0.0:
             ik_failed[k] = True

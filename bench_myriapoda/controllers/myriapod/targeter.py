@@ -64,7 +64,7 @@ import numpy as np
 from numba import njit
 
 from bench_myriapoda.controllers.myriapod.switcher import STANCE
-from bench_myriapoda.world.terrain_kernels import H_NOBST, obstacle_normal, obstacles_below, signed_distance, surface_normal
+from bench_myriapoda.world.terrain_kernels import H_NOBST, distance_and_normal, obstacle_normal, obstacles_below
 
 K1, K2, OMEGA_FOLLOW, OMEGA_BALANCE, ALIGN_TOL = 0, 1, 2, 3, 4
 N_TARGETER_PARAMS = 5
@@ -255,8 +255,7 @@ def targeter_step(c, R, kinematic, kind, f, params, link_rest, height_target,
         if not kinematic[i]:
             continue
         x, y, z = c[i, 0], c[i, 1], c[i, 2]
-        h = signed_distance(kind, f, x, y, z)
-        nx, ny, nz = surface_normal(kind, f, x, y, z)
+        h, nx, ny, nz = distance_and_normal(kind, f, x, y, z)  # signed_distance, surface_normal: one search
         balance(c_T[i], R_T[i], h, nx, ny, nz, height_target[i], params[K2], params[OMEGA_BALANCE],
                 params[ALIGN_TOL], dt)
         if i == 0:
