@@ -224,7 +224,6 @@ class ShapeTracker:
     def _set_harmonics(self, gain_per_cycle: float) -> None:
         """The harmonics corrected at ``gain_per_cycle`` [-]; a gain of 0 switches the correction off: none are
         carried (and the loop is the fundamental's alone, bit for bit)."""
-        self.kh = gain_per_cycle
         self.harmonics = np.asarray(self.harmonic_list if gain_per_cycle > 0.0 else (), dtype=np.int64).reshape(-1)
         self.ki_h = np.full(self.harmonics.shape[0], gain_per_cycle * self.frequency_hz)
         lead = np.full(self.harmonics.shape[0], self.lead_rad)
