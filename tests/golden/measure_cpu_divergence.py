@@ -67,7 +67,7 @@ def pytest_and_save(out: pathlib.Path) -> int:
     ``run`` would: one compile serves both the test and the measurement."""
     import pytest
 
-    rc = pytest.main(["-m", "golden", str(HERE.parent / "test_body_wave.py")])
+    rc = pytest.main(["-n", "0", "-m", "golden", str(HERE.parent / "test_body_wave.py")])  # in this process: its runs are read below
     runs = sys.modules["test_body_wave"]._wave_off_run
     saved, meta = {}, {}
     for name, *_ in sys.modules["capture_myriapod_golden"].GOLDEN_CASES:
