@@ -78,3 +78,13 @@ def test_an_empty_store_has_the_column(tmp_path):
     connect(tmp_path / "empty.sqlite").close()
     assert sqlite3.connect(tmp_path / "empty.sqlite").execute("SELECT COUNT(*) FROM runs").fetchone() == (0,)
     assert "run_kind" in bm.load_results(tmp_path / "empty.sqlite").columns
+
+
+def test_a_result_too_short_for_its_speed_says_why_instead_of_nan():
+    r = bm.run("worm", "massspring", "flat", duration=0.3, creature__segments=4)
+    text = repr(r)
+    assert "nan" not in text.lower() and "no speed: too short" in text and "run >= 8 s" in text, text
+    assert "too short" in r._repr_html_()
+    long_enough = repr(bm.run("worm", "massspring", "flat", duration=8.0, creature__segments=4))
+    speed = float(long_enough.split("speed ")[1].split(" m/s")[0])
+    assert speed > 0, long_enough
