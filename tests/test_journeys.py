@@ -177,21 +177,21 @@ def test_main_job_then_validate_then_main_job_again_then_report_scorecard_and_lo
     s.bench()  # the main job: the quick matrix and its report
     for name in ("index.html", "summary.md", "results.sqlite", "results.csv", "matrix.json"):
         assert (d / name).is_file(), name
-    # validate --quick (a subset: one check of every body model), recorded into reports/results.sqlite
-    v = s.bench("validate", "--check", "analytic.rigid-rotation", "--quick")
+    # validate --quick (a subset: the one check every body model declares), recorded into reports/results.sqlite
+    v = s.bench("validate", "--check", "analytic.free-fall-momentum", "--quick")
     assert "stored as validation run 1 in reports/results.sqlite" in v.stdout
     assert (s.cwd / "reports" / "validation" / "validation.json").is_file()
     s.bench()  # the main job again: it reads the validation rows (it once crashed here: NameError)
     s.bench("report", "reports/quick")
     page = (d / "index.html").read_text()
     val = page[page.index('<section id="validation">'):]
-    assert "analytic.rigid-rotation" in val and "No validation results" not in val.split("</section>")[0]
+    assert "analytic.free-fall-momentum" in val and "No validation results" not in val.split("</section>")[0]
     text = s.bench("scorecard", "reports/quick").stdout
     assert "not validated" not in text
     card = json.loads(s.bench("scorecard", "reports/quick", "--json").stdout)
     pairs = card["pairs"]
     assert pairs
-    for p in pairs:  # every pair: verdict counts, not "not validated" (the rigid-rotation check is a body check)
+    for p in pairs:  # every pair: verdict counts, not "not validated" (free-fall momentum is a check of the body)
         counts = p["fidelity"]["details"].get("counts")
         assert counts and sum(counts.values()) >= 1, (p["creature"], p["body"], p["fidelity"]["text"])
         assert re.match(r"^\d+ (PASS|FAIL|INFO|NOT APPLICABLE)", p["fidelity"]["text"]), p["fidelity"]["text"]
@@ -207,14 +207,17 @@ import bench_myriapoda as bm
 by_dir = bm.load_results("reports/quick")
 by_store = bm.load_results("reports/quick/results.sqlite")
 head = by_dir[by_dir.run_kind == "headline"]
-print(json.dumps({"dir": len(by_dir), "store": len(by_store),
+print(json.dumps({"dir": len(by_dir), "store": len(by_store), "dir_cases": by_dir.case_hash.nunique(),
+                  "store_cases": by_store.case_hash.nunique(),
                   "pairs": sorted({f"{c}/{b}" for c, b in zip(head.creature, head.body)}),
-                  "same_kinds": sorted(zip(by_dir.case_hash, by_dir.run_kind))
-                                == sorted(zip(by_store.case_hash, by_store.run_kind)),
+                  "same_kinds": sorted(set(zip(by_dir.case_hash, by_dir.run_kind)))
+                                == sorted(set(zip(by_store.case_hash, by_store.run_kind))),
                   "kinds": sorted(set(by_dir.run_kind))}))
 """).stdout
     got = json.loads(out.strip().splitlines()[-1])
-    assert got["dir"] == got["store"] > 0 and got["same_kinds"]
+    # the directory: each case once (its newest run); the store: every run, so each case of both main jobs
+    assert got["dir"] == got["dir_cases"] == got["store_cases"] > 0 and got["store"] == 2 * got["dir"]
+    assert got["same_kinds"]
     assert "headline" in got["kinds"] and "sweep" in got["kinds"]
     assert set(got["pairs"]) == {f"{p['creature']}/{p['body']}" for p in pairs}
 
