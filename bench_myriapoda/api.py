@@ -153,10 +153,21 @@ class Result:
         c = self.case
         return f"{c.creature.name} / {c.body.name} / {c.gait.name} / {c.scenario.name}"
 
-    def __repr__(self) -> str:
+    def _speed_text(self) -> str:
+        """``speed X m/s``; when there is no number, why: the run was too short for its steady cycles (the
+        reason the runner put in the labels), it blew up or failed (its message), or no speed is defined."""
         speed = self.metrics.get("speed_m_per_s", float("nan"))
-        return (f"<Result {self._title()}: {self.status}, {self.timings.get('steps', 0)} steps, "
-                f"speed {speed:.4g} m/s>")
+        if isinstance(speed, (int, float)) and math.isfinite(speed):
+            return f"speed {speed:.4g} m/s"
+        too_short = self.labels.get("too_short")
+        if too_short:
+            return f"no speed: {too_short}"
+        if self.status != "ok" and self.message:
+            return f"no speed: {self.message}"
+        return "no speed measured"
+
+    def __repr__(self) -> str:
+        return f"<Result {self._title()}: {self.status}, {self.timings.get('steps', 0)} steps, {self._speed_text()}>"
 
     def _repr_html_(self) -> str:
         """A notebook's view: the case, status, timings and every metric (labels for coded ones)."""
@@ -171,6 +182,8 @@ class Result:
                        for k, v in sorted(self.metrics.items()))
         t = self.timings
         msg = f" ({html.escape(self.message)})" if self.message else ""
+        if self.labels.get("too_short"):  # why the locomotion metrics below are blank
+            msg += f"<br>locomotion metrics blank: {html.escape(self.labels['too_short'])}"
         return (f"<div><b>{html.escape(self._title())}</b> &mdash; status <b>{html.escape(self.status)}</b>{msg}<br>"
                 f"dt {c.dt:.3g} s, duration {c.duration:.3g} s, seed {c.seed}, case {c.case_hash()}<br>"
                 f"{t.get('steps', 0)} steps, {cell(t.get('steps_per_s'))} steps/s, realtime x{cell(t.get('realtime_factor'))}, "
@@ -302,6 +315,61 @@ def _swept_keys(flat: list[dict[str, Any]], groups: list[tuple]) -> list[str]:
     return keys
 
 
+# What a stored run is, for averaging (``load_results``' ``run_kind``): a headline run measures the case as
+# configured; a sweep run is one grid point of a stability or scaling sweep (or a stable-dt search); an
+# unstable run blew up (its metrics stop at t_fail); a failed run ended in an error or a timeout.
+RUN_KINDS = ("headline", "sweep", "unstable", "failed")
+
+
+def _sibling_manifest(store: Path) -> dict | None:
+    """The ``matrix.json`` next to a store (a matrix directory's ``results.sqlite``), or None."""
+    from .harness.matrix import MANIFEST
+
+    f = store.parent / MANIFEST
+    try:
+        doc = json.loads(f.read_text()) if f.is_file() else None
+        return doc if isinstance(doc, dict) and isinstance(doc.get("cases"), dict) else None
+    except (OSError, ValueError):
+        return None
+
+
+def _run_kinds(runs, flat: list[dict[str, Any]], cases: list[dict[str, Any]], manifest: dict | None) -> list[str]:
+    """``RUN_KINDS`` of each row of ``runs`` (the store's rows, ``flat``: their flattened configurations).
+
+    The status decides first (``unstable``; ``error`` and ``timeout`` are ``failed``).  Then: a ``stable-dt``
+    row is a sweep (a dt search); a ``matrix`` row is a sweep when its grid point sets a grid key (the
+    manifest's axes beyond creature, body, gait, scenario and seed: how ``report`` tells sweeps from
+    headline cases) and a headline case otherwise.  Without the manifest of its matrix, a ``matrix`` row
+    is a sweep when another row of the same matrix, creature, body, gait, scenario and duration differs
+    from it in a configuration key other than the seed (a grid point among others); ``run`` and ``api``
+    rows are headline runs.
+    """
+    by_group: dict[tuple, set[str]] = {}
+    keys = []
+    for (_, r), c, f in zip(runs.iterrows(), cases, flat):
+        k = (r.matrix, *(c[a]["name"] for a in AXES[:4]), c.get("duration"))
+        keys.append(k)
+        if r.command == "matrix":
+            by_group.setdefault(k, set()).add(json.dumps({x: v for x, v in f.items() if x != "seed"},
+                                                         sort_keys=True, default=str))
+    out = []
+    for (_, r), k in zip(runs.iterrows(), keys):
+        if r.status == "unstable":
+            out.append("unstable")
+        elif r.status != "ok":
+            out.append("failed")
+        elif r.command == "stable-dt":
+            out.append("sweep")
+        elif r.command != "matrix":
+            out.append("headline")
+        elif manifest is not None and r.matrix == manifest.get("name") and r.case_hash in manifest["cases"]:
+            axes = manifest["cases"][r.case_hash].get("axes", {})
+            out.append("sweep" if any(a not in AXES for a in axes) else "headline")
+        else:
+            out.append("sweep" if len(by_group.get(k, ())) > 1 else "headline")
+    return out
+
+
 def _read_runs(store: Path):
     from .harness.store import StoreReadError, read_runs
 
@@ -320,6 +388,14 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
     ``run_id``, ``case_hash``, ``status``, ``message``, ``command``, ``matrix``, ``duration``, the timings
     (``steps``, ``steps_per_s``, ``realtime_factor``, ``compile_s``, ``wall_s``), ``git_commit`` and
     ``timestamp``.
+
+    ``run_kind`` tells what a row's numbers are before you average them: ``headline`` (the case as
+    configured: a ``run``, an API run, a matrix case outside its grids), ``sweep`` (a grid point of a
+    matrix's stability or scaling sweep, or a ``stable-dt`` search), ``unstable`` (it blew up: its metrics
+    stop at ``t_fail_s``) or ``failed`` (``error`` or ``timeout``).  A matrix's grid points are read from its
+    ``matrix.json`` (the directory's, or the one next to a store); without one, a matrix row is a sweep
+    when another row of the same matrix, creature, body, gait, scenario and duration differs from it in
+    any key but the seed.  ``df[df.run_kind == "headline"]`` keeps the rows a comparison should average.
 
     ``store_or_dir``: a ``.sqlite`` store (every run in it), or a directory written by ``matrix`` /
     :func:`run_matrix` (its cases, the newest run of each, with the matrix's grid keys as the swept
@@ -350,6 +426,7 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
         raise InputError(str(p), None, "no such file or directory; give a results store (.sqlite) or a matrix "
                                        "output directory")
     runs = _read_runs(p)
+    kinds_manifest = manifest if manifest is not None else _sibling_manifest(p)
     if manifest is not None:
         runs = runs[(runs.command == "matrix") & (runs.matrix == manifest.get("name"))]
         runs = runs.drop_duplicates("case_hash", keep="last")
@@ -365,8 +442,9 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
     unknown = [k for k in extra if not any(k in f for f in flat)]
     if unknown and flat:  # no run has it: a typo, not a key of another body model
         raise InputError("keys", unknown[0], "not a configuration key of any run here (see `bench-myriapoda keys`)")
+    kinds = _run_kinds(runs, flat, cases, kinds_manifest)
     rows = []
-    for (_, r), case, f in zip(runs.iterrows(), cases, flat):
+    for (_, r), case, f, kind in zip(runs.iterrows(), cases, flat, kinds):
         axes = {"creature": case["creature"]["name"], "body": case["body"]["name"], "gait": case["gait"]["name"],
                 "scenario": case["scenario"]["name"], "seed": case["seed"]}
         if manifest is not None:  # the axis values as the matrix names them (a .toml path, not its stem)
@@ -376,7 +454,7 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
         for k in swept + extra:  # a key this run's body model lacks (a mixed-body sweep): an empty cell
             v = f.get(k)
             row[k] = list(v) if isinstance(v, tuple) else (np.nan if v is None else v)
-        row.update({"duration": case["duration"], "status": r.status, "message": r.message or "",
+        row.update({"duration": case["duration"], "status": r.status, "run_kind": kind, "message": r.message or "",
                     "command": r.command, "matrix": r.matrix, "git_commit": r.git_commit, "timestamp": r.timestamp})
         timings = json.loads(r.timings_json)
         for k in ("steps", "steps_per_s", "realtime_factor", "compile_s", "wall_s"):
@@ -388,5 +466,5 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
         rows.append(row)
     if not rows:
         return pd.DataFrame(columns=["run_id", "case_hash", *AXES, "dt", *swept, *extra, "duration", "status",
-                                     "message"])
+                                     "run_kind", "message"])
     return pd.DataFrame(rows)

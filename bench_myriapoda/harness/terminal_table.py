@@ -8,7 +8,7 @@ Read on a terminal, it must explain itself without the report:
   keys (``sweep over dt x body.stiffness``);
 * a blow-up in a sweep over dt or a stiffness key is labelled ``unstable (intended)``: such a sweep
   looks for where the integrator fails;
-* a value smaller than the round-off of its quantity (``ROUND_OFF``) prints as 0, a speed measured
+* a value smaller than the round-off of its quantity (``core.cells.ROUND_OFF``) prints as 0, a speed measured
   over too few steady cycles as ``too short``, a commanded speed with ``(cmd)``, the speeds of a
   blown-up run or a passive body as '-';
 * the closing line counts the statuses and the report's figure verdicts and links the report
@@ -21,26 +21,19 @@ import math
 from pathlib import Path
 from typing import Any, Iterable, Sequence
 
+from ..core.cells import fmt
+
 # (metric, header): the columns after the case's own
 METRIC_COLUMNS = (("speed_bl_per_cycle", "BL/cycle"), ("speed_m_per_s", "speed [m/s]"),
                   ("travel_angle_deg", "angle [deg]"), ("t_fail_s", "t_fail [s]"))
-# magnitudes below which a value is round-off of its quantity (double precision on metre-scale
-# positions over a run: 1e-9 m/s is far below any gait's speed, far above the 1e-15 of a resting body)
-ROUND_OFF = {"speed_bl_per_cycle": 1e-9, "speed_m_per_s": 1e-9, "travel_angle_deg": 1e-9, "t_fail_s": 0.0,
-             "steps_per_s": 0.0}
 BLOW_UP_KEYS = ("dt", "body.stiffness", "body.youngs_modulus_pa", "body.link_stiffness_n_m")
 LEGGED_GAITS = ("leg-wave",)
 
 
 def cell(v: Any, quantity: str = "") -> str:
-    """A value as the terminal shows it: '-' when missing, 0 under the quantity's round-off, 4 digits."""
-    if v is None or (isinstance(v, float) and not math.isfinite(v)):
-        return "-"
-    if isinstance(v, float):
-        if abs(v) < ROUND_OFF.get(quantity, 0.0):
-            return "0"
-        return f"{v:.4g}"
-    return str(v)
+    """A value as the terminal shows it: '-' when missing, 0 under the quantity's round-off (``core.cells.ROUND_OFF``,
+    shared with the report's tables: ``core.cells.fmt``), 4 digits."""
+    return fmt(v, quantity)
 
 
 def _swept(row: dict, grid_keys: Sequence[str]) -> str:

@@ -25,6 +25,7 @@ from ..metrics.gait import (  # noqa: E402
     N_STATES,
     RIGHT,
     STATE_COLORS,
+    STATE_DESCRIPTIONS,
     STATE_NAMES,
     check_timeline,
     leg_index,
@@ -36,6 +37,9 @@ from ..metrics.gait import (  # noqa: E402
 )
 from .figure_files import LABEL_PT, TITLE_PT, WIDE_IN, save_figure  # noqa: E402
 
+# the legend's title: the leg-tip positions the state descriptions name (paper Sec. 4.2)
+LEGEND_TITLE = ("leg state (Fang et al. 2013, Sec. 4.2)\nPEP / AEP: posterior / anterior extreme position\n"
+                "MUP / MDP: middle up / down position")
 ROW_HEIGHT = 0.9        # bar height as a fraction of the row pitch: thin white gaps separate legs
 GROUP_GAP_ROWS = 0.8    # extra space between the left and the right block in the grouped layout
 ROW_PITCH_IN = 0.2      # [in] per leg row: room for a 9 pt label
@@ -104,9 +108,11 @@ def plot_gait_diagram(t, states, path, last_seconds: float = 1.0, title: str | N
     ax.set_xlim(t[0], t[-1] if t[-1] > t[0] else t[0] + 1e-3)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("leg (L/R, segment; head at top)")
-    handles = [Patch(facecolor=STATE_COLORS[c], label=STATE_NAMES[c]) for c in range(N_STATES)]
+    # each state named and explained where it is drawn: the codes alone (SF1, SB2) say nothing to a reader
+    handles = [Patch(facecolor=STATE_COLORS[c], label=f"{STATE_NAMES[c]}: {STATE_DESCRIPTIONS[c]}")
+               for c in range(N_STATES)]
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=LABEL_PT, frameon=False,
-              title="leg state", title_fontsize=LABEL_PT)
+              title=LEGEND_TITLE, title_fontsize=LABEL_PT, alignment="left")
     ax.set_title(title or f"Leg states, last {t[-1] - t[0]:.2f} s", fontsize=TITLE_PT)
     fig.tight_layout()
     return save_figure(fig, path)

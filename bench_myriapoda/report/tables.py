@@ -51,6 +51,8 @@ COMPARISON_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("steps_per_s", "steps/s", "throughput"),
     ("realtime_factor", "x realtime", "throughput"),
 )
+# the metric behind each header, so that a cell under its round-off prints as 0 (core.cells.ROUND_OFF)
+HEADER_QUANTITY = {head: col for col, head, _ in COMPARISON_COLUMNS}
 TABLE_GROUPS = (("", ("stability", "contact", "throughput")), ("locomotion and gait", ("speed", "shape", "gait")))
 SWEEP_GROUPS = ("stability", "throughput")  # a sweep's rows are short runs: their speeds are not shown
 CASE_COLUMNS = ("body", "gait", "scenario", "seed")
@@ -272,7 +274,7 @@ def html_table(df: pd.DataFrame, row_classes: Sequence[str] | None = None, notes
             if key:
                 cells.append(f'<td class="na">-<sup>{html.escape(marks[key])}</sup></td>')
             else:
-                cells.append(f"<td>{html.escape(fmt(v))}</td>")
+                cells.append(f"<td>{html.escape(fmt(v, HEADER_QUANTITY.get(str(df.columns[j]), '')))}</td>")
         rows.append(f"<tr{cls}>{''.join(cells)}</tr>")
     return f'<table><thead><tr>{head}</tr></thead><tbody>{"".join(rows)}</tbody></table>'
 
@@ -287,6 +289,6 @@ def md_table(df: pd.DataFrame, notes: pd.DataFrame | None = None, marks: dict[st
         cells = []
         for j, v in enumerate(r.values):
             key = notes.iat[i, j] if notes is not None else ""
-            cells.append(f"-({marks[key]})" if key else fmt(v).replace("|", "/"))
+            cells.append(f"-({marks[key]})" if key else fmt(v, HEADER_QUANTITY.get(cols[j], "")).replace("|", "/"))
         lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"

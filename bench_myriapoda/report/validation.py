@@ -76,6 +76,7 @@ def _from_store(path: Path) -> ValidationData | None:
         "source": df["source"], "tolerance": df["tolerance"], "verdict": df["verdict"], "detail": df["detail"],
         "unit": df["unit"], "seconds": df["seconds"]})
     out = df["out_dir"].iloc[0]
+    run = int(df["run_id"].iloc[0])  # read_latest_validation returns one run's rows: they share run_id
     return ValidationData(rows, f"validate run {run} in {path} ({df['timestamp'].iloc[0]})",
                           bool(df["quick"].iloc[0]), Path(out) if out else None)
 
