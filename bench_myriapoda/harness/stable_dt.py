@@ -83,3 +83,116 @@ def _search(case: Case, stable, trials, rel_tol: float, max_runs: int, dt_floor:
         else:
             hi = mid
     return StableDtResult(lo, hi, trials)
+
+
+# --------------------------------------------------------------------------- the main job's brackets
+# The scorecard's stability cell of every headline pair: [largest stable, smallest unstable] dt, bisected to
+# BRACKET_REL_TOL on runs of BRACKET_DURATION_S (a blow-up of a too-large dt shows within the first tenths of a
+# second; every trial that stays stable costs the whole duration, so the runs are short).  A bracket is kept in
+# the matrix directory's BRACKETS_NAME under a key of the trial case's hash and the package's source hash: a
+# rerun of the same code finds it and runs nothing, an edit of any source file bisects again.
+
+BRACKET_REL_TOL = 0.10
+BRACKET_DURATION_S = 1.0
+BRACKET_MAX_RUNS = 12
+BRACKETS_NAME = "stable_dt.json"
+
+
+def source_hash() -> str:
+    """The hash of every source file of the package (the key of its numba cache directory, ``_numba_cache_dir``)."""
+    from pathlib import Path
+
+    from .. import _numba_cache_dir
+
+    return Path(_numba_cache_dir()).name
+
+
+def bracket_case(case: Case) -> Case:
+    """The trial case of ``case``'s bracket: the same case, BRACKET_DURATION_S long (never longer than it)."""
+    return dataclasses.replace(case, duration=min(case.duration, BRACKET_DURATION_S))
+
+
+def bracket_key(case: Case, code: str) -> str:
+    """The cache key of ``case``'s bracket: the trial case's hash, the tolerance and the source hash ``code``."""
+    return f"{bracket_case(case).case_hash()}:{BRACKET_REL_TOL:g}:{code}"
+
+
+def bracket_entry(case: Case) -> dict:
+    """Bisect ``bracket_case(case)`` and return the JSON entry the scorecard reads (dt in s; None: not found)."""
+    import time
+
+    trial = bracket_case(case)
+    t0 = time.process_time()
+    res = find_stable_dt(trial, rel_tol=BRACKET_REL_TOL, max_runs=BRACKET_MAX_RUNS)
+
+    def num(x):
+        return None if x is None or not math.isfinite(x) else float(x)
+
+    return {"case_hash": case.case_hash(), "creature": case.creature.name, "body": case.body.name,
+            "scenario": case.scenario.name,
+            "default_dt_s": float(case.dt), "trial_duration_s": float(trial.duration), "rel_tol": BRACKET_REL_TOL,
+            "stable_dt_max_s": num(res.stable_dt_max_s), "unstable_dt_min_s": num(res.unstable_dt_min_s),
+            "trials": [[float(dt), st, num(tf)] for dt, st, tf in res.trials], "error": res.error,
+            "cpu_s": time.process_time() - t0}
+
+
+def read_brackets(directory) -> dict:
+    """The brackets kept in ``directory`` (key -> entry; empty when there is no readable file).  An entry:
+    case_hash (the headline case's), creature, body, scenario, default_dt_s, trial_duration_s, rel_tol,
+    stable_dt_max_s, unstable_dt_min_s (None: not found), trials [[dt, status, t_fail_s]], error, cpu_s, code."""
+    import json
+    from pathlib import Path
+
+    path = Path(directory) / BRACKETS_NAME
+    try:
+        doc = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+    entries = doc.get("entries") if isinstance(doc, dict) else None
+    return entries if isinstance(entries, dict) else {}
+
+
+def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
+                       progress: Callable[[str], None] | None = None) -> dict[str, dict]:
+    """The bracket of every case (case_hash -> entry), bisecting the ones ``directory`` does not keep yet on
+    ``workers`` processes, then writing them all back (to a temporary name, then renamed).  Returns the entries
+    of ``cases`` only; entries of other cases in the file are kept."""
+    import json
+    from pathlib import Path
+
+    code = source_hash()
+    kept = read_brackets(directory)
+    todo = [c for c in cases if bracket_key(c, code) not in kept]
+    if todo:
+        if progress is not None:
+            progress(f"bisecting the stable dt of {len(todo)} pair(s) ({len(cases) - len(todo)} kept)")
+        if workers > 1 and len(todo) > 1:
+            from concurrent.futures import ProcessPoolExecutor
+
+            from .worker_start import worker_context
+
+            with ProcessPoolExecutor(max_workers=min(workers, len(todo)), mp_context=worker_context()) as pool:
+                found = list(pool.map(bracket_entry, todo))
+        else:
+            found = [bracket_entry(c) for c in todo]
+        for c, e in zip(todo, found):
+            kept[bracket_key(c, code)] = {**e, "code": code}
+        path = Path(directory) / BRACKETS_NAME
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(".json.tmp")
+        tmp.write_text(json.dumps({"entries": kept}, indent=1))
+        tmp.replace(path)
+    return {c.case_hash(): kept[bracket_key(c, code)] for c in cases}
+
+
+def brackets_by_case(directory) -> dict[str, dict]:
+    """The brackets kept in ``directory`` by headline case hash; of several (older code), the current code's."""
+    code = source_hash()
+    out: dict[str, dict] = {}
+    for e in read_brackets(directory).values():
+        if not isinstance(e, dict) or "case_hash" not in e:
+            continue
+        h = e["case_hash"]
+        if h not in out or e.get("code") == code:
+            out[h] = e
+    return out
