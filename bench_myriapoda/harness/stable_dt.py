@@ -153,10 +153,10 @@ def read_brackets(directory) -> dict:
 
 
 def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
-                       progress: Callable[[str], None] | None = None) -> dict[str, dict]:
+                       progress: Callable[[str], None] | None = None, pool=None) -> dict[str, dict]:
     """The bracket of every case (case_hash -> entry), bisecting the ones ``directory`` does not keep yet on
-    ``workers`` processes, then writing them all back (to a temporary name, then renamed).  Returns the entries
-    of ``cases`` only; entries of other cases in the file are kept."""
+    ``workers`` processes (or on ``pool``, a ``concurrent.futures`` executor), then writing them all back (to
+    a temporary name, then renamed).  Returns the entries of ``cases`` only; other entries in the file stay."""
     import json
     from pathlib import Path
 
@@ -166,7 +166,9 @@ def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
     if todo:
         if progress is not None:
             progress(f"bisecting the stable dt of {len(todo)} pair(s) ({len(cases) - len(todo)} kept)")
-        if workers > 1 and len(todo) > 1:
+        if pool is not None:
+            found = list(pool.map(bracket_entry, todo))
+        elif workers > 1 and len(todo) > 1:
             from concurrent.futures import ProcessPoolExecutor
 
             from .worker_start import worker_context

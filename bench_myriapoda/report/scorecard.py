@@ -71,7 +71,7 @@ COLUMNS: tuple[Column, ...] = (
     Column("stability", "stability: stable dt bracket [s] (margin)", "s (margin: x, dimensionless)",
            "[largest stable, smallest unstable] time step of the headline case, bisected to 10 % on 1 s runs; "
            "margin = largest stable dt / default dt (< 1.2: a risk, < 1: the default blows up)"),
-    Column("fidelity", "fidelity: verdicts (worst check)", "count of verdicts; measured and reference in the "
+    Column("fidelity", "fidelity: verdicts [count] (worst check)", "count of verdicts; measured and reference in the "
            "check's unit", "PASS / FAIL / NOT APPLICABLE / INFO counts of the validate checks that apply to the pair "
            "and of the checks judged on this matrix's case, and the worst check: a FAIL, else the one closest to "
            "its tolerance"),

@@ -211,12 +211,21 @@ def _metrics(row) -> dict:
     return {k: (float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else v) for k, v in out.items()}
 
 
-def figure_verdict(page, fig, row, res, data: ValidationData | None) -> str:
-    """Write the verdict paragraph under a reproduced figure's caption; return the verdict."""
-    try:
-        out, check = case_outcome(fig, row, res)
-    except Exception as exc:  # a recording without what the criterion needs: say so, never break the report
-        out, check = None, f"could not judge this case: {type(exc).__name__}: {exc}"
+def figure_verdict(page, fig, row, res, data: ValidationData | None, verdicts=None) -> str:
+    """Write the verdict paragraph under a reproduced figure's caption; return the verdict.
+
+    ``verdicts``: the report's ``scorecard_verdicts.PairVerdicts``: the verdict is its row of this case (the
+    row the scorecard's fidelity column counts), not judged again here."""
+    if verdicts is not None and verdicts.for_case(row.case_hash) is not None:
+        v = verdicts.for_case(row.case_hash)
+        out = None if v["verdict"] == "NOT VALIDATED" else \
+            Outcome(v["verdict"], v["measured"], v["reference"], v["tolerance"], v["detail"] or "", v["unit"] or "")
+        check = v["check"] if out is not None else v["detail"]
+    else:
+        try:
+            out, check = case_outcome(fig, row, res)
+        except Exception as exc:  # a recording without what the criterion needs: say so, never break the report
+            out, check = None, f"could not judge this case: {type(exc).__name__}: {exc}"
     if out is None:
         verdict, text = "NOT VALIDATED", check
     else:
@@ -231,7 +240,8 @@ def figure_verdict(page, fig, row, res, data: ValidationData | None) -> str:
             text += f". validate {check} on {row.body}: {v['verdict']} (measured {_fmt(v['measured'])})"
     color = COLORS.get(verdict, "#666")
     weight = "700" if verdict == FAIL else "600"
-    page.html.append(f'<p class="verdict" data-verdict="{html.escape(verdict)}" style="color:{color};'
+    checked = f' data-check="{html.escape(check)}"' if out is not None else ""
+    page.html.append(f'<p class="verdict" data-verdict="{html.escape(verdict)}"{checked} style="color:{color};'
                      f'font-weight:{weight}">Verdict: {html.escape(verdict)} -- {html.escape(text)}</p>')
     page.md.append(f"**Verdict: {verdict}** -- {text}\n")
     return verdict
