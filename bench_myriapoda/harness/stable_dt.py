@@ -29,9 +29,11 @@ class StableDtResult:
 
 def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_floor: float = 1e-7,
                    dt_ceiling: float | None = None,
-                   progress: Callable[[float, str], None] | None = None, world=None) -> StableDtResult:
+                   progress: Callable[[float, str], None] | None = None, world=None,
+                   known: dict | None = None) -> StableDtResult:
     """Bisect dt for ``case`` (its duration and everything else fixed).  ``world``: the case's
-    ``world.world.World`` (it does not depend on dt), built once here when None and shared by every trial."""
+    ``world.world.World`` (it does not depend on dt), built once here when None and shared by every trial.
+    ``known``: dt -> a ``RunResult`` of this case already run at that dt (its trial is not run again)."""
     world = build_world(case) if world is None else world
     ceiling = dt_ceiling if dt_ceiling is not None else case.duration / 20.0
     trials: list[tuple[float, str, float]] = []
@@ -40,7 +42,7 @@ def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_flo
         pass
 
     def stable(dt: float) -> bool:
-        r = run_case(dataclasses.replace(case, dt=dt), world=world)
+        r = (known or {}).get(dt) or run_case(dataclasses.replace(case, dt=dt), world=world)
         trials.append((dt, r.status, r.metrics.get("t_fail_s", float("nan"))))
         if progress is not None:
             progress(dt, r.status)
@@ -87,7 +89,8 @@ def _search(case: Case, stable, trials, rel_tol: float, max_runs: int, dt_floor:
 
 # --------------------------------------------------------------------------- the main job's brackets
 # The scorecard's stability cell of every headline pair: [largest stable, smallest unstable] dt, bisected to
-# BRACKET_REL_TOL on runs of BRACKET_DURATION_S (a blow-up of a too-large dt shows within the first tenths of a
+# BRACKET_REL_TOL on runs of BRACKET_DURATION_S, and its cost cell: the same run at the default dt, timed
+# TIMED_REPEATS times (a blow-up of a too-large dt shows within the first tenths of a
 # second; every trial that stays stable costs the whole duration, so the runs are short).  A bracket is kept in
 # the matrix directory's BRACKETS_NAME under a key of the trial case's hash and the package's source hash: a
 # rerun of the same code finds it and runs nothing, an edit of any source file bisects again.
@@ -96,6 +99,7 @@ BRACKET_REL_TOL = 0.10
 BRACKET_DURATION_S = 1.0
 BRACKET_MAX_RUNS = 12
 BRACKETS_NAME = "stable_dt.json"
+TIMED_REPEATS = 3  # runs of the trial case at its default dt, timed: the scorecard's cost and its spread
 
 
 def source_hash() -> str:
@@ -114,25 +118,35 @@ def bracket_case(case: Case) -> Case:
 
 def bracket_key(case: Case, code: str) -> str:
     """The cache key of ``case``'s bracket: the trial case's hash, the tolerance and the source hash ``code``."""
-    return f"{bracket_case(case).case_hash()}:{BRACKET_REL_TOL:g}:{code}"
+    return f"{bracket_case(case).case_hash()}:{BRACKET_REL_TOL:g}:{TIMED_REPEATS}:{code}"
 
 
 def bracket_entry(case: Case) -> dict:
-    """Bisect ``bracket_case(case)`` and return the JSON entry the scorecard reads (dt in s; None: not found)."""
+    """Time ``bracket_case(case)`` TIMED_REPEATS times at its default dt, then bisect it (the first of those runs
+    is the bisection's first trial); return the JSON entry the scorecard reads (dt in s; None: not found)."""
     import time
 
     trial = bracket_case(case)
     t0 = time.process_time()
-    res = find_stable_dt(trial, rel_tol=BRACKET_REL_TOL, max_runs=BRACKET_MAX_RUNS)
+    world = build_world(trial)
+    repeats = [run_case(trial, world=world) for _ in range(TIMED_REPEATS)]
+    res = find_stable_dt(trial, rel_tol=BRACKET_REL_TOL, max_runs=BRACKET_MAX_RUNS, world=world,
+                         known={trial.dt: repeats[0]})
 
     def num(x):
         return None if x is None or not math.isfinite(x) else float(x)
+
+    timed = [r for r in repeats if r.status == "ok" and num(r.timings.get("realtime_factor"))]
 
     return {"case_hash": case.case_hash(), "creature": case.creature.name, "body": case.body.name,
             "scenario": case.scenario.name,
             "default_dt_s": float(case.dt), "trial_duration_s": float(trial.duration), "rel_tol": BRACKET_REL_TOL,
             "stable_dt_max_s": num(res.stable_dt_max_s), "unstable_dt_min_s": num(res.unstable_dt_min_s),
             "trials": [[float(dt), st, num(tf)] for dt, st, tf in res.trials], "error": res.error,
+            # the timed repeats: CPU s per simulated s of each run at the default dt (1 / realtime factor; the
+            # kernel's stepping time, compile excluded) and its steps/s
+            "timed_cpu_s_per_sim_s": [1.0 / float(r.timings["realtime_factor"]) for r in timed],
+            "timed_steps_per_s": [float(r.timings["steps_per_s"]) for r in timed],
             "cpu_s": time.process_time() - t0}
 
 

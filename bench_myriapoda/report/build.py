@@ -206,7 +206,7 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
         friction_sweep.report_section(page, res)
     _energy(page, res, main)
     _paper(page, res, main, vdata, verdicts)
-    validation_section(page, vdata, Path(history_store) if history_store else None)
+    validation_section(page, vdata, Path(history_store) if history_store else None, verdicts)
     _history(page, Path(history_store) if history_store else None)
     regressions = _baseline(page, res, base, threshold)
     painter.finish()  # every figure file written before the page that shows it

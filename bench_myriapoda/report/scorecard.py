@@ -509,10 +509,13 @@ def repeat_rows(rows: pd.DataFrame) -> pd.DataFrame:
     return same
 
 
-def cost_group(rows: pd.DataFrame, creature: str, body: str) -> Group:
+def cost_group(rows: pd.DataFrame, creature: str, body: str, bracket: dict | None = None) -> Group:
     """CPU s per simulated s (1 / realtime factor: the kernel runs on one core) and steps/s of the headline
-    case: the median over its timed repeats (its runs with the first one's gait, scenario and duration: the
-    matrix's seeds) and their spread, max - min (``spread_cpu_s_per_sim_s``; relative: over the median)."""
+    case: the median over its timed repeats and their spread, max - min (``spread_cpu_s_per_sim_s``; relative:
+    over the median).  The repeats: the headline case's runs with the first one's gait, scenario and duration
+    (the matrix's seeds) when there are ``MIN_REPEATS`` of them, else the main job's timed runs of the case at
+    its default dt (``bracket``: ``harness.stable_dt.bracket_entry``, ``timed_cpu_s_per_sim_s``), else the
+    one headline run."""
     same = repeat_rows(rows)
     if same.empty:
         return Group(None, "no finished case", f"run `bench-myriapoda run {_cmd(creature, body)}`")
@@ -522,9 +525,16 @@ def cost_group(rows: pd.DataFrame, creature: str, body: str) -> Group:
     if rt.empty or (rt <= 0).any():
         return Group(None, "not timed", "no timing stored for this case")
     cpu = 1.0 / rt
+    headline = float(cpu.median())
+    timed = [v for v in ((bracket or {}).get("timed_cpu_s_per_sim_s") or []) if _num(v) and v > 0]
+    what = f"{len(cpu)} runs"
+    if len(cpu) < MIN_REPEATS and len(timed) >= MIN_REPEATS:
+        cpu = pd.Series(timed, dtype=float)
+        sps = pd.Series((bracket or {}).get("timed_steps_per_s") or [], dtype=float)
+        what = f"{len(cpu)} timed {float(bracket.get('trial_duration_s', 0)):g} s runs"
     med = float(cpu.median())
     details = {"cpu_s_per_sim_s": med, "steps_per_s": float(sps.median()) if not sps.empty else None,
-               "runs": int(len(cpu)), "case": str(first.get("label", "")),
+               "runs": int(len(cpu)), "case": str(first.get("label", "")), "headline_cpu_s_per_sim_s": headline,
                "cpu_s_per_sim_s_min": float(cpu.min()), "cpu_s_per_sim_s_max": float(cpu.max())}
     text = f"{med:.3g} CPU s/s, {details['steps_per_s']:.3g} steps/s"
     if len(cpu) > 1:
@@ -532,7 +542,9 @@ def cost_group(rows: pd.DataFrame, creature: str, body: str) -> Group:
         details["spread_cpu_s_per_sim_s"] = spread
         details["cpu_spread_rel"] = spread / med
         details["steps_per_s_spread_rel"] = float((sps.max() - sps.min()) / sps.median()) if len(sps) > 1 else None
-        text += f" (median of {len(cpu)} runs, range {cpu.min():.3g}-{cpu.max():.3g})"
+        text += f" (median of {what}, range {cpu.min():.3g}-{cpu.max():.3g})"
+        if "timed" in what:
+            text += f"; the {float(first['duration']):g} s run: {headline:.3g} CPU s/s"
         if len(cpu) < MIN_REPEATS:
             details["spread_reason"] = f"{len(cpu)} runs: fewer than {MIN_REPEATS}, not ranked on cost"
     else:
@@ -648,7 +660,17 @@ def recommend(creature: str, rows: list[Row]) -> str:
                    key=lambda b: costed[b].cost.value)
     parts = {b: f"{b} ({100 * scored[b].error:.3g} % {kind}, {cost_txt(b)})" for b in scored}
     losers = [b for b in scored if b not in front]
-    if len(front) == 1:
+    if unknown:  # costs without a measured spread rank nothing: by error alone
+        order = sorted(scored, key=lambda b: scored[b].error)
+        best = [b for b in order if err_cmp(b, order[0]) == 0]
+        rest = [b for b in order if b not in best]
+        if len(best) == 1:
+            line = f"{creature}: {parts[best[0]]} -- decided by error alone"
+        else:
+            line = (f"{creature}: a tie on error between {' and '.join(parts[b] for b in best)}, and costs without "
+                    "a measured spread -- nothing decides")
+        line += f"; {', '.join(parts[b] for b in rest)}: more error." if rest else "."
+    elif len(front) == 1:
         w = front[0]
         by_err = all(err_cmp(w, o) < 0 for o in losers)
         by_cost = all(cost_cmp(w, o) < 0 for o in losers)
@@ -715,7 +737,8 @@ def build_scorecard(res, vdata=None, store: Path | None = None, brackets: dict |
         bracket = brackets.get(str(first["case_hash"])) if first is not None and "case_hash" in first else None
         row = Row(creature, body, stability_group(df, res.grid_keys, creature, body, default_dt, scenario, store,
                                                   bracket),
-                  fidelity_group(verdicts, creature, body), loc, cost_group(head, creature, body), shape_group(first))
+                  fidelity_group(verdicts, creature, body), loc, cost_group(head, creature, body, bracket),
+                  shape_group(first))
         if loc.value is not None:
             row.error, row.error_kind = loc.value, "speed error"
             errs = [locomotion_group(r).value for _, r in repeat_rows(head).iterrows()]
