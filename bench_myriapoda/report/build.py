@@ -69,7 +69,7 @@ padding:0 1em;color:#222}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 h3{font-size:1em;margin-bottom:.3em}
 table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em;max-width:100%}
-table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}
+table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}dl.columns{margin:.3em 0}dl.columns dt{font-weight:600}dl.columns dd{margin:0 0 .3em 1.5em}
 th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3f3f3}
 td:first-child,th:first-child{text-align:left}
 tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
@@ -320,9 +320,9 @@ def _scorecard(page: _Page, res: MatrixResults, verdicts, store: Path | None, d:
     page.p("One row per creature x body model of this matrix; a cell without data says why and which command "
            "fills it. The columns, their units and definitions:", "note")
     page.html.append('<dl class="columns">' + "".join(
-        f"<dt>{html.escape(c.heading)}</dt><dd>{html.escape(c.definition)} Unit: {html.escape(c.unit)}.</dd>"
+        f"<dt>{html.escape(c.heading)}</dt><dd>{html.escape(c.definition)}. Unit: {html.escape(c.unit)}.</dd>"
         for c in COLUMNS) + "</dl>")
-    page.md.extend(f"- **{c.heading}**: {c.definition} Unit: {c.unit}." for c in COLUMNS)
+    page.md.extend(f"- **{c.heading}**: {c.definition}. Unit: {c.unit}." for c in COLUMNS)
     page.md.append("")
     for creature, line in card.recommendations.items():
         page.html.append(f'<p class="recommendation"><b>Recommendation</b> -- {html.escape(line)}</p>')
