@@ -79,3 +79,20 @@ def test_a_rerun_keeps_the_cases_only_of_the_same_code(tmp_path, monkeypatch):
     assert main_job.same_code_rerun(tmp_path, "quick") and not main_job.same_code_rerun(tmp_path, "paper")
     monkeypatch.setattr(S, "source_hash", lambda: "code-2")
     assert not main_job.same_code_rerun(tmp_path, "quick")
+
+
+def test_a_bisection_that_raises_is_an_entry_with_its_error_never_a_crash_and_not_kept(tmp_path, monkeypatch):
+    from bench_myriapoda.core.config import resolve_case
+    from bench_myriapoda.report.scorecard import bracket_group
+
+    case = resolve_case("worm", "massspring", "flat", duration=10.0)
+
+    def broken(case):
+        raise RuntimeError("a kernel failed")
+
+    monkeypatch.setattr(S, "_bracket_entry", broken)
+    got = S.brackets_for_cases([case], tmp_path)[case.case_hash()]
+    assert got["error"] == "RuntimeError: a kernel failed" and got["stable_dt_max_s"] is None
+    assert S.read_brackets(tmp_path) == {}  # the next run tries again
+    g = bracket_group(got, case.dt)
+    assert g.value is None and "a kernel failed" in g.reason and "bench-myriapoda stable-dt" in g.reason

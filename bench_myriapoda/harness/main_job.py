@@ -69,6 +69,19 @@ def run_check_group(names: list[str], body: str) -> list[dict]:
     return [r.to_dict() for r in run_checks([(BY_NAME[n], body) for n in names], True, (body,))]
 
 
+def _group_rows(future, names: list[str], body: str) -> list[dict]:
+    """A check group's rows; a group whose worker failed is a FAIL row per check naming the failure (as
+    ``validation.run.run_checks`` records a check that raises)."""
+    from ..validation.core import FAIL, Row
+    from ..validation.registry import BY_NAME
+
+    try:
+        return future.result()
+    except Exception as exc:  # the worker process died (BrokenProcessPool) or the rows did not come back
+        return [Row(n, BY_NAME[n].family, body, BY_NAME[n].quantity, None, None, BY_NAME[n].source, "-", FAIL,
+                    f"the worker process failed: {type(exc).__name__}: {exc}").to_dict() for n in names]
+
+
 def _read_json(path: Path) -> dict | None:
     try:
         doc = json.loads(path.read_text())
@@ -110,7 +123,7 @@ def fidelity_phase(exp, out: Path, workers: int | None,
         if futures and progress is not None:
             progress(f"validate --quick: {len(checks)} checks that apply to the matrix's pairs")
         brackets = brackets_for_cases(heads, out, n, progress, pool=pool)
-        rows = {b: f.result() for b, f in futures.items()}
+        rows = {b: _group_rows(f, groups[b], b) for b, f in futures.items()}
     if not keep:
         order = {c.name: i for i, c in enumerate(CHECKS)}
         body_order = {b: i for i, b in enumerate(bodies)}

@@ -123,7 +123,24 @@ def bracket_key(case: Case, code: str) -> str:
 
 def bracket_entry(case: Case) -> dict:
     """Time ``bracket_case(case)`` TIMED_REPEATS times at its default dt, then bisect it (the first of those runs
-    is the bisection's first trial); return the JSON entry the scorecard reads (dt in s; None: not found)."""
+    is the bisection's first trial); return the JSON entry the scorecard reads (dt in s; None: not found).
+    Anything that raises is an entry with its ``error`` (never raised: the other pairs' brackets are kept)."""
+    try:
+        return _bracket_entry(case)
+    except Exception as exc:  # a bug or an unforeseen failure: said in the cell, never a crash of the main job
+        return failed_entry(case, f"{type(exc).__name__}: {exc}")
+
+
+def failed_entry(case: Case, error: str) -> dict:
+    """The entry of a bracket that could not be found (``error`` says why)."""
+    return {"case_hash": case.case_hash(), "creature": case.creature.name, "body": case.body.name,
+            "scenario": case.scenario.name, "default_dt_s": float(case.dt),
+            "trial_duration_s": float(bracket_case(case).duration), "rel_tol": BRACKET_REL_TOL,
+            "stable_dt_max_s": None, "unstable_dt_min_s": None, "trials": [], "error": error,
+            "timed_cpu_s_per_sim_s": [], "timed_steps_per_s": [], "cpu_s": 0.0}
+
+
+def _bracket_entry(case: Case) -> dict:
     import time
 
     trial = bracket_case(case)
@@ -181,7 +198,10 @@ def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
         if progress is not None:
             progress(f"bisecting the stable dt of {len(todo)} pair(s) ({len(cases) - len(todo)} kept)")
         if pool is not None:
-            found = list(pool.map(bracket_entry, todo))
+            try:
+                found = list(pool.map(bracket_entry, todo))
+            except Exception as exc:  # a worker died (BrokenProcessPool): every missing bracket says so
+                found = [failed_entry(c, f"the worker process failed: {type(exc).__name__}: {exc}") for c in todo]
         elif workers > 1 and len(todo) > 1:
             from concurrent.futures import ProcessPoolExecutor
 
@@ -191,14 +211,16 @@ def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
                 found = list(pool.map(bracket_entry, todo))
         else:
             found = [bracket_entry(c) for c in todo]
-        for c, e in zip(todo, found):
-            kept[bracket_key(c, code)] = {**e, "code": code}
+        for c, e in zip(todo, found):  # a failed bisection is shown, not kept: the next run tries again
+            if not e.get("error"):
+                kept[bracket_key(c, code)] = {**e, "code": code}
         path = Path(directory) / BRACKETS_NAME
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(".json.tmp")
         tmp.write_text(json.dumps({"entries": kept}, indent=1))
         tmp.replace(path)
-    return {c.case_hash(): kept[bracket_key(c, code)] for c in cases}
+    failed = {c.case_hash(): e for c, e in zip(todo, found) if e.get("error")} if todo else {}
+    return {c.case_hash(): failed.get(c.case_hash()) or kept[bracket_key(c, code)] for c in cases}
 
 
 def brackets_by_case(directory) -> dict[str, dict]:
