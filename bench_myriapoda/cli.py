@@ -552,11 +552,13 @@ def cmd_stable_dt(args) -> int:
 
 
 def cmd_quick(args) -> int:
-    """The main job: the quick matrix on a local process pool, then its report."""
+    """The main job: the quick matrix on a local process pool, the stable-dt bracket of every headline pair and
+    the validate --quick checks that apply to its pairs (``harness.main_job``), then its report.  A rerun of
+    the same code keeps the cases, brackets and verdicts of the last complete run in DIR (``main_job=True``)."""
     ns = argparse.Namespace(file=QUICK_MATRIX, executor="local", workers=args.workers, scheduler=None, resume=False,
                             schedule="cost",
                             timeout_per_case=None, out=args.out, report=True, retry_failed=False, dask_timeout=None,
-                            force=False, memory_budget=None, max_steps=None)
+                            force=False, memory_budget=None, max_steps=None, main_job=True)
     return cmd_matrix(ns)
 
 
@@ -658,7 +660,16 @@ def cmd_matrix(args) -> int:
     labels = {m.case.case_hash(): m.label for m in exp.cases}
     cases = [m.case for m in exp.cases]
     write_matrix_manifest(out, exp)
-    todo = len(cases) - (len({c.case_hash() for c in cases} & done_hashes(store, exp.name)) if args.resume else 0)
+    main_job = bool(getattr(args, "main_job", False))
+    reuse = False
+    if main_job and not args.resume:  # the main job again on the same code: its stored cases are its results
+        from .harness.main_job import same_code_rerun
+        reuse = same_code_rerun(out, exp.name)
+        if reuse:
+            print(f"the cases this code ran into {out} before are kept (a rerun of the same code gives the same "
+                  f"results); `bench-myriapoda matrix {exp.name} --out DIR` into a new DIR runs them all again")
+    resume = args.resume or reuse
+    todo = len(cases) - (len({c.case_hash() for c in cases} & done_hashes(store, exp.name)) if resume else 0)
     bar = MatrixProgress(sys.stderr.isatty(), todo, label=f"matrix {exp.name}")
 
     def on_result(result, done, total):
@@ -671,7 +682,7 @@ def cmd_matrix(args) -> int:
         with _sigterm_as_interrupt():  # SIGTERM ends a matrix as Ctrl-C does: workers stopped, resumable
             ran = run_matrix(cases, executor=args.executor, workers=args.workers, scheduler=args.scheduler,
                              timeout_per_case=args.timeout_per_case, store_path=store, on_result=on_result,
-                             matrix=exp.name, resume=args.resume, series_dir=out / "series",
+                             matrix=exp.name, resume=resume, series_dir=out / "series",
                              retry_failed=args.retry_failed, schedule=getattr(args, "schedule", "cost"),
                              history_stores=[history_store], stats=stats)
     except UnstoredError as exc:  # the cases stored so far stay; --resume runs the rest once the store is fixed
@@ -716,6 +727,15 @@ def cmd_matrix(args) -> int:
     print(f"{len(table)} of {len(labels)} cases stored in {store}; {bad} error or timeout; table in {out / 'results.csv'}")
     if ran:
         print(sched["line"])
+    if main_job:
+        from .harness.main_job import fidelity_phase, write_marker
+        done = fidelity_phase(exp, out, args.workers, progress=(lambda m: print(f"main job: {m}", file=sys.stderr))
+                              if sys.stderr.isatty() else None)
+        print(f"stable dt of {done['brackets']} pairs (bisection, {out / 'stable_dt.json'}); {done['checks']} "
+              f"validate --quick checks {'kept' if done['validation_kept'] else 'run'} ({out / 'validation.json'}); "
+              f"{done['wall_s']:.0f} s")
+        if not (bad or missing):
+            write_marker(out, exp.name)
     if args.report:
         from .harness.store import DEFAULT_STORE
         from .report.build import build_report

@@ -26,10 +26,12 @@ DESCRIPTIONS: dict[str, str] = {
         case's own dt, double (or halve) it until the status flips, then bisect until the bracket is tighter
         than --rel-tol. Every trial is printed; the result (metrics stable_dt_max_s, unstable_dt_min_s) is
         recorded in the results store with command = 'stable-dt'. Takes the same case flags as `run`.""",
-    "quick": """Run the quick matrix (scenarios/matrix/quick.toml: Miller's worm and snake, the paper's
-        centipede on all three body models, the Fig. 4 chain, small dt x stiffness and size sweeps) on a
-        local process pool and write its report, reports/quick/index.html, with the scorecard on top.
-        This is also what `bench-myriapoda` with no arguments does.""",
+    "quick": """Run the quick matrix (scenarios/matrix/quick.toml: every creature on every body model, 18
+        pairs at headline length, small dt x stiffness and size sweeps) on a local process pool, then bisect
+        each headline pair's stable dt (with three timed runs at its default dt) and run the validate --quick
+        checks that apply to those pairs into the same directory, and write its report,
+        reports/quick/index.html, with the scorecard on top. A rerun of the same code keeps what the last
+        complete run stored in DIR. This is also what `bench-myriapoda` with no arguments does.""",
     "matrix": """Run a scenario matrix: a TOML file crossing creatures x bodies x gaits x scenarios x seeds x a
         grid of any configuration keys, on a local process pool or a Dask cluster. Every case goes to
         DIR/results.sqlite (and results.csv, matrix.json, series/); --resume runs only the cases not yet

@@ -333,3 +333,63 @@ def test_the_snakes_speed_is_judged_at_the_commanded_wave_and_a_missed_shape_is_
     assert "Caution: not at the commanded shape (massspring 0.6 shape_tracking_error" in line
     assert "fem 0.04" not in line
     assert "Caution" not in recommend("snake", [pair("fem", 0.05, 1.0, 0.04)])
+
+
+# --------------------------------------------------------------------------- issue 40: every pair, with fidelity
+
+ALL_PAIRS = {(c, b) for c in ("worm", "snake", "caterpillar", "centipede", "millipede", "chain")
+             for b in ("massspring", "fem", "hybrid")}
+
+
+def test_the_quick_matrix_scorecard_has_all_18_pairs_each_with_verdict_counts_and_a_stable_dt_bracket(
+        quick_run, capsys):
+    """Over the real main job's output (conftest.quick_run): the matrix, the bisections and the validate checks."""
+    assert main(["scorecard", str(quick_run.out), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert {(p["creature"], p["body"]) for p in doc["pairs"]} == ALL_PAIRS and len(doc["pairs"]) == 18
+    for p in doc["pairs"]:
+        fid, st = p["fidelity"], p["stability"]
+        assert re.match(r"\d+ (PASS|FAIL|INFO|NOT APPLICABLE)", fid["text"]), (p["creature"], p["body"], fid)
+        assert "not validated" not in fid["text"] and sum(fid["details"]["counts"].values()) >= 1
+        lo, hi = st["details"]["largest_stable_dt_s"], st["details"]["smallest_unstable_dt_s"]
+        assert lo > 0 and hi > lo and hi / lo <= 1.1 + 1e-9, (p["creature"], p["body"], st)
+        assert st["details"]["source"].startswith("bisection to 10 %") and st["text"].startswith("[")
+        assert st["details"]["margin"] == pytest.approx(lo / st["details"]["default_dt_s"])
+    # the verdicts went into the matrix directory, as `validate --out DIR` writes them
+    v = json.loads((quick_run.out / "validation.json").read_text())
+    assert v["quick"] and v["main_job"] and {r["body"] for r in v["rows"]} == {"massspring", "fem", "hybrid"}
+    # every column's unit and definition, in the JSON, the terminal text and the page
+    assert set(doc["columns"]) == {"stability", "fidelity", "locomotion", "shape", "cost"}
+    assert main(["scorecard", str(quick_run.out)]) == 0
+    text = capsys.readouterr().out
+    assert "columns:" in text and "shape_tracking_error: RMS" in text and "[CPU s per simulated s" in text
+    sc = _section((quick_run.out / "index.html").read_text(), "scorecard")
+    assert sc.count("<dt>") == 5 and "Unit: CPU s per simulated s" in html_lib.unescape(sc)
+
+
+def test_the_figures_verdicts_and_the_fidelity_column_agree_in_the_quick_report(quick_run, capsys):
+    """One source (report.scorecard_verdicts): every figure's verdict is a row of its pair's fidelity cell."""
+    assert main(["scorecard", str(quick_run.out), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    checks = {(p["creature"], p["body"]): p["fidelity"]["details"].get("checks", []) for p in doc["pairs"]}
+    paper = _section((quick_run.out / "index.html").read_text(), "paper")
+    blocks = re.findall(r"<h3>[^<]*?\): ([a-z]+)/([a-z]+)/[^<]*</h3>(.*?)(?=<h3>|$)", paper, re.S)
+    judged = 0
+    for creature, body, block in blocks:
+        m = re.search(r'data-verdict="([A-Z ]+)"(?: data-check="([^"]+)")?', block)
+        verdict, check = m.group(1), m.group(2)
+        if check is None:
+            assert verdict == "NOT VALIDATED"
+            continue
+        judged += 1
+        assert {"check": check, "verdict": verdict, "kind": "figure"} in checks[(creature, body)], (creature, body)
+    assert judged >= 12  # the snakes, centipedes, millipedes and chains
+
+
+def test_the_quick_report_fills_its_validation_section_and_says_how_to_fill_its_regress_history(quick_run):
+    page = (quick_run.out / "index.html").read_text()
+    val = _section(page, "validation")
+    assert "No validation results" not in val and "validation.json" in val
+    assert len(re.findall(r"<tr", val)) > 15
+    hist = html_lib.unescape(_section(page, "history"))
+    assert '<img src="figures/regress_history.png"' in hist or "run `bench-myriapoda regress`" in hist

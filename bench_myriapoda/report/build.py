@@ -50,6 +50,7 @@ from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
 from .figure_files import report_style
 from .figure_pool import FigurePainter
 from .tables import comparison_tables, footnote_marks, html_table, md_table
+from .scorecard_verdicts import pair_verdicts
 from .validation import figure_verdict, load_validation, section as validation_section
 
 SECTIONS = (("scorecard", "Scorecard: which body model for each creature"), ("overview", "Overview"), ("comparison", "Comparison across body models"),
@@ -68,7 +69,7 @@ padding:0 1em;color:#222}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 h3{font-size:1em;margin-bottom:.3em}
 table{border-collapse:collapse;font-size:.8em;margin:.4em 0 1em;max-width:100%}
-table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}
+table.scorecard td,table.scorecard th{text-align:left;vertical-align:top;max-width:22em}p.recommendation{margin:.2em 0}dl.columns{margin:.3em 0}dl.columns dt{font-weight:600}dl.columns dd{margin:0 0 .3em 1.5em}
 th,td{border:1px solid #ddd;padding:.2em .5em;text-align:right}th{background:#f3f3f3}
 td:first-child,th:first-child{text-align:left}
 tr.regression td{background:#fbd5d5;color:#8b0000;font-weight:600}tr.missing td{background:#fde8c8}
@@ -187,7 +188,9 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     page = _Page(tmp / "figures", painter)
     page.fig_dir.mkdir()
     vdata = load_validation(d, Path(history_store) if history_store else None)
-    _scorecard(page, res, vdata, Path(history_store) if history_store else None)
+    # one verdict table: the scorecard's fidelity column and the figures' verdicts read the same rows
+    verdicts = pair_verdicts(res, vdata)
+    _scorecard(page, res, verdicts, Path(history_store) if history_store else None, d)
     _overview(page, res)
     sweep = sweeps.sweep_mask(res.df, res.grid_keys) if not res.df.empty else pd.Series(dtype=bool)
     main = res.df[~sweep] if not res.df.empty else res.df
@@ -202,8 +205,8 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
     if not res.df.empty and friction_sweep.has_friction_sweep(res.df, res.grid_keys):
         friction_sweep.report_section(page, res)
     _energy(page, res, main)
-    _paper(page, res, main, vdata)
-    validation_section(page, vdata, Path(history_store) if history_store else None)
+    _paper(page, res, main, vdata, verdicts)
+    validation_section(page, vdata, Path(history_store) if history_store else None, verdicts)
     _history(page, Path(history_store) if history_store else None)
     regressions = _baseline(page, res, base, threshold)
     painter.finish()  # every figure file written before the page that shows it
@@ -304,20 +307,23 @@ def _overview(page: _Page, res: MatrixResults) -> None:
         page.p("Unsupported combinations (listed before the run, not run): " + "; ".join(res.unsupported), "note")
 
 
-def _scorecard(page: _Page, res: MatrixResults, vdata, store: Path | None) -> None:
-    from .scorecard import build_scorecard, scorecard_table
+def _scorecard(page: _Page, res: MatrixResults, verdicts, store: Path | None, d: Path) -> None:
+    from ..harness.stable_dt import brackets_by_case
+    from .scorecard import COLUMNS, build_scorecard, scorecard_table
     from .scorecard_figure import plot_error_vs_cost
 
     page.section("scorecard", "Scorecard: which body model for each creature")
     if res.df.empty:
         page.p("No case stored yet.", "note")
         return
-    card = build_scorecard(res, vdata, store)
-    page.p("One row per creature x body model of this matrix. Stability: the largest stable dt found (matrix dt "
-           "sweeps, else stable-dt) and the default dt's margin under it. Fidelity: the validate verdicts of the "
-           "pair and the worst deviation from a reference. Locomotion: the headline case's speed against the "
-           "kinematic or analytic reference (a commanded speed is no result). Cost: CPU seconds per simulated "
-           "second and steps/s. A cell without data says why and which command fills it.", "note")
+    card = build_scorecard(res, verdicts, store, brackets_by_case(d))
+    page.p("One row per creature x body model of this matrix; a cell without data says why and which command "
+           "fills it. The columns, their units and definitions:", "note")
+    page.html.append('<dl class="columns">' + "".join(
+        f"<dt>{html.escape(c.heading)}</dt><dd>{html.escape(c.definition)}. Unit: {html.escape(c.unit)}.</dd>"
+        for c in COLUMNS) + "</dl>")
+    page.md.extend(f"- **{c.heading}**: {c.definition}. Unit: {c.unit}." for c in COLUMNS)
+    page.md.append("")
     for creature, line in card.recommendations.items():
         page.html.append(f'<p class="recommendation"><b>Recommendation</b> -- {html.escape(line)}</p>')
         page.md.append(f"**Recommendation** -- {line}\n")
@@ -492,7 +498,7 @@ def _energy(page: _Page, res: MatrixResults, main: pd.DataFrame) -> None:
         page.p("No recorded energies in this matrix.", "note")
 
 
-def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> None:
+def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None, verdicts=None) -> None:
     from .gait_diagram import plot_gait_diagram
     from .series_plots import plot_side_strip
     from .trajectories import plot_top_views
@@ -510,7 +516,7 @@ def _paper(page: _Page, res: MatrixResults, main: pd.DataFrame, vdata=None) -> N
         page.h3(f"{fig.figure} ({fig.paper}): {r.label}")
         page.html.append(f'<p class="caption">{html.escape(fig.caption)}</p>')
         page.md.append(f"> {fig.caption}\n")
-        v = figure_verdict(page, fig, r, res, vdata)
+        v = figure_verdict(page, fig, r, res, vdata, verdicts)
         page.verdicts[v] = page.verdicts.get(v, 0) + 1
         s = series_from_recording(rec)
         scen = res.case(r.case_hash)["scenario"]

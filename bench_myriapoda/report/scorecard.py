@@ -1,25 +1,31 @@
 """The scorecard: which body model to trust for each creature, from one matrix output directory.
 
-One row per creature x body pair of the matrix, in four groups:
+One row per creature x body pair of the matrix, in four groups (``COLUMNS`` gives each column's unit and
+one-line definition; the report, ``scorecard`` and ``scorecard --json`` print them):
 
-``stability``   the largest stable dt found -- from the matrix's dt sweeps of the pair (at the
-                default value of every other swept key), else from the latest ``stable-dt`` run of
-                the pair in the results store -- and the default dt's margin under it
-                (largest stable dt / default dt; < 1: the default dt is not stable);
-``fidelity``    the ``validate`` verdicts for the pair (the checks of that creature on that body,
-                and the body's own checks), their counts and the worst deviation from its
-                reference with the check's name;
+``stability``   the bracket [largest stable, smallest unstable] dt of the pair's headline case, bisected to
+                10 % on 1 s runs by the main job (``harness.stable_dt.brackets_for_cases``, kept in
+                DIR/stable_dt.json) -- else from the matrix's dt sweeps of the pair (at the default value of
+                every other swept key), else from the latest ``stable-dt`` run of the pair in the results
+                store -- and the default dt's margin under its stable end (largest stable dt / default dt;
+                < 1: the default dt is not stable);
+``fidelity``    the verdicts of the pair (``report.scorecard_verdicts``: the ``validate`` checks of that
+                creature on that body and the body's own checks, and the checks judged on the matrix's own
+                case, the same rows the reproduced figures print), their counts and the worst check with
+                its measured value and reference;
 ``locomotion``  the headline case's speed against a reference where one applies: the kinematic
                 slithering model (``reference/slithering.py``) for lateral undulation, eps * Lambda
                 for the rectilinear worm; a commanded speed (``metrics.walk.COMMANDED``) is no
                 result and is left out, with the walk's emergent measures shown instead;
-``cost``        CPU seconds per simulated second and steps/s of the headline case, with their
-                spread over seeds (sample standard deviation / mean) when it ran with several.
+``cost``        CPU seconds per simulated second and steps/s of the headline case: the median over its
+                timed repeats (the matrix's seeds) with their spread (max - min).
 
 Every group is a number or a stated reason; where a cell has no data the reason names the command
-that fills it.  Per creature, a one-line recommendation names the bodies on the Pareto front of
-error against cost (``pareto_front``) and why.  Plain Python: the report (``report/build.py``), the
-``scorecard`` command and tests call :func:`build_scorecard`.
+that fills it.  Per creature, a one-line recommendation (``recommend``) ranks the bodies by error and
+cost, calling two bodies a tie where they differ by no more than the measured spread, says which axis
+decided, names a default dt within ``DT_RISK_MARGIN`` of its stability limit as a risk, and makes no
+claim when only one body ran.  Plain Python: the report (``report/build.py``), the ``scorecard``
+command and tests call :func:`build_scorecard`.
 """
 from __future__ import annotations
 
@@ -47,6 +53,39 @@ BODY_CHECKS = ("analytic.hanging-bar", "analytic.cantilever", "analytic.rigid-ro
                "analytic.free-fall-momentum", "analytic.stable-dt", "analytic.damping-pure-mode",
                "analytic.damping-oscillating-mode")
 SHAPE_METRIC, SHAPE_FLAG = "metric.shape_tracking_error", "metric.shape_not_achieved"
+DT_RISK_MARGIN = 1.2   # a default dt whose stable end is less than this many times above it is a risk
+MIN_REPEATS = 3        # timed repeats a cost needs before it is ranked
+
+
+@dataclass(frozen=True)
+class Column:
+    """A scorecard column: its heading, the unit of its numbers and a one-line definition."""
+
+    key: str
+    heading: str
+    unit: str
+    definition: str
+
+
+COLUMNS: tuple[Column, ...] = (
+    Column("stability", "stability: stable dt bracket [s] (margin)", "s (margin: x, dimensionless)",
+           "[largest stable, smallest unstable] time step of the headline case, bisected to 10 % on 1 s runs; "
+           "margin = largest stable dt / default dt (< 1.2: a risk, < 1: the default blows up)"),
+    Column("fidelity", "fidelity: verdicts [count] (worst check)", "count of verdicts; measured and reference in the "
+           "check's unit", "PASS / FAIL / NOT APPLICABLE / INFO counts of the validate checks that apply to the pair "
+           "and of the checks judged on this matrix's case, and the worst check: a FAIL, else the one closest to "
+           "its tolerance"),
+    Column("locomotion", "locomotion vs reference [BL/cycle]", "BL/cycle (body lengths per gait cycle); error in %",
+           "the headline case's forward speed against the kinematic slithering model (snake) or eps * Lambda "
+           "(worm); a commanded walking speed is no result"),
+    Column("shape", "shape tracking [1]", "1 (dimensionless: curvature error in units of the commanded amplitude)",
+           "shape_tracking_error: RMS over the steady window and the body of (measured - commanded) ground "
+           "curvature x body length / commanded curvature amplitude; 0: the commanded wave, 0.71: a straight body, "
+           "over 0.1: shape not achieved"),
+    Column("cost", "cost [CPU s/s, steps/s]", "CPU s per simulated s (one core); steps/s",
+           "CPU seconds the kernel takes per simulated second (1 / realtime factor) and time steps per second of "
+           "the headline case: the median over its timed repeats, +/- half their range"),
+)
 
 
 @dataclass
@@ -71,6 +110,7 @@ class Row:
     shape: Group
     error: float | None = None       # the error the recommendation ranks by (locomotion, else fidelity)
     error_kind: str = ""
+    error_spread: float = 0.0        # its spread over repeats (0: one deterministic run; a rerun gives the same)
 
 
 @dataclass
@@ -92,7 +132,9 @@ class Scorecard:
                 return int(v)
             return v
         return clean({"source": self.source, "pairs": [asdict(r) for r in self.rows],
-                      "recommendations": self.recommendations})
+                      "recommendations": self.recommendations,
+                      "columns": {c.key: {"heading": c.heading, "unit": c.unit, "definition": c.definition}
+                                  for c in COLUMNS}})
 
 
 def _num(v) -> float | None:
@@ -138,9 +180,41 @@ def _default_value(case: dict, key: str):
     return case.get(section, {}).get(name)
 
 
+def bracket_group(entry: dict, default_dt: float | None) -> Group:
+    """The stability cell of a bisected bracket (``harness.stable_dt.bracket_entry``): "[lo, hi] s" and the
+    default dt's margin under lo."""
+    lo, hi = _num(entry.get("stable_dt_max_s")), _num(entry.get("unstable_dt_min_s"))
+    default_dt = default_dt or _num(entry.get("default_dt_s"))
+    runs = len(entry.get("trials") or [])
+    how = (f"bisection to {100 * float(entry.get('rel_tol', 0.1)):g} % on {float(entry.get('trial_duration_s', 0)):g}"
+           f" s runs ({runs} runs)")
+    details = {"source": how, "largest_stable_dt_s": lo, "smallest_unstable_dt_s": hi, "default_dt_s": default_dt,
+               "margin": lo / default_dt if lo is not None and default_dt else None, "bracketed": hi is not None,
+               "trials": entry.get("trials")}
+    pair = _cmd(str(entry.get("creature")), str(entry.get("body")), str(entry.get("scenario") or ""))
+    cmd = f"`bench-myriapoda stable-dt {pair}`"
+    if entry.get("error"):
+        return Group(None, "bisection stopped", f"{str(entry['error']).splitlines()[0]}; run {cmd}", details)
+    if lo is None:
+        return Group(None, f"unstable at every dt tried (down to {min(t[0] for t in entry['trials']):.3g} s)"
+                     if entry.get("trials") else "not measured", f"no stable dt found by {how}; run {cmd}", details)
+    margin = details["margin"]
+    text = f"[{lo:.3g}, {hi:.3g}] s" if hi is not None else f">= {lo:.3g} s (no blow-up up to it)"
+    if margin is not None:
+        text += f"; default {default_dt:.3g} s, margin {margin:.3g}x"
+        if margin < 1.0:
+            text += " (default unstable)"
+        elif margin < DT_RISK_MARGIN:
+            text += f" (under {DT_RISK_MARGIN:g}x: a risk)"
+    return Group(lo, text, None, details)
+
+
 def stability_group(df: pd.DataFrame, grid_keys, creature: str, body: str, default_dt: float | None,
-                    scenario: str, store: Path | None) -> Group:
-    """Largest stable dt of the pair and the default dt's margin under it (module docstring)."""
+                    scenario: str, store: Path | None, bracket: dict | None = None) -> Group:
+    """The pair's stable dt: its bisected ``bracket`` (``harness.stable_dt``) when the main job found one, else
+    the largest stable dt of its dt sweeps or a stable-dt run, and the default dt's margin (module docstring)."""
+    if bracket is not None:
+        return bracket_group(bracket, default_dt)
     sub = df[(df["creature"] == creature) & (df["body"] == body)]
     col = "grid.dt"
     sweep = sub[sub[col].notna()] if col in sub else sub.iloc[0:0]
@@ -250,21 +324,31 @@ def tolerance_used(measured, reference, tolerance) -> tuple[float | None, float 
     return None, dev, said
 
 
-def fidelity_group(vdata, creature: str, body: str) -> Group:
-    """The validate verdicts of the pair: counts and the worst row: a FAIL if there is one, else the row
-    that comes closest to its tolerance, as a share of that tolerance (``tolerance_used``)."""
+def fidelity_group(verdicts, creature: str, body: str) -> Group:
+    """The verdicts of the pair: counts and the worst row: a FAIL if there is one, else the row that comes
+    closest to its tolerance, as a share of that tolerance (``tolerance_used``), with its measured value and
+    reference.  ``verdicts``: a ``scorecard_verdicts.PairVerdicts`` (validate rows and the matrix's own cases),
+    a ``validation.ValidationData`` (its rows only) or None."""
+    from .scorecard_verdicts import NOT_VALIDATED, PairVerdicts, validate_rows
+
     cmd = f"run `bench-myriapoda validate --body {body} --out DIR` (DIR: this matrix directory)"
-    if vdata is None:
+    if verdicts is None:
         return Group(None, "not validated", f"no validate results; {cmd}")
-    rows = vdata.rows
-    concerns = np.array([check_creature(str(c)) in (creature, None) for c in rows["check"]], dtype=bool)
-    mine = rows[(rows["body"] == body).to_numpy() & concerns]
+    if not isinstance(verdicts, PairVerdicts):  # a validate run's rows alone
+        verdicts = PairVerdicts(validate_rows(verdicts), verdicts.origin)
+    mine = verdicts.for_pair(creature, body)
+    if verdicts.origin is None and mine.empty:
+        return Group(None, "not validated", f"no validate results; {cmd}")
+    rows = verdicts.rows
+    mine = rows[(rows["body"] == body) & ((rows["creature"] == creature) | rows["creature"].isna())]
+    mine = mine[mine["verdict"] != NOT_VALIDATED]
     if mine.empty:
-        return Group(None, "no check ran", f"{vdata.origin} has no check of {creature} on {body}; {cmd}")
+        return Group(None, "no check ran", f"{verdicts.origin or 'this matrix'} has no check of {creature} on "
+                     f"{body}; {cmd}")
     counts = {k: int(v) for k, v in mine["verdict"].value_counts().items()}
-    tolerances = mine["tolerance"] if "tolerance" in mine else [None] * len(mine)
-    judged_rows = [(*tolerance_used(m, r, t), c, v) for m, r, t, c, v in
-                   zip(mine["measured"], mine["reference"], tolerances, mine["check"], mine["verdict"])
+    judged_rows = [(*tolerance_used(m, r, t), c, v, m, r, u) for m, r, t, c, v, u in
+                   zip(mine["measured"], mine["reference"], mine["tolerance"], mine["check"], mine["verdict"],
+                       mine["unit"])
                    if v in ("PASS", "FAIL")]
     rank = lambda d: -1.0 if d[0] is None else d[0]  # noqa: E731  (share of tolerance used)
     failed = [d for d in judged_rows if d[4] == "FAIL"]
@@ -277,16 +361,29 @@ def fidelity_group(vdata, creature: str, body: str) -> Group:
     share = counts.get("FAIL", 0) / judged if judged else None
     text = ", ".join(f"{n} {v}" for v, n in sorted(counts.items()))
     if worst is not None:
-        used, dev, said, check, verdict = worst
+        used, dev, said, check, verdict, measured, reference, unit = worst
         text += f"; worst: {check}" if verdict == "FAIL" else f"; closest to its tolerance: {check}"
         text += f" ({said})" if said else f" ({verdict})"
         if used is not None:
             text += f", {100 * used:.3g} % of its tolerance"
+        text += f"; measured {_said(measured, unit)}, reference {_said(reference, unit)}"
     return Group(share, text, None if share is not None else "no PASS or FAIL verdict to count",
                  {"counts": counts, "worst_check": worst[3] if worst else None,
+                  "worst_measured": worst[5] if worst else None, "worst_reference": worst[6] if worst else None,
                   "worst_deviation_rel": worst[1] if worst else None,
                   "worst_tolerance_used": worst[0] if worst else None,
-                  "fail_share": share, "origin": vdata.origin})
+                  "fail_share": share, "origin": verdicts.origin,
+                  "checks": [{"check": c, "verdict": v, "kind": k} for c, v, k in
+                             zip(mine["check"], mine["verdict"], mine["kind"])]})
+
+
+def _said(v, unit) -> str:
+    """A measured value or reference as a cell says it: 3 significant digits and its unit (round-off as 0)."""
+    f = _num(v)
+    if f is None:
+        return "-" if v is None or (isinstance(v, float) and not math.isfinite(v)) else str(v)
+    u = f" {unit}" if isinstance(unit, str) and unit else ""
+    return f"{f:.3g}{u}"
 
 
 # --------------------------------------------------------------------------- locomotion
@@ -399,32 +496,62 @@ def shape_group(row) -> Group:
 
 # --------------------------------------------------------------------------- cost
 
-def cost_group(rows: pd.DataFrame, creature: str, body: str) -> Group:
-    """CPU s per simulated s (1 / realtime factor: the kernel runs on one core) and steps/s of the headline
-    case, mean over its seeds with the relative spread."""
+def repeat_rows(rows: pd.DataFrame) -> pd.DataFrame:
+    """The timed repeats of a pair's headline case: its finished runs with the first one's gait, scenario and
+    duration (the matrix's seeds of it)."""
     ok = rows[rows["status"] == "ok"] if not rows.empty else rows
     if ok.empty:
-        return Group(None, "no finished case", f"run `bench-myriapoda run {_cmd(creature, body)}`")
+        return ok
     first = ok.iloc[0]
     same = ok[(ok["gait"] == first["gait"]) & (ok["scenario"] == first["scenario"])]
+    if "duration" in same and pd.notna(first.get("duration")):
+        same = same[np.isclose(pd.to_numeric(same["duration"], errors="coerce"), float(first["duration"]))]
+    return same
+
+
+def cost_group(rows: pd.DataFrame, creature: str, body: str, bracket: dict | None = None) -> Group:
+    """CPU s per simulated s (1 / realtime factor: the kernel runs on one core) and steps/s of the headline
+    case: the median over its timed repeats and their spread, max - min (``spread_cpu_s_per_sim_s``; relative:
+    over the median).  The repeats: the headline case's runs with the first one's gait, scenario and duration
+    (the matrix's seeds) when there are ``MIN_REPEATS`` of them, else the main job's timed runs of the case at
+    its default dt (``bracket``: ``harness.stable_dt.bracket_entry``, ``timed_cpu_s_per_sim_s``), else the
+    one headline run."""
+    same = repeat_rows(rows)
+    if same.empty:
+        return Group(None, "no finished case", f"run `bench-myriapoda run {_cmd(creature, body)}`")
+    first = same.iloc[0]
     rt = pd.to_numeric(same.get("realtime_factor"), errors="coerce").dropna()
     sps = pd.to_numeric(same.get("steps_per_s"), errors="coerce").dropna()
     if rt.empty or (rt <= 0).any():
         return Group(None, "not timed", "no timing stored for this case")
     cpu = 1.0 / rt
-    mean = float(cpu.mean())
-    details = {"cpu_s_per_sim_s": mean, "steps_per_s": float(sps.mean()) if not sps.empty else None,
-               "runs": int(len(cpu)), "case": str(first.get("label", ""))}
-    text = f"{mean:.3g} CPU s/s, {details['steps_per_s']:.3g} steps/s"
+    headline = float(cpu.median())
+    timed = [v for v in ((bracket or {}).get("timed_cpu_s_per_sim_s") or []) if _num(v) and v > 0]
+    what = f"{len(cpu)} runs"
+    if len(cpu) < MIN_REPEATS and len(timed) >= MIN_REPEATS:
+        cpu = pd.Series(timed, dtype=float)
+        sps = pd.Series((bracket or {}).get("timed_steps_per_s") or [], dtype=float)
+        what = f"{len(cpu)} timed {float(bracket.get('trial_duration_s', 0)):g} s runs"
+    med = float(cpu.median())
+    details = {"cpu_s_per_sim_s": med, "steps_per_s": float(sps.median()) if not sps.empty else None,
+               "runs": int(len(cpu)), "case": str(first.get("label", "")), "headline_cpu_s_per_sim_s": headline,
+               "cpu_s_per_sim_s_min": float(cpu.min()), "cpu_s_per_sim_s_max": float(cpu.max())}
+    text = f"{med:.3g} CPU s/s, {details['steps_per_s']:.3g} steps/s"
     if len(cpu) > 1:
-        details["cpu_spread_rel"] = float(cpu.std(ddof=1) / mean)
-        details["steps_per_s_spread_rel"] = float(sps.std(ddof=1) / sps.mean()) if len(sps) > 1 else None
-        text += f" (+/- {100 * details['cpu_spread_rel']:.2g} % over {len(cpu)} seeds)"
+        spread = float(cpu.max() - cpu.min())
+        details["spread_cpu_s_per_sim_s"] = spread
+        details["cpu_spread_rel"] = spread / med
+        details["steps_per_s_spread_rel"] = float((sps.max() - sps.min()) / sps.median()) if len(sps) > 1 else None
+        text += f" (median of {what}, range {cpu.min():.3g}-{cpu.max():.3g})"
+        if "timed" in what:
+            text += f"; the {float(first['duration']):g} s run: {headline:.3g} CPU s/s"
+        if len(cpu) < MIN_REPEATS:
+            details["spread_reason"] = f"{len(cpu)} runs: fewer than {MIN_REPEATS}, not ranked on cost"
     else:
-        details["spread_reason"] = ("one run: no spread; give the matrix seeds = [0, 1, 2] or time it with "
-                                    "`bench-myriapoda regress`")
+        details["spread_reason"] = ("one run: no spread, not ranked on cost; give the matrix seeds = [0, 1, 2] or "
+                                    "time it with `bench-myriapoda regress`")
         text += " (1 run)"
-    return Group(mean, text, None, details)
+    return Group(med, text, None, details)
 
 
 # --------------------------------------------------------------------------- the whole card
@@ -438,29 +565,135 @@ def pareto_front(points: dict[str, tuple[float, float]]) -> list[str]:
     return sorted(front, key=lambda n: points[n][1])
 
 
+def _cost_spread(r: Row) -> float | None:
+    """The absolute spread (max - min, CPU s/s) of a row's timed repeats; None under MIN_REPEATS runs."""
+    d = r.cost.details
+    if int(d.get("runs", 1)) < MIN_REPEATS:
+        return None
+    return _num(d.get("spread_cpu_s_per_sim_s"))
+
+
+def compare(a: float, b: float, spread_a: float | None, spread_b: float | None) -> int | None:
+    """-1 / 1 when ``a`` is below / above ``b`` by more than the larger of their measured spreads, 0 for a tie
+    (they differ by no more than it), None when a spread is unknown (too few repeats: no ranking)."""
+    if spread_a is None or spread_b is None:
+        return None
+    if abs(a - b) <= max(spread_a, spread_b):
+        return 0
+    return -1 if a < b else 1
+
+
+def _dt_risks(rows: list[Row]) -> list[str]:
+    out = []
+    for r in sorted(rows, key=lambda r: r.body):
+        d = r.stability.details
+        m, lo, dt = _num(d.get("margin")), _num(d.get("largest_stable_dt_s")), _num(d.get("default_dt_s"))
+        if m is None or lo is None or dt is None or m >= DT_RISK_MARGIN:
+            continue
+        if m < 1.0:
+            out.append(f"{r.body}'s default dt {dt:.3g} s is not stable (stable up to {lo:.3g} s)")
+        else:
+            out.append(f"{r.body}'s default dt {dt:.3g} s is within {DT_RISK_MARGIN:g}x of its stability limit "
+                       f"(stable up to {lo:.3g} s, margin {m:.3g}x)")
+    return out
+
+
 def recommend(creature: str, rows: list[Row]) -> str:
-    """One line: the bodies on the Pareto front of error against cost, and why."""
+    """One line per creature: the body to use and which axis decided it (error, cost or both), with ties where
+    bodies differ by no more than the measured spread of their costs (``compare``; ``MIN_REPEATS`` timed
+    repeats) or errors (``Row.error_spread``; 0 for one deterministic run, which a rerun reproduces exactly), a
+    default dt within ``DT_RISK_MARGIN`` of its stability limit as a risk, and no ranking where only one body ran."""
     costed = {r.body: r for r in rows if r.cost.value is not None}
+    risks = _dt_risks(rows)
+    tail = (" Risk: " + "; ".join(risks) + ".") if risks else ""
     if not costed:
-        return f"{creature}: no body finished a timed case; nothing to recommend yet."
-    scored = {b: (r.error, r.cost.value) for b, r in costed.items() if r.error is not None}
-    cheapest = min(costed.values(), key=lambda r: r.cost.value)
-    if not scored:
-        why = "; ".join(sorted({r.locomotion.reason or r.fidelity.reason or "" for r in costed.values()} - {""}))[:300]
-        return (f"{creature}: {cheapest.body} is cheapest ({cheapest.cost.value:.3g} CPU s per simulated s); no error "
-                f"measure to rank by ({why}).")
-    kind = next(r.error_kind for r in costed.values() if r.error is not None)
-    front = pareto_front(scored)
-    parts = [f"{b} ({100 * scored[b][0]:.3g} % {kind}, {scored[b][1]:.3g} CPU s/s)" for b in front]
-    if len(front) == 1:
-        why = "lowest error and lowest cost" if len(scored) > 1 else "the only body with an error measure"
-        if len(scored) > 1:
-            beaten = [b for b in scored if b not in front]
-            why = f"{', '.join(beaten)}: more error or more cost, and no better in the other"
-        line = f"{creature}: {parts[0]} -- {why}."
+        return f"{creature}: no body finished a timed case; nothing to recommend yet.{tail}"
+    if len(rows) == 1 or len(costed) == 1:
+        (r,) = costed.values()
+        others = "only body in this matrix" if len(rows) == 1 else "only body that finished a timed case"
+        err = f", {100 * r.error:.3g} % {r.error_kind}" if r.error is not None else ""
+        return (f"{creature}: {r.body} is the {others} ({r.cost.value:.3g} CPU s per simulated s{err}); nothing to "
+                f"compare it with, so no ranking.{tail}")
+    scored = {b: r for b, r in costed.items() if r.error is not None}
+    spreads = {b: _cost_spread(r) for b, r in costed.items()}
+    unknown = sorted(b for b, sp in spreads.items() if sp is None)
+    cost_note = (f" Costs not ranked: {', '.join(unknown)} timed fewer than {MIN_REPEATS} times (no measured "
+                 "spread)." if unknown else "")
+
+    def cost_cmp(a: str, b: str) -> int:
+        c = compare(costed[a].cost.value, costed[b].cost.value, spreads[a], spreads[b])
+        return 0 if c is None else c  # an unknown spread ranks nothing: as a tie
+
+    def cost_txt(b: str) -> str:
+        sp = spreads[b]
+        return f"{costed[b].cost.value:.3g}" + (f" +/- {sp / 2:.2g}" if sp is not None else "") + " CPU s/s"
+
+    if len(scored) < 2:
+        # rank by cost alone, ties by the spread
+        order = sorted(costed, key=lambda b: costed[b].cost.value)
+        best = [b for b in order if cost_cmp(b, order[0]) == 0]
+        why = "; ".join(sorted({r.locomotion.reason or r.fidelity.reason or "" for r in costed.values()}
+                               - {""}))[:300]
+        kind = next((r.error_kind for r in scored.values()), "")
+        what = (f"only {next(iter(scored))} has a {kind} measure" if scored else f"no error measure to rank by ({why})")
+        if unknown:
+            line = f"{creature}: not ranked -- {what}, and the costs have no measured spread."
+        elif len(best) == 1:
+            line = (f"{creature}: {best[0]} is cheapest ({cost_txt(best[0])}, beyond the spread of "
+                    f"{', '.join(f'{b} {cost_txt(b)}' for b in order[1:])}) -- decided by cost alone; {what}.")
+        else:
+            line = (f"{creature}: a tie on cost between {' and '.join(f'{b} ({cost_txt(b)})' for b in best)}: they "
+                    f"differ by less than their measured spread -- nothing decides between them; {what}.")
+        return line + cost_note + tail
+    kind = next(r.error_kind for r in scored.values())
+
+    def err_cmp(a: str, b: str) -> int:
+        ea, eb = scored[a].error, scored[b].error
+        tol = max(scored[a].error_spread, scored[b].error_spread)
+        return 0 if abs(ea - eb) <= tol else (-1 if ea < eb else 1)
+
+    def dominates(a: str, b: str) -> bool:
+        e, c = err_cmp(a, b), cost_cmp(a, b)
+        return e <= 0 and c <= 0 and (e < 0 or c < 0)
+
+    front = sorted((b for b in scored if not any(dominates(o, b) for o in scored if o != b)),
+                   key=lambda b: costed[b].cost.value)
+    parts = {b: f"{b} ({100 * scored[b].error:.3g} % {kind}, {cost_txt(b)})" for b in scored}
+    losers = [b for b in scored if b not in front]
+    if unknown:  # costs without a measured spread rank nothing: by error alone
+        order = sorted(scored, key=lambda b: scored[b].error)
+        best = [b for b in order if err_cmp(b, order[0]) == 0]
+        rest = [b for b in order if b not in best]
+        if len(best) == 1:
+            line = f"{creature}: {parts[best[0]]} -- decided by error alone"
+        else:
+            line = (f"{creature}: a tie on error between {' and '.join(parts[b] for b in best)}, and costs without "
+                    "a measured spread -- nothing decides")
+        line += f"; {', '.join(parts[b] for b in rest)}: more error." if rest else "."
+    elif len(front) == 1:
+        w = front[0]
+        by_err = all(err_cmp(w, o) < 0 for o in losers)
+        by_cost = all(cost_cmp(w, o) < 0 for o in losers)
+        axis = ("both error and cost" if by_err and by_cost else "error" if by_err else "cost" if by_cost
+                else "error for some bodies, cost for the others")
+        ties = [o for o in losers if err_cmp(w, o) == 0] if by_cost and not by_err else \
+            [o for o in losers if cost_cmp(w, o) == 0 and not unknown]
+        tie_axis = "error" if by_cost and not by_err else "cost"
+        line = f"{creature}: {parts[w]} -- decided by {axis}"
+        if ties:
+            line += f" ({', '.join(ties)}: a tie on {tie_axis}, within the measured spread)"
+        line += f"; {', '.join(parts[o] for o in losers)}: worse and no better in the other."
+    elif all(err_cmp(a, b) == 0 and cost_cmp(a, b) == 0 for a in front for b in front if a != b):
+        line = (f"{creature}: a tie between {' and '.join(parts[b] for b in front)}: errors and costs differ by "
+                "less than the measured spread -- neither axis decides.")
+        if losers:
+            line += f" ({', '.join(losers)}: worse.)"
     else:
-        line = (f"{creature}: {' or '.join(parts)} -- the Pareto front: the cheaper one costs less, the other "
-                "is closer to the reference; pick by your error budget.")
+        line = (f"{creature}: {' or '.join(parts[b] for b in front)} -- a trade-off (the Pareto front): the cheaper "
+                "one costs less, the other is closer to the reference beyond the measured spread; neither axis "
+                "decides alone, pick by your error budget.")
+        if losers:
+            line += f" ({', '.join(losers)}: worse in one and no better in the other.)"
     unranked = [b for b in costed if b not in scored]
     if unranked:
         line += f" ({', '.join(unranked)}: no {kind} measure.)"
@@ -471,20 +704,26 @@ def recommend(creature: str, rows: list[Row]) -> str:
         said = ", ".join(f"{r.body} {r.shape.value:.2g}" for r in sorted(missed, key=lambda r: r.body))
         line += (f" Caution: not at the commanded shape ({said} shape_tracking_error, over {SHAPE_THRESHOLD:g}); "
                  "those speeds are of a different motion.")
-    return line
+    return line + cost_note + tail
 
 
-def build_scorecard(res, vdata=None, store: Path | None = None) -> Scorecard:
+def build_scorecard(res, vdata=None, store: Path | None = None, brackets: dict | None = None) -> Scorecard:
     """The scorecard of a matrix directory's results (``report.matrix_data.MatrixResults``).
 
-    vdata: ``report.validation.ValidationData`` or None; store: a results store with stable-dt runs.
+    vdata: a ``report.scorecard_verdicts.PairVerdicts`` (the report passes the one its figures read), a
+    ``report.validation.ValidationData`` (then the table is built here from it and the matrix's cases) or None;
+    store: a results store with stable-dt runs; brackets: headline case hash -> bisected stable-dt bracket
+    (``harness.stable_dt.brackets_by_case``).
     """
     from ..core.config import resolve_case
+    from .scorecard_verdicts import PairVerdicts, pair_verdicts
 
     df = res.df
     rows: list[Row] = []
     if df.empty:
         return Scorecard([], {}, str(res.directory))
+    verdicts = vdata if isinstance(vdata, PairVerdicts) else pair_verdicts(res, vdata)
+    brackets = brackets or {}
     for (creature, body), _sub in df.groupby(["creature", "body"], sort=True):
         head = headline_rows(df, res.grid_keys, creature, body)
         first = head.iloc[0] if not head.empty else None
@@ -495,10 +734,16 @@ def build_scorecard(res, vdata=None, store: Path | None = None) -> Scorecard:
         except Exception:  # a scenario given as a file path the resolver cannot find from here
             default_dt = _num(first["dt"]) if first is not None else None
         loc = locomotion_group(first)
-        row = Row(creature, body, stability_group(df, res.grid_keys, creature, body, default_dt, scenario, store),
-                  fidelity_group(vdata, creature, body), loc, cost_group(head, creature, body), shape_group(first))
+        bracket = brackets.get(str(first["case_hash"])) if first is not None and "case_hash" in first else None
+        row = Row(creature, body, stability_group(df, res.grid_keys, creature, body, default_dt, scenario, store,
+                                                  bracket),
+                  fidelity_group(verdicts, creature, body), loc, cost_group(head, creature, body, bracket),
+                  shape_group(first))
         if loc.value is not None:
             row.error, row.error_kind = loc.value, "speed error"
+            errs = [locomotion_group(r).value for _, r in repeat_rows(head).iterrows()]
+            errs = [e for e in errs if e is not None]
+            row.error_spread = float(max(errs) - min(errs)) if len(errs) > 1 else 0.0
         elif row.fidelity.value is not None:
             row.error, row.error_kind = row.fidelity.value, "validate FAIL share"
         rows.append(row)
@@ -515,16 +760,23 @@ def build_scorecard(res, vdata=None, store: Path | None = None) -> Scorecard:
 
 
 def scorecard_table(card: Scorecard) -> pd.DataFrame:
-    """The scorecard as a table: one row per pair, a column per group (text cells)."""
+    """The scorecard as a table: one row per pair, a column per group (text cells), headed with their units
+    (``COLUMNS``; ``column_definitions`` gives each heading's definition)."""
     out = []
+    heads = {c.key: c.heading for c in COLUMNS}
     for r in card.rows:
         out.append({"creature": r.creature, "body": r.body,
-                    "stability: largest stable dt (margin)": _cell(r.stability),
-                    "fidelity: validate": _cell(r.fidelity),
-                    "locomotion vs reference": _cell(r.locomotion),
-                    "shape tracking": r.shape.text,
-                    "cost": _cell(r.cost)})
+                    heads["stability"]: _cell(r.stability),
+                    heads["fidelity"]: _cell(r.fidelity),
+                    heads["locomotion"]: _cell(r.locomotion),
+                    heads["shape"]: r.shape.text,
+                    heads["cost"]: _cell(r.cost)})
     return pd.DataFrame(out)
+
+
+def column_definitions() -> list[str]:
+    """One line per scorecard column: its heading, unit and definition."""
+    return [f"{c.heading}: {c.definition} (unit: {c.unit})" for c in COLUMNS]
 
 
 def _cell(g: Group) -> str:
@@ -533,8 +785,10 @@ def _cell(g: Group) -> str:
 
 def scorecard_for_dir(directory: Path | str, store: Path | None = None) -> Scorecard:
     """``build_scorecard`` of a matrix output directory, with the validate verdicts the report would show
-    (``report.validation.load_validation``: DIR/validation.json, DIR's store, then ``store``).
+    (``report.validation.load_validation``: DIR/validation.json, DIR's store, then ``store``) and the stable-dt
+    brackets the main job kept in DIR (``harness.stable_dt.brackets_by_case``).
     An ``InputError`` naming DIR when it is not a matrix output directory."""
+    from ..harness.stable_dt import brackets_by_case
     from .matrix_data import load_matrix_dir
     from .validation import load_validation
 
@@ -542,11 +796,12 @@ def scorecard_for_dir(directory: Path | str, store: Path | None = None) -> Score
     if store is not None and Path(store).exists() and not Path(store).is_file():
         from ..core.errors import InputError
         raise InputError("--history-store", None, f"{store} is not a file")
-    return build_scorecard(res, load_validation(res.directory, store), store)
+    return build_scorecard(res, load_validation(res.directory, store), store, brackets_by_case(res.directory))
 
 
 def scorecard_lines(card: Scorecard) -> list[str]:
-    """The scorecard as terminal text: per creature its recommendation, then a block per body."""
+    """The scorecard as terminal text: per creature its recommendation, then a block per body; the columns'
+    units and definitions last."""
     out = [f"scorecard of {card.source}"]
     for creature in sorted({r.creature for r in card.rows}):
         out.append("")
@@ -556,4 +811,8 @@ def scorecard_lines(card: Scorecard) -> list[str]:
             for name, g in (("stability", r.stability), ("fidelity", r.fidelity), ("locomotion", r.locomotion),
                             ("shape", r.shape), ("cost", r.cost)):
                 out.append(f"    {name:<11}{_cell(g)}")
+    out.append("")
+    out.append("columns:")
+    for c in COLUMNS:
+        out.append(f"  {c.key:<11}[{c.unit}] {c.definition}")
     return out

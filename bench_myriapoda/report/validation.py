@@ -100,12 +100,14 @@ def _fmt(v) -> str:
     return str(v)
 
 
-def section(page, data: ValidationData | None, store: Path | None) -> None:
-    """The "Validation" section: one row per check and body, then the work-precision diagrams."""
+def section(page, data: ValidationData | None, store: Path | None, verdicts=None) -> None:
+    """The "Validation" section: one row per check and body, the checks judged on the matrix's own cases
+    (``verdicts``, a ``scorecard_verdicts.PairVerdicts``), then the work-precision diagrams."""
     page.section("validation", "Validation")
     if data is None:
-        page.p("No validation results: run `bench-myriapoda validate` (rows go to reports/results.sqlite; "
-               "`--out DIR` with the matrix directory puts validation.json next to the report).", "note")
+        page.p("No validation results: run `bench-myriapoda validate --quick --out DIR` (DIR: this matrix "
+               "directory; the main job, `bench-myriapoda`, does it for reports/quick).", "note")
+        _case_verdicts(page, verdicts)
         return
     counts = data.rows["verdict"].value_counts().to_dict()
     page.p(f"From {data.origin}{' (quick set)' if data.quick else ''}: "
@@ -120,7 +122,28 @@ def section(page, data: ValidationData | None, store: Path | None) -> None:
         "reference": [_fmt(v) for v in df["reference"]], "source": df["source"], "tolerance": df["tolerance"],
         "verdict": df["verdict"], "detail": df["detail"].fillna("")})
     page.table(table, [ROW_CLASS.get(v, "") for v in df["verdict"]])
+    _case_verdicts(page, verdicts)
     _work_precision(page, data)
+
+
+def _case_verdicts(page, verdicts) -> None:
+    """The checks judged on the matrix's own headline cases (``scorecard_verdicts``): with the rows above, what
+    the scorecard's fidelity column counts."""
+    if verdicts is None:
+        return
+    rows = verdicts.rows[verdicts.rows["kind"].isin(("figure", "case")) & (verdicts.rows["verdict"] != "NOT VALIDATED")]
+    if rows.empty:
+        return
+    page.h3("Judged on this matrix's own cases")
+    page.p("The same criteria as the checks, applied to the headline cases above (the verdicts printed under the "
+           "reproduced figures); the scorecard's fidelity column counts these rows with the validate rows.", "note")
+    table = pd.DataFrame({
+        "pair": [f"{c}/{b}" for c, b in zip(rows["creature"], rows["body"])], "check": rows["check"],
+        "measured": [_fmt(m) + (f" {u}" if u and isinstance(m, (int, float)) else "") for m, u in
+                     zip(rows["measured"], rows["unit"])],
+        "reference": [_fmt(v) for v in rows["reference"]], "tolerance": rows["tolerance"],
+        "verdict": rows["verdict"], "detail": rows["detail"].fillna("")})
+    page.table(table.reset_index(drop=True), [ROW_CLASS.get(v, "") for v in rows["verdict"]])
 
 
 def _work_precision(page, data: ValidationData) -> None:
@@ -181,6 +204,10 @@ def case_outcome(fig, row, res) -> tuple[Outcome | None, str]:
         return P.judge_avoidance(m, min_contacts=1), "paper.avoidance"
     if scen == "fig4-drop":
         strain = m.get("max_strain", math.nan)
+        if not (isinstance(strain, (int, float)) and math.isfinite(strain)):  # a body without links (the lattice)
+            return (Outcome(NA, None, P.IMPACT_STRAIN_MIN, f">= {P.IMPACT_STRAIN_MIN:g}", "no link strain measured "
+                            "on this body (max_strain is not a number): the impact criterion has nothing to judge"),
+                    "paper.fig4-drop")
         return (Outcome(PASS if strain >= P.IMPACT_STRAIN_MIN else FAIL, round(strain, 4), P.IMPACT_STRAIN_MIN,
                         f">= {P.IMPACT_STRAIN_MIN:g}", "largest link strain during the drop (recovery: see the "
                         "validate row)"), "paper.fig4-drop")
@@ -212,12 +239,21 @@ def _metrics(row) -> dict:
     return {k: (float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else v) for k, v in out.items()}
 
 
-def figure_verdict(page, fig, row, res, data: ValidationData | None) -> str:
-    """Write the verdict paragraph under a reproduced figure's caption; return the verdict."""
-    try:
-        out, check = case_outcome(fig, row, res)
-    except Exception as exc:  # a recording without what the criterion needs: say so, never break the report
-        out, check = None, f"could not judge this case: {type(exc).__name__}: {exc}"
+def figure_verdict(page, fig, row, res, data: ValidationData | None, verdicts=None) -> str:
+    """Write the verdict paragraph under a reproduced figure's caption; return the verdict.
+
+    ``verdicts``: the report's ``scorecard_verdicts.PairVerdicts``: the verdict is its row of this case (the
+    row the scorecard's fidelity column counts), not judged again here."""
+    if verdicts is not None and verdicts.for_case(row.case_hash) is not None:
+        v = verdicts.for_case(row.case_hash)
+        out = None if v["verdict"] == "NOT VALIDATED" else \
+            Outcome(v["verdict"], v["measured"], v["reference"], v["tolerance"], v["detail"] or "", v["unit"] or "")
+        check = v["check"] if out is not None else v["detail"]
+    else:
+        try:
+            out, check = case_outcome(fig, row, res)
+        except Exception as exc:  # a recording without what the criterion needs: say so, never break the report
+            out, check = None, f"could not judge this case: {type(exc).__name__}: {exc}"
     if out is None:
         verdict, text = "NOT VALIDATED", check
     else:
@@ -232,7 +268,8 @@ def figure_verdict(page, fig, row, res, data: ValidationData | None) -> str:
             text += f". validate {check} on {row.body}: {v['verdict']} (measured {_fmt(v['measured'])})"
     color = COLORS.get(verdict, "#666")
     weight = "700" if verdict == FAIL else "600"
-    page.html.append(f'<p class="verdict" data-verdict="{html.escape(verdict)}" style="color:{color};'
+    checked = f' data-check="{html.escape(check)}"' if out is not None else ""
+    page.html.append(f'<p class="verdict" data-verdict="{html.escape(verdict)}"{checked} style="color:{color};'
                      f'font-weight:{weight}">Verdict: {html.escape(verdict)} -- {html.escape(text)}</p>')
     page.md.append(f"**Verdict: {verdict}** -- {text}\n")
     return verdict
