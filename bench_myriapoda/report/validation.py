@@ -30,6 +30,8 @@ from ..validation.core import FAIL, INFO, NA, PASS, Outcome
 
 COLORS = {PASS: "#17692a", FAIL: "#b00000", NA: "#8a6d00", INFO: "#1f4e99", "NOT VALIDATED": "#666"}
 ROW_CLASS = {PASS: "improvement", FAIL: "regression", NA: "missing", INFO: ""}
+VALIDATION_COLUMNS = ("check", "family", "body", "quantity", "measured", "reference", "source", "tolerance",
+                      "verdict", "detail", "unit", "seconds")  # what the section reads: None where a row lacks it
 
 
 @dataclass
@@ -49,11 +51,12 @@ class ValidationData:
 
 
 def _from_json(path: Path) -> ValidationData | None:
-    try:
-        doc = json.loads(path.read_text())
-    except (OSError, ValueError):
+    from .inputs import read_validation_json
+
+    doc = read_validation_json(path)  # an InputError naming the file when it is there and not validate's
+    if doc is None:
         return None
-    rows = pd.DataFrame(doc.get("rows", []))
+    rows = pd.DataFrame([{**dict.fromkeys(VALIDATION_COLUMNS), **r} for r in doc.get("rows", [])])
     if rows.empty:
         return None
     out = path.parent
