@@ -1041,6 +1041,8 @@ def cmd_validate(args) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
+        from .core.numba_env import check_numba_env
+        check_numba_env()  # before numba is imported: it reads these variables once, at import
         if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
             raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
         parser = build_parser()
