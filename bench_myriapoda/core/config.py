@@ -137,13 +137,23 @@ def read_toml(path: Path) -> dict[str, Any]:
         raise InputError(src, None, f"malformed TOML: {exc}") from None
     except RecursionError:
         raise InputError(src, None, f"malformed TOML: nested deeper than {MAX_TOML_DEPTH} levels") from None
+    except ValueError as exc:  # an integer of more digits than Python converts
+        raise InputError(src, None, f"a number Python cannot read ({_digits_problem(exc)})") from None
     _check_depth(data, src)
     return data
 
 
-def _check_depth(data: Any, src: str) -> None:
+def _digits_problem(exc: ValueError) -> str:
+    """What Python's integer digit limit (``sys.get_int_max_str_digits``) refused, in a few words."""
+    import sys
+
+    return f"an integer of more than {sys.get_int_max_str_digits():,} digits" if "digits" in str(exc) \
+        else str(exc)[:80]
+
+
+def _check_depth(data: Any, src: str, key: str = "") -> None:
     """Tables and arrays nested at most MAX_TOML_DEPTH deep (checked without recursion)."""
-    stack = [(data, 0, "")]
+    stack = [(data, 0, key)]
     while stack:
         value, depth, key = stack.pop()
         if depth > MAX_TOML_DEPTH:
@@ -281,8 +291,13 @@ def parse_set(item: str) -> tuple[str, Any]:
         doc = tomllib.loads(f"v = {raw}")
     except tomllib.TOMLDecodeError:
         return key, raw.strip()  # a bare word: --set friction.model=coulomb
+    except RecursionError:  # 3,000 nested brackets: Python's parser recurses
+        raise InputError("--set", key, f"the value nests lists or tables deeper than {MAX_TOML_DEPTH} levels") from None
+    except ValueError as exc:  # an integer of more digits than Python converts (sys.get_int_max_str_digits)
+        raise InputError("--set", key, f"the value is not a number Python can read ({_digits_problem(exc)})") from None
     if set(doc) != {"v"}:
         raise InputError("--set", key, f"{raw.strip()!r} is not one TOML value")
+    _check_depth(doc["v"], "--set", key)
     return key, doc["v"]
 
 
