@@ -18,6 +18,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -409,7 +410,16 @@ def apply_froude(friction: FrictionConfig, body_length_m: float, period_s: float
     if friction.mu_forward <= 0.0:
         raise InputError(source, "friction.froude", "needs friction.mu_forward > 0: the other coefficients "
                                                     "keep their ratios to it")
-    scale = body_length_m / (period_s * period_s * gravity_m_s2 * fr) / friction.mu_forward
+    denominator = period_s * period_s * gravity_m_s2 * fr
+    scale = body_length_m / denominator / friction.mu_forward if 0.0 < denominator < math.inf else math.inf
+    # an extreme gait period (gait.frequency_hz = 1e300: T^2 underflows to 0) or froude makes mu_f = L / (T^2 g Fr)
+    # infinite, zero or not a number: refused here, before the run, not a ZeroDivisionError
+    if not (math.isfinite(scale) and scale > 0.0 and math.isfinite(scale * max(
+            friction.mu_forward, friction.mu_backward, friction.mu_transverse))):
+        raise InputError(source, "friction.froude", f"Fr = {fr:g} with the gait period {period_s:g} s, body length "
+                                                    f"{body_length_m:g} m and gravity {gravity_m_s2:g} m/s^2 gives "
+                                                    "no finite friction coefficient mu_f = L / (T^2 g Fr); give a "
+                                                    "gait.frequency_hz or friction.froude nearer 1")
 
     def scaled(mu: float) -> float:
         return mu if mu < 0.0 else mu * scale

@@ -36,7 +36,7 @@ from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
-from ..segment_chain import check_chain_segments
+from ..segment_chain import check_chain_segments, check_legged_gait
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
@@ -358,6 +358,7 @@ def check_buildable(case, source: str) -> None:
     if not cre.legs_per_segment:
         return
     check_chain_segments(case, source, "a legged fem chain")
+    check_legged_gait(case, source, "a legged fem chain")
     if not body.block_density_kg_m3 > 0:
         ll = body.link_length_m if body.link_length_m > 0 else 0.5 * cre.segment_length_m
         rho = body.density_kg_m3 if body.density_kg_m3 > 0 else 1.0

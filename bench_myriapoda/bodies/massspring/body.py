@@ -26,7 +26,7 @@ from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
-from ..segment_chain import chain_sizes, check_chain_segments, check_link_fit
+from ..segment_chain import chain_sizes, check_chain_segments, check_legged_gait, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
@@ -249,6 +249,7 @@ def check_buildable(case, source: str) -> None:
     if not cre.legs_per_segment:
         return
     check_chain_segments(case, source, "a legged massspring chain")
+    check_legged_gait(case, source, "a legged massspring chain")
     check_link_fit(case, source)
     lay = chain_sizes(body, cre)
     cells = int(body.link_cells)
