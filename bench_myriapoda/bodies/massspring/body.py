@@ -54,7 +54,8 @@ class MassSpringConfig:
     preset: str = rng("miller-worm", choices=tuple(MILLER_PRESETS), doc="Miller's constants for a creature")
     stiffness: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's k per unit mass [1/frame^2]")
     damping: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's D per unit mass [1/frame]")
-    frame_rate_hz: float = rng(60.0, gt=0.0, doc="frame rate that defines Miller's time unit [Hz]")
+    frame_rate_hz: float = rng(60.0, gt=0.0, le=1.0e6,
+                               doc="frame rate that defines Miller's time unit [Hz] (k_SI grows with its square)")
     substeps_per_frame: int = rng(FROM_PRESET, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
     integrator: str = rng("symplectic", choices=("symplectic", "euler"),
                           doc="semi-implicit Euler, or Miller's explicit Euler x += v dt + a dt^2/2")
