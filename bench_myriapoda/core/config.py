@@ -237,6 +237,12 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
                                                     f"choose one of {', '.join(sorted(registry.BODIES))}")
         check_section(registry.BODIES[body].config_cls, table, src, f"bodies.{body}")
     c = data["creature"]
+    if isinstance(c.get("gaits"), list):  # a [gaits.X] table of a gait the creature does not list is never read
+        for gait in data.get("gaits", {}):
+            if gait not in c["gaits"]:
+                raise InputError(src, f"gaits.{gait}", f"not among the creature's gaits ({', '.join(c['gaits'])}); "
+                                                       "the table would never be used: add the gait to "
+                                                       "creature.gaits or remove the table")
     if "default_gait" in c:
         _check_default_gait(c["default_gait"], c.get("gaits"), src)
     for gait in c.get("gaits", ()):

@@ -54,6 +54,15 @@ def _check_cylinder_list(v) -> str | None:
     return None
 
 
+def _check_increasing(v) -> str | None:
+    """A schedule's times: each later than the one before (equal or earlier times would make one command
+    silently replace another)."""
+    for i in range(1, len(v)):
+        if not v[i] > v[i - 1]:
+            return f"{list(v)!r}: expected strictly increasing times; element {i} ({v[i]!r}) is not after {v[i - 1]!r}"
+    return None
+
+
 def _check_region(v) -> str | None:
     if not (v[0] < v[1] and v[2] < v[3]):
         return "expected [x_min, x_max, z_min, z_max] with x_min < x_max and z_min < z_max"
@@ -316,7 +325,8 @@ class ScenarioConfig:
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
     brain: str = rng("random-walk", choices=("random-walk", "control"),
                      doc="myriapod head after ADJUSTMENT: RANDOM-WALK, or CONTROL by the schedule below (Sec. 4.3)")
-    control_times_s: list = rng((0.0,), doc="CONTROL: times [s] at which the commands below take effect")
+    control_times_s: list = rng((0.0,), check=_check_increasing,
+                                doc="CONTROL: times [s] at which the commands below take effect (increasing)")
     control_speed_m_s: list = rng((0.5,), doc="CONTROL: head speed from each time on [m/s]")
     control_turn_rate_deg_s: list = rng((0.0,), doc="CONTROL: turn rate from each time on [deg/s], + = left")
     # shallow water over the terrain (Sec. 6.2, Kass and Miller 1990): world/water.py, world/water_coupling.py

@@ -188,6 +188,11 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str],
     for key in ("name", "description"):
         if key in out and not isinstance(out[key], str):
             raise InputError(src, f"{prefix}.{key}", f"expected a string, got {out[key]!r}")
+    for kind in ("set", "grid"):  # "dt " and "dt" would both set dt, one silently winning
+        for k in out.get(kind, {}) if isinstance(out.get(kind), dict) else ():
+            if k != k.strip() or not k:
+                raise InputError(src, f"{prefix}.{kind}.{k!r}", "a key with leading or trailing spaces (or "
+                                                               "empty); write it without them")
     if "set" in out:
         if not isinstance(out["set"], dict):
             raise InputError(src, f"{prefix}.set", "expected a table of dotted keys and values")
