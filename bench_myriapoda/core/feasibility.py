@@ -221,8 +221,8 @@ def check_budget(case, source: str, memory_budget: float | None = None, max_step
         if tris > MAX_TERRAIN_TRIANGLES:
             key = "scenario.mesh_subdivisions" if sc.mesh == "skull" else "scenario.mesh"
             raise InputError(source, key, f"case too large: the terrain mesh has {tris:,} triangles; at most "
-                                          f"{MAX_TERRAIN_TRIANGLES:,} (its hash and exact distance samples are "
-                                          "built before the run: a million triangles took minutes); "
+                                          f"{MAX_TERRAIN_TRIANGLES:,} (its spatial hash cells and exact distance "
+                                          "samples are built before the run: a million triangles took minutes); "
                                           + ("lower scenario.mesh_subdivisions" if sc.mesh == "skull" else
                                              "decimate the mesh") + " or pass --force")
     if not est.memory_bytes <= budget:
