@@ -158,6 +158,16 @@ def test_report_and_scorecard_refuse_a_corrupt_matrix_directory_in_one_line(M, t
     bad(capsys, [command, d], *words, where=d)
 
 
+def test_a_corrupt_work_precision_json_next_to_validation_json_is_one_line(M, tmp_path, fresh, capsys):
+    d = tmp_path / "d"
+    shutil.copytree(M, d)
+    row = {"check": "analytic.rigid-rotation", "family": "analytic", "body": "massspring", "quantity": "q",
+           "measured": 1.0, "reference": 1.0, "source": "s", "tolerance": "t", "verdict": "PASS"}
+    (d / "validation.json").write_text(json.dumps({"rows": [row]}))
+    (d / "work_precision.json").write_text(DEEP)
+    bad(capsys, ["report", d], "work_precision.json", "deeper", where=d)
+
+
 def _fifo_series(d: Path) -> None:
     for p in (d / "series").glob("*.npz"):
         p.unlink()
