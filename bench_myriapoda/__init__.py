@@ -26,7 +26,8 @@ def _numba_cache_dir() -> str:
     return os.path.join(base, "bench-myriapoda", "numba", h.hexdigest()[:16])
 
 
-if "NUMBA_CACHE_DIR" not in os.environ:  # a user's own choice wins
+NUMBA_CACHE_DIR_GIVEN = "NUMBA_CACHE_DIR" in os.environ  # the user's own (checked by core.numba_env), not ours
+if not NUMBA_CACHE_DIR_GIVEN:  # a user's own choice wins
     os.environ["NUMBA_CACHE_DIR"] = _numba_cache_dir()
     try:  # numba may already be imported: its config read the environment then
         import sys

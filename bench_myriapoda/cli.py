@@ -571,9 +571,8 @@ def cmd_report(args) -> int:
     if args.workers is not None and not 1 <= args.workers <= MAX_WORKERS:
         raise InputError("--workers", None, f"{args.workers} is out of range; must be 1 to {MAX_WORKERS}")
     _check_path_flags(args, "--history-store", "--baseline")
-    if args.history_store:
-        from .harness.store import check_store
-        check_store(args.history_store, "--history-store", write=False)
+    from .report.inputs import check_history_store
+    check_history_store(args.history_store)  # the same check as scorecard's, the default store included
     history = Path(args.history_store) if args.history_store else DEFAULT_STORE
     try:
         summary = build_report(args.dir, baseline=args.baseline, history_store=history, threshold=args.threshold,
@@ -604,6 +603,8 @@ def cmd_scorecard(args) -> int:
     from .report.scorecard import scorecard_for_dir, scorecard_lines
 
     _check_path_flags(args, "--history-store")
+    from .report.inputs import check_history_store
+    check_history_store(args.history_store)  # the same check as report's, the default store included
     card = scorecard_for_dir(args.dir, Path(args.history_store) if args.history_store else DEFAULT_STORE)
     if args.json:
         print(json.dumps(card.to_json()))
@@ -1060,6 +1061,8 @@ def cmd_validate(args) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
+        from .core.numba_env import check_numba_env
+        check_numba_env()  # before numba is imported: it reads these variables once, at import
         if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
             raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
         parser = build_parser()

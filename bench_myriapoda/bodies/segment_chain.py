@@ -67,6 +67,20 @@ def check_chain_segments(case, source: str, what: str) -> None:
                                                       "(one link)")
 
 
+def check_legged_gait(case, source: str, what: str) -> None:
+    """A legged chain whose only actuation is its legs (``LeggedSegments``: no muscle segments) cannot run a
+    gait that needs muscles (a worm given legs with ``--set creature.legs_per_segment=2`` keeps its rectilinear
+    gait): ``InputError`` naming ``source`` and the key, before anything is built."""
+    from ..core import registry
+
+    missing = registry.GAITS[case.gait.name].requires - LeggedSegments.capabilities
+    if missing:
+        raise InputError(source, "creature.legs_per_segment",
+                         f"{case.creature.legs_per_segment}: {what} has legs and no {', '.join(sorted(missing))}, "
+                         f"which gait {case.gait.name!r} needs; unsupported combination (give 0 legs, or a "
+                         "gait the legs drive such as leg-wave)")
+
+
 def check_link_fit(case, source: str) -> None:
     """Every size of the chain positive and the link's cross-section on the rigid face (``InputError``)."""
     lay = chain_sizes(case.body, case.creature)

@@ -18,6 +18,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -137,13 +138,23 @@ def read_toml(path: Path) -> dict[str, Any]:
         raise InputError(src, None, f"malformed TOML: {exc}") from None
     except RecursionError:
         raise InputError(src, None, f"malformed TOML: nested deeper than {MAX_TOML_DEPTH} levels") from None
+    except ValueError as exc:  # an integer of more digits than Python converts
+        raise InputError(src, None, f"a number Python cannot read ({_digits_problem(exc)})") from None
     _check_depth(data, src)
     return data
 
 
-def _check_depth(data: Any, src: str) -> None:
+def _digits_problem(exc: ValueError) -> str:
+    """What Python's integer digit limit (``sys.get_int_max_str_digits``) refused, in a few words."""
+    import sys
+
+    return f"an integer of more than {sys.get_int_max_str_digits():,} digits" if "digits" in str(exc) \
+        else str(exc)[:80]
+
+
+def _check_depth(data: Any, src: str, key: str = "") -> None:
     """Tables and arrays nested at most MAX_TOML_DEPTH deep (checked without recursion)."""
-    stack = [(data, 0, "")]
+    stack = [(data, 0, key)]
     while stack:
         value, depth, key = stack.pop()
         if depth > MAX_TOML_DEPTH:
@@ -226,6 +237,12 @@ def load_creature_file(name: str) -> tuple[Path, dict[str, Any]]:
                                                     f"choose one of {', '.join(sorted(registry.BODIES))}")
         check_section(registry.BODIES[body].config_cls, table, src, f"bodies.{body}")
     c = data["creature"]
+    if isinstance(c.get("gaits"), list):  # a [gaits.X] table of a gait the creature does not list is never read
+        for gait in data.get("gaits", {}):
+            if gait not in c["gaits"]:
+                raise InputError(src, f"gaits.{gait}", f"not among the creature's gaits ({', '.join(c['gaits'])}); "
+                                                       "the table would never be used: add the gait to "
+                                                       "creature.gaits or remove the table")
     if "default_gait" in c:
         _check_default_gait(c["default_gait"], c.get("gaits"), src)
     for gait in c.get("gaits", ()):
@@ -281,8 +298,13 @@ def parse_set(item: str) -> tuple[str, Any]:
         doc = tomllib.loads(f"v = {raw}")
     except tomllib.TOMLDecodeError:
         return key, raw.strip()  # a bare word: --set friction.model=coulomb
+    except RecursionError:  # 3,000 nested brackets: Python's parser recurses
+        raise InputError("--set", key, f"the value nests lists or tables deeper than {MAX_TOML_DEPTH} levels") from None
+    except ValueError as exc:  # an integer of more digits than Python converts (sys.get_int_max_str_digits)
+        raise InputError("--set", key, f"the value is not a number Python can read ({_digits_problem(exc)})") from None
     if set(doc) != {"v"}:
         raise InputError("--set", key, f"{raw.strip()!r} is not one TOML value")
+    _check_depth(doc["v"], "--set", key)
     return key, doc["v"]
 
 
@@ -394,7 +416,16 @@ def apply_froude(friction: FrictionConfig, body_length_m: float, period_s: float
     if friction.mu_forward <= 0.0:
         raise InputError(source, "friction.froude", "needs friction.mu_forward > 0: the other coefficients "
                                                     "keep their ratios to it")
-    scale = body_length_m / (period_s * period_s * gravity_m_s2 * fr) / friction.mu_forward
+    denominator = period_s * period_s * gravity_m_s2 * fr
+    scale = body_length_m / denominator / friction.mu_forward if 0.0 < denominator < math.inf else math.inf
+    # an extreme gait period (gait.frequency_hz = 1e300: T^2 underflows to 0) or froude makes mu_f = L / (T^2 g Fr)
+    # infinite, zero or not a number: refused here, before the run, not a ZeroDivisionError
+    if not (math.isfinite(scale) and scale > 0.0 and math.isfinite(scale * max(
+            friction.mu_forward, friction.mu_backward, friction.mu_transverse))):
+        raise InputError(source, "friction.froude", f"Fr = {fr:g} with the gait period {period_s:g} s, body length "
+                                                    f"{body_length_m:g} m and gravity {gravity_m_s2:g} m/s^2 gives "
+                                                    "no finite friction coefficient mu_f = L / (T^2 g Fr); give a "
+                                                    "gait.frequency_hz or friction.froude nearer 1")
 
     def scaled(mu: float) -> float:
         return mu if mu < 0.0 else mu * scale

@@ -26,14 +26,20 @@ factorization's fill-in, which grows faster than the mesh.
 """
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from . import registry
 from .errors import InputError
 from .specs import Footprint
 
 MAX_STEPS = 1.0e9
+# Shallow-water cell updates (cells x sub-steps) of one case: a 1 m square of 0.4 mm cells under 100 m of water
+# is 4.9e10 updates for 0.05 s and ran over 60 s (issue 41); 1e10 is a few to ten seconds of one core.
+MAX_GRID_WORK = 1.0e10
 BYTES_PER_TET = 1024.0
 BYTES_PER_NODE = 512.0
 BYTES_PER_LATTICE_NODE = 400.0  # mass-spring: the node, ~10 springs, scratch
@@ -99,6 +105,7 @@ class Estimate:
     memory_bytes: float
     parts: dict[str, float] = field(default_factory=dict)
     mesh: str = ""  # e.g. "1,234,567 tets, 234,567 nodes"
+    work: float = 0.0  # grid work: shallow-water cells x their sub-steps over the run
 
     def describe(self) -> str:
         parts = ", ".join(f"{k} {_gb(v)}" for k, v in self.parts.items() if v >= 1e6)
@@ -130,12 +137,14 @@ def estimate(case, keep_nodes: bool = False) -> Estimate:
     """Memory [bytes] and steps of ``case``; ``keep_nodes``: every node position is kept per sample
     (``run --record``, ``--animate``, ``--export-frames``)."""
     sc = case.scenario
-    steps = float(case.duration) / float(case.dt)
+    steps = float(case.duration) / float(case.dt) if case.dt > 0 else math.inf
     body = footprint(case)
     parts = {"base": BASE_BYTES, "body": body.body_bytes}
+    work = 0.0
     if sc.water_depth_m > 0:
-        x0, x1, z0, z1 = sc.water_region_m
-        parts["water grid"] = (x1 - x0) * (z1 - z0) / sc.water_cell_m ** 2 * BYTES_PER_WATER_CELL
+        cells, water_steps = water_size(case)
+        parts["water grid"] = cells * BYTES_PER_WATER_CELL
+        work = cells * water_steps
     if sc.terrain == "mesh":
         if sc.mesh == "skull":
             tris = 12.0 * sc.mesh_subdivisions ** 2
@@ -148,7 +157,40 @@ def estimate(case, keep_nodes: bool = False) -> Estimate:
     samples = steps * case.dt * case.record.sample_hz + 1.0
     per_sample = 8.0 * (18.0 * case.creature.segments + 64.0) + (24.0 * body.nodes if keep_nodes else 0.0)
     parts["recorded series"] = samples * per_sample
-    return Estimate(steps, sum(parts.values()), parts, body.mesh)
+    return Estimate(steps, sum(parts.values()), parts, body.mesh, work)
+
+
+def water_size(case) -> tuple[float, float]:
+    """(cells, sub-steps over the whole run) of the case's shallow-water grid (``world.water``): cells per
+    axis counted separately (a region and a cell of 5e-324 m are one cell, not 0 / 0), sub-steps of at most
+    water_courant dx / sqrt(g d) [s] each (``world.water_coupling``).  Either is inf when it does not fit a
+    float, which no budget accepts."""
+    sc = case.scenario
+    x0, x1, z0, z1 = sc.water_region_m
+    cell = sc.water_cell_m
+    with np.errstate(all="ignore"):
+        nx = max(round(float(np.float64(x1 - x0) / cell)) if math.isfinite((x1 - x0) / cell) else math.inf, 2)
+        nz = max(round(float(np.float64(z1 - z0) / cell)) if math.isfinite((z1 - z0) / cell) else math.inf, 2)
+        dx = float(np.float64(x1 - x0) / nx) if math.isfinite(nx) else 0.0
+        speed = math.sqrt(max(sc.gravity_m_s2, 0.0) * sc.water_depth_m)
+        max_dt = float(np.float64(sc.water_courant) * dx / speed) if speed > 0 else math.inf
+        water_steps = float(case.duration) / max_dt if max_dt > 0 else math.inf
+    return float(nx) * float(nz), max(water_steps, 1.0)
+
+# Triangles of a terrain mesh: its spatial hash, exact signed-distance samples and per-query scans grow with
+# them; 1,080,000 (skull, mesh_subdivisions = 300) and a 327,680-face file each took over 60 s for a 0.05 s
+# run (issue 41); the default skull (92: 101,568 triangles) builds in seconds.
+MAX_TERRAIN_TRIANGLES = 250_000
+
+
+def terrain_triangles(sc) -> int:
+    """Triangles of a scenario's terrain mesh: 12 n^2 for the skull, the file's face count otherwise (read once
+    per process, as the configuration check read it)."""
+    if sc.mesh == "skull":
+        return 12 * int(sc.mesh_subdivisions) ** 2
+    from .mesh_files import load_closed_mesh
+
+    return len(load_closed_mesh(sc.mesh).faces)
 
 
 PART_KEYS = {"water grid": "scenario.water_cell_m", "terrain mesh": "scenario.mesh_subdivisions",
@@ -167,6 +209,22 @@ def check_budget(case, source: str, memory_budget: float | None = None, max_step
         raise InputError(source, "duration", f"case too large: {est.steps:.3g} steps (duration {case.duration:g} s / "
                                              f"dt {case.dt:g} s) exceed the limit of {cap:.3g} steps (--max-steps); "
                                              "shorten the duration or pass --force")
+    if not est.work <= MAX_GRID_WORK * cap / MAX_STEPS:  # --max-steps scales it as it scales the steps
+        raise InputError(source, "scenario.water_cell_m",
+                         f"case too large: its shallow-water grid needs {est.work:.3g} cell updates (cells x "
+                         f"sub-steps of water_courant dx / sqrt(g d)); at most {MAX_GRID_WORK * cap / MAX_STEPS:.3g} "
+                         "(--max-steps scales it): raise scenario.water_cell_m or water_courant, shrink "
+                         "water_region_m, shorten the duration, or pass --force")
+    sc = case.scenario
+    if sc.terrain == "mesh":
+        tris = terrain_triangles(sc)
+        if tris > MAX_TERRAIN_TRIANGLES:
+            key = "scenario.mesh_subdivisions" if sc.mesh == "skull" else "scenario.mesh"
+            raise InputError(source, key, f"case too large: the terrain mesh has {tris:,} triangles; at most "
+                                          f"{MAX_TERRAIN_TRIANGLES:,} (its spatial hash cells and exact distance "
+                                          "samples are built before the run: a million triangles took minutes); "
+                                          + ("lower scenario.mesh_subdivisions" if sc.mesh == "skull" else
+                                             "decimate the mesh") + " or pass --force")
     if not est.memory_bytes <= budget:
         top = max((k for k in est.parts if k != "base"), key=lambda k: est.parts[k])
         key = PART_KEYS.get(top) or ("body.resolution" if hasattr(case.body, "resolution") else "creature.segments")

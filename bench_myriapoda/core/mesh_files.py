@@ -17,6 +17,9 @@ from pathlib import Path
 import numpy as np
 
 
+MAX_VERTEX_M = 1.0e6  # vertex coordinates of a mesh file [m], as every length of the configuration (schema)
+
+
 class MeshError(ValueError):
     """A mesh that cannot be a closed terrain (not watertight, inconsistently wound, degenerate)."""
 
@@ -32,6 +35,8 @@ def check_closed(vertices: np.ndarray, faces: np.ndarray, name: str = "mesh") ->
         raise MeshError(f"{name}: not a triangle mesh (need (n, 3) vertices and at least 4 triangles)")
     if not np.all(np.isfinite(v)):
         raise MeshError(f"{name}: vertices are not finite")
+    if np.abs(v).max() > MAX_VERTEX_M:  # 1e308 is finite, but its products overflow in every check below
+        raise MeshError(f"{name}: a vertex lies beyond +-{MAX_VERTEX_M:g} m")
     if f.min() < 0 or f.max() >= len(v):
         raise MeshError(f"{name}: a face refers to a missing vertex")
     tri = v[f]
@@ -62,8 +67,12 @@ def check_closed(vertices: np.ndarray, faces: np.ndarray, name: str = "mesh") ->
 def _load_checked(path: str, mtime_ns: int, size: int) -> tuple[np.ndarray, np.ndarray]:
     import trimesh
 
-    try:
-        mesh = trimesh.load(path, force="mesh", process=True)
+    import warnings
+
+    try:  # vertices at 1e308 overflow trimesh's processing: its numpy warnings are not the user's message
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            mesh = trimesh.load(path, force="mesh", process=True)
     except Exception as exc:  # trimesh raises many types for unreadable files
         raise MeshError(f"{path}: trimesh cannot load it ({exc})") from None
     if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:

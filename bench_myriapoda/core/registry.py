@@ -39,20 +39,49 @@ def table_modules() -> list[str]:
     return [CATALOG_MODULE] + [m for m in plugins if m]
 
 
+def _plugin_error(module: str, what: str) -> InputError:
+    return InputError(PLUGINS_ENV, module, what)
+
+
+def _import_plugin(module: str):
+    """Import a plugin module by its dotted name; anything that goes wrong while it is imported (a bad
+    name, a SyntaxError, an exception or endless recursion at import, ``SystemExit``) is an InputError
+    naming the environment variable and the module, never a traceback or a silent exit."""
+    parts = module.split(".")
+    if not all(p.isidentifier() for p in parts):
+        raise _plugin_error(module, "not a module name: give dotted Python names (my_package.bodies), "
+                                    "comma-separated; relative names (.x) cannot be imported by name")
+    try:
+        return importlib.import_module(module)
+    except RecursionError:
+        raise _plugin_error(module, "cannot import the plugin module (endless recursion at import)") from None
+    except (Exception, SystemExit) as exc:  # SystemExit: a plugin must not end the command with exit 0
+        what = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+        raise _plugin_error(module, f"cannot import the plugin module ({what[:200]})") from None
+
+
+def _table(mod, module: str, table: str) -> dict:
+    """``mod.BODIES`` or ``mod.GAITS`` ({} when absent), which must be a dict."""
+    try:
+        rows = getattr(mod, table, {})
+    except (Exception, SystemExit) as exc:  # a module __getattr__ that raises
+        raise _plugin_error(f"{module}.{table}", f"reading it raised {type(exc).__name__}: {str(exc)[:200]}") from None
+    if not isinstance(rows, dict):
+        raise _plugin_error(f"{module}.{table}", f"must be a dict of specs by name, got {type(rows).__name__} "
+                                                 f"{rows!r:.60}")
+    return rows
+
+
 def load_all() -> None:
     """Fill the lookups from the table modules (entries already there, e.g. added at run time, are kept).
 
-    A plugin module that cannot be imported, a row that is not a spec of its own name, or a plugin row whose
-    name another spec holds, is an ``InputError`` naming the environment variable."""
+    A plugin module that cannot be imported (see ``_import_plugin``), a table that is not a dict, a row that
+    is not a spec of its own name, or a plugin row whose name another spec holds, is an ``InputError``
+    naming the environment variable."""
     for module in table_modules():
-        try:
-            mod = importlib.import_module(module)
-        except ImportError as exc:
-            if module == CATALOG_MODULE:
-                raise
-            raise InputError(PLUGINS_ENV, module, f"cannot import the plugin module ({exc})") from None
+        mod = importlib.import_module(module) if module == CATALOG_MODULE else _import_plugin(module)
         for table, lookup, kind in (("BODIES", BODIES, BodySpec), ("GAITS", GAITS, GaitSpec)):
-            for name, spec in getattr(mod, table, {}).items():
+            for name, spec in _table(mod, module, table).items():
                 if not isinstance(spec, kind) or spec.name != name:
                     raise InputError(PLUGINS_ENV, f"{module}.{table}[{name!r}]",
                                      f"must be a {kind.__name__} named {name!r}")

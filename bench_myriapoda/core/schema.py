@@ -12,6 +12,7 @@ Body-model sections are registered by each backend (see
 from __future__ import annotations
 
 import dataclasses
+import re
 import math
 import typing
 from dataclasses import dataclass, field
@@ -50,6 +51,15 @@ def _check_cylinder_list(v) -> str | None:
     for i in range(0, len(v), 4):
         if v[i + 2] <= 0 or v[i + 3] <= 0:
             return f"cylinder {i // 4}: radius and height (elements 3 and 4 of each group of 4) must be > 0"
+    return None
+
+
+def _check_increasing(v) -> str | None:
+    """A schedule's times: each later than the one before (equal or earlier times would make one command
+    silently replace another)."""
+    for i in range(1, len(v)):
+        if not v[i] > v[i - 1]:
+            return f"{list(v)!r}: expected strictly increasing times; element {i} ({v[i]!r}) is not after {v[i - 1]!r}"
     return None
 
 
@@ -155,15 +165,15 @@ class ControllerConfig:
 
     wave_direction: str = rng("retrograde", choices=("retrograde", "direct"),
                               doc="previous leg: anterior (retrograde, centipedes) or posterior (direct, millipedes)")
-    theta_aep_deg: float = rng(28.6479, doc="theta_M of the anterior extreme pose [deg]")
-    theta_pep_deg: float = rng(-28.6479, doc="theta_m of the posterior extreme pose [deg]")
-    alpha_s_deg: float = rng(17.1887, doc="alpha_S of AEP and PEP [deg]")
-    beta_s_deg: float = rng(74.4845, doc="beta_S of AEP and PEP [deg]")
-    alpha_mup_deg: float = rng(34.3775, doc="alpha_M of the middle up pose [deg]")
-    alpha_mdp_deg: float = rng(-22.9183, doc="alpha_m of the middle down pose [deg]")
-    adjust_d_theta_deg: float = rng(-17.1887, doc="theta_T - theta_M of the ADJUST target [deg]")
-    adjust_d_alpha_deg: float = rng(17.1887, doc="alpha_T - alpha_S [deg]")
-    adjust_d_beta_deg: float = rng(-45.8366, doc="beta_T - beta_S [deg]")
+    theta_aep_deg: float = rng(28.6479, ge=-180.0, le=180.0, doc="theta_M of the anterior extreme pose [deg]")
+    theta_pep_deg: float = rng(-28.6479, ge=-180.0, le=180.0, doc="theta_m of the posterior extreme pose [deg]")
+    alpha_s_deg: float = rng(17.1887, ge=-180.0, le=180.0, doc="alpha_S of AEP and PEP [deg]")
+    beta_s_deg: float = rng(74.4845, ge=-180.0, le=180.0, doc="beta_S of AEP and PEP [deg]")
+    alpha_mup_deg: float = rng(34.3775, ge=-180.0, le=180.0, doc="alpha_M of the middle up pose [deg]")
+    alpha_mdp_deg: float = rng(-22.9183, ge=-180.0, le=180.0, doc="alpha_m of the middle down pose [deg]")
+    adjust_d_theta_deg: float = rng(-17.1887, ge=-180.0, le=180.0, doc="theta_T - theta_M of the ADJUST target [deg]")
+    adjust_d_alpha_deg: float = rng(17.1887, ge=-180.0, le=180.0, doc="alpha_T - alpha_S [deg]")
+    adjust_d_beta_deg: float = rng(-45.8366, ge=-180.0, le=180.0, doc="beta_T - beta_S [deg]")
     swing_speed_rad_s: float = rng(4.0, gt=0.0, doc="angular speed of a leg outside STANCE [rad/s]")
     adjust_from_stance: bool = rng(True, doc="rule 4 also pulls a leg out of STANCE into ADJUST ('whenever'); "
                                              "false: only swinging legs adjust")
@@ -174,7 +184,7 @@ class ControllerConfig:
     target_height_m: float = rng(-1.0, doc="segment centre height the Balancer keeps; -1: the standing height of the legs")
     min_stance_legs: int = rng(1, ge=1, le=2, doc="legs in STANCE that make a segment supported")
     head_speed_m_s: float = rng(0.5, ge=0.0, doc="head speed when walking [m/s]")
-    random_turn_max_deg: float = rng(30.0, ge=0.0, doc="RANDOM-WALK: largest random target turn [deg]")
+    random_turn_max_deg: float = rng(30.0, ge=0.0, le=360.0, doc="RANDOM-WALK: largest random target turn [deg]")
     random_turn_rate_deg_s: float = rng(10.0, ge=0.0, doc="RANDOM-WALK: turn rate toward the target [deg/s]")
     adjustment_majority: float = rng(0.5, gt=0.0, le=1.0,
                                      doc="ADJUSTMENT ends when more than this fraction of legs touch the ground")
@@ -186,7 +196,7 @@ class ControllerConfig:
                                     doc="AVOIDANCE: head speed as a fraction of head_speed_m_s")
     avoid_priority: str = rng("left", choices=("left", "right"),
                               doc="AVOIDANCE: the antenna that wins when both touch (left: the head turns right)")
-    max_body_turn_deg: float = rng(90.0, gt=0.0,
+    max_body_turn_deg: float = rng(90.0, gt=0.0, le=360.0,
                                    doc="AVOIDANCE and TROPHOTROPISM: the head's turning summed over about the last "
                                        "body length of its path (weighted by exp(-distance / body length)) stays "
                                        "within +-this; past it the head goes straight on [deg]")
@@ -315,7 +325,8 @@ class ScenarioConfig:
     duration_s: float = rng(10.0, gt=0.0, doc="default duration of the case [s]")
     brain: str = rng("random-walk", choices=("random-walk", "control"),
                      doc="myriapod head after ADJUSTMENT: RANDOM-WALK, or CONTROL by the schedule below (Sec. 4.3)")
-    control_times_s: list = rng((0.0,), doc="CONTROL: times [s] at which the commands below take effect")
+    control_times_s: list = rng((0.0,), check=_check_increasing,
+                                doc="CONTROL: times [s] at which the commands below take effect (increasing)")
     control_speed_m_s: list = rng((0.5,), doc="CONTROL: head speed from each time on [m/s]")
     control_turn_rate_deg_s: list = rng((0.0,), doc="CONTROL: turn rate from each time on [deg/s], + = left")
     # shallow water over the terrain (Sec. 6.2, Kass and Miller 1990): world/water.py, world/water_coupling.py
@@ -405,7 +416,8 @@ class FoodConfig:
 
 @dataclass(frozen=True)
 class RecordConfig:
-    sample_hz: float = rng(60.0, gt=0.0, doc="observation samples per simulated second")
+    sample_hz: float = rng(60.0, gt=0.0, ge=1.0e-6, doc="observation samples per simulated second (at least one "
+                                                      "per 1e6 s)")
 
 
 @dataclass(frozen=True)
@@ -521,6 +533,22 @@ def coerce_value(value: Any, tp: Any, source: str, key: str) -> Any:
     raise TypeError(tp)
 
 
+# A length (a key ending in ``_m``: positions, sizes, radii, regions, bands) is at most this far from 0 [m]:
+# 1,000 km, beyond any scene of this suite.  Lengths of 1e308 m are finite but overflow the first product or
+# square taken of them (a region's area, a random centre's range, a radius squared) after the run started.
+MAX_LENGTH_M = 1.0e6
+
+
+def _length_key(key: str, meta: Mapping[str, Any]) -> bool:
+    """A key in metres: its doc's unit groups include ``[m]`` (``obstacle_cylinder_list``), or, with none, its
+    name ends in ``_m`` and not in a compound unit (``_n_m``: N/m, ``_n_s_m``: N s/m)."""
+    units = [u for u in re.findall(r"\[([^\[\]]+)\]", str(meta.get("doc", ""))) if "," not in u]
+    if units:
+        return "m" in units
+    name = key.rsplit(".", 1)[-1]
+    return name.endswith("_m") and not name.endswith(("_n_m", "_s_m"))
+
+
 def check_range(value: Any, meta: Mapping[str, Any], source: str, key: str) -> None:
     choices = meta.get("choices")
     if choices is not None and value not in choices:
@@ -544,6 +572,12 @@ def check_range(value: Any, meta: Mapping[str, Any], source: str, key: str) -> N
             if not test(v, bound):
                 what = f"{v!r} in {list(value)!r}" if is_list else repr(v)
                 raise InputError(source, key, f"{what} is out of range; must be {word} {bound}")
+    if _length_key(key, meta) and isinstance(value, (int, float, tuple)) and not isinstance(value, bool):
+        for v in (value if isinstance(value, tuple) else (value,)):
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and abs(v) > MAX_LENGTH_M:
+                what = f"{v!r} in {list(value)!r}" if isinstance(value, tuple) else repr(v)
+                raise InputError(source, key, f"{what} is out of range; the numbers of a length key must be "
+                                              f"within +-{MAX_LENGTH_M:g} (m)")
     check = meta.get("check")
     if check is not None:
         msg = check(value)

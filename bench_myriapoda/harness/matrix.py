@@ -163,8 +163,10 @@ def _check_name(src: str, key: str, name: Any) -> str:
     return name
 
 
-def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[str, Any]:
-    """Types and names of one ``[matrix]`` or ``[[block]]`` table."""
+def _check_block(src: str, prefix: str, table: Any, allowed: set[str],
+                 names: dict[str, list[str]] | None = None) -> dict[str, Any]:
+    """Types and names of one ``[matrix]`` or ``[[block]]`` table; ``names``: the known names of each axis
+    (``_axis_names``, read once per file, not once per block)."""
     if not isinstance(table, dict):
         raise InputError(src, prefix, "expected a table")
     for key in table:
@@ -186,6 +188,11 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[s
     for key in ("name", "description"):
         if key in out and not isinstance(out[key], str):
             raise InputError(src, f"{prefix}.{key}", f"expected a string, got {out[key]!r}")
+    for kind in ("set", "grid"):  # "dt " and "dt" would both set dt, one silently winning
+        for k in out.get(kind, {}) if isinstance(out.get(kind), dict) else ():
+            if k != k.strip() or not k:
+                raise InputError(src, f"{prefix}.{kind}.{k!r}", "a key with leading or trailing spaces (or "
+                                                               "empty); write it without them")
     if "set" in out:
         if not isinstance(out["set"], dict):
             raise InputError(src, f"{prefix}.set", "expected a table of dotted keys and values")
@@ -204,15 +211,43 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str]) -> dict[s
             raise InputError(src, f"{prefix}.grid", f"{points:,} grid points; at most {MAX_GRID_POINTS:,}")
     if "name" in out:
         _check_name(src, f"{prefix}.name", out["name"])
-    registry.load_all()
-    names = {"creatures": creature_names(), "bodies": sorted(registry.BODIES),
-             "gaits": sorted(registry.GAITS) + [DEFAULT_GAIT], "scenarios": sorted(scenario_paths())}
+    names = names or _axis_names()
     for key, known in names.items():
         for v in out.get(key, ()):
             if v not in known and not (key in ("creatures", "scenarios") and v.endswith(".toml")):
                 raise InputError(src, f"{prefix}.{key}", f"unknown {AXIS_KEYS[key]} {v!r}{did_you_mean(v, known)}; "
                                                          f"choose one of {', '.join(known)}")
     return out
+
+
+def _axis_names() -> dict[str, list[str]]:
+    """The names each axis may take: creatures, bodies, gaits (and "default"), scenarios."""
+    registry.load_all()
+    return {"creatures": creature_names(), "bodies": sorted(registry.BODIES),
+            "gaits": sorted(registry.GAITS) + [DEFAULT_GAIT], "scenarios": sorted(scenario_paths())}
+
+
+def _precount(src: str, data: dict[str, Any]) -> None:
+    """The case count of the raw tables, before any block is checked in detail: a matrix of 20,001 blocks or
+    seeds is refused at once (checking each block first took seconds per thousand).  A value that is not a
+    list counts as one here; the checks that follow name it."""
+    def size(v: Any) -> int:
+        return len(v) if isinstance(v, list) else 1
+
+    base = data.get("matrix") if isinstance(data.get("matrix"), dict) else {}
+    raw = data.get("block") or [None]
+    if not isinstance(raw, list):
+        return
+    total = 0
+    for b in raw:
+        blk = {**base, **(b if isinstance(b, dict) else {})}
+        grid = blk.get("grid") if isinstance(blk.get("grid"), dict) else {}
+        n = math.prod(size(blk.get(k)) for k in ("creatures", "bodies", "gaits", "scenarios", "seeds"))
+        total += n * math.prod(size(v) for v in grid.values())
+        if total > MAX_MATRIX_CASES:
+            raise InputError(src, "matrix", f"more than {MAX_MATRIX_CASES:,} cases (every block's product of "
+                                            "creatures, bodies, gaits, scenarios, seeds and grid values, before "
+                                            "exclusions and duplicates): split the matrix into several files")
 
 
 def load_matrix(path: Path | str) -> dict[str, Any]:
@@ -224,14 +259,16 @@ def load_matrix(path: Path | str) -> dict[str, Any]:
     path = Path(path)
     src = str(path)
     data = read_tables(path, TOP_TABLES, "matrix")
-    base = _check_block(src, "matrix", data["matrix"], MATRIX_KEYS)
+    _precount(src, data)
+    names = _axis_names()
+    base = _check_block(src, "matrix", data["matrix"], MATRIX_KEYS, names)
     raw_blocks = data.get("block", [])
     if not isinstance(raw_blocks, list):
         raise InputError(src, "block", "expected an array of tables [[block]]")
     blocks = []
     shared = {k: v for k, v in base.items() if k in BLOCK_KEYS}
     for i, b in enumerate(raw_blocks or [None]):
-        blk = dict(shared) if b is None else {**shared, **_check_block(src, f"block[{i}]", b, BLOCK_KEYS)}
+        blk = dict(shared) if b is None else {**shared, **_check_block(src, f"block[{i}]", b, BLOCK_KEYS, names)}
         prefix = "matrix" if b is None else f"block[{i}]"
         for key in REQUIRED_AXES:
             if key not in blk:

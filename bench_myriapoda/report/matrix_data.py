@@ -28,6 +28,7 @@ from ..core.errors import InputError
 from ..harness.matrix import MANIFEST
 from ..harness.recorder import load_recording
 from ..harness.store import StoreReadError, read_matrix_runs
+from .inputs import check_manifest, check_regular_file, check_run_row, read_json_file
 
 AXES = ("creature", "body", "gait", "scenario", "seed")
 
@@ -100,22 +101,8 @@ def load_matrix_dir(directory: Path | str, flag: str = "DIR") -> MatrixResults:
     table = []
     for _, r in rows.iterrows():
         info = cases[r.case_hash]
-        try:
-            case = json.loads(r.case_json)
-            metrics = json.loads(r.metrics_json)
-            timings = json.loads(r.timings_json)
-            json.loads(r.labels_json or "{}")
-            dt, duration = float(case["dt"]), float(case["duration"])
-            if not (isinstance(metrics, dict) and isinstance(timings, dict)):
-                raise TypeError("metrics_json and timings_json must be JSON objects")
-            metrics = {k: (np.nan if v is None else v) for k, v in metrics.items()}
-            if any(isinstance(v, (dict, list)) for v in metrics.values()):
-                raise TypeError("a metric is not a number")
-            timings = {k: (np.nan if timings.get(k) is None else float(timings.get(k)))
-                       for k in ("steps_per_s", "realtime_factor", "compile_s", "wall_s")}
-        except (ValueError, TypeError, KeyError) as exc:
-            raise InputError(str(store), f"runs.id={r.id}", f"unreadable row ({type(exc).__name__}: {exc}); "
-                                                          "not written by bench-myriapoda matrix") from None
+        case, metrics, timings, _ = check_run_row(r, str(store))
+        dt, duration = float(case["dt"]), float(case["duration"])
         _check_recording(d, r.case_hash)
         axes = {k: v for k, v in info["axes"].items() if k in AXES}
         grid = {f"grid.{k}": v for k, v in info["axes"].items() if k not in AXES}
@@ -132,30 +119,15 @@ def load_matrix_dir(directory: Path | str, flag: str = "DIR") -> MatrixResults:
 
 
 def _read_manifest(manifest: Path) -> dict:
-    """``matrix.json`` with the shape :func:`~..harness.matrix.write_matrix_manifest` writes, or InputError."""
-    src = str(manifest)
-    try:
-        meta = json.loads(manifest.read_text(encoding="utf-8"))
-    except (ValueError, OSError) as exc:
-        raise InputError(src, None, f"unreadable matrix manifest: {exc}") from None
-    if not isinstance(meta, dict):
-        raise InputError(src, None, f"expected a JSON object, got {type(meta).__name__}")
-    for key, tp in (("name", str), ("cases", dict)):
-        if not isinstance(meta.get(key), tp):
-            raise InputError(src, key, f"expected {'a string' if tp is str else 'an object'}, got {meta.get(key)!r:.80}")
-    for key, tp in (("description", str), ("grid_keys", list), ("unsupported", list)):
-        if key in meta and not isinstance(meta[key], tp):
-            raise InputError(src, key, f"expected {'a string' if tp is str else 'a list'}, got {meta[key]!r:.80}")
-    for h, info in meta["cases"].items():
-        if not (isinstance(info, dict) and isinstance(info.get("label"), str) and isinstance(info.get("axes"), dict)):
-            raise InputError(src, f"cases.{h}", "expected an object with a string 'label' and an object 'axes'")
-    return meta
+    """``matrix.json`` with the shape :func:`~..harness.matrix.write_matrix_manifest` writes, or InputError
+    (``report.inputs``: depth and size limits, the axes' and grid keys' types)."""
+    return check_manifest(read_json_file(manifest, "matrix manifest"), str(manifest))
 
 
 def _check_recording(d: Path, case_hash: str) -> None:
     """A case's recording, if there is one, loads and has the series the report draws."""
     path = d / "series" / f"{case_hash}.npz"
-    if not path.exists():
+    if not check_regular_file(path):  # a FIFO there is refused unopened: reading it would block forever
         return
     try:
         rec = load_recording(path)

@@ -269,7 +269,9 @@ def _stable_dt_from_store(store: Path | None, creature: str, body: str):
         return None
     if row is None:
         return None
-    v = _num(json.loads(row[0]).get("stable_dt_max_s"))
+    from .inputs import parse_json
+    metrics = parse_json(row[0], str(store), "runs (stable-dt)", "row (metrics_json)")
+    v = _num(metrics.get("stable_dt_max_s")) if isinstance(metrics, dict) else None
     return None if v is None else (v, row[1])
 
 

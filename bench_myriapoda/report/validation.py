@@ -30,6 +30,8 @@ from ..validation.core import FAIL, INFO, NA, PASS, Outcome
 
 COLORS = {PASS: "#17692a", FAIL: "#b00000", NA: "#8a6d00", INFO: "#1f4e99", "NOT VALIDATED": "#666"}
 ROW_CLASS = {PASS: "improvement", FAIL: "regression", NA: "missing", INFO: ""}
+VALIDATION_COLUMNS = ("check", "family", "body", "quantity", "measured", "reference", "source", "tolerance",
+                      "verdict", "detail", "unit", "seconds")  # what the section reads: None where a row lacks it
 
 
 @dataclass
@@ -49,11 +51,12 @@ class ValidationData:
 
 
 def _from_json(path: Path) -> ValidationData | None:
-    try:
-        doc = json.loads(path.read_text())
-    except (OSError, ValueError):
+    from .inputs import read_validation_json
+
+    doc = read_validation_json(path)  # an InputError naming the file when it is there and not validate's
+    if doc is None:
         return None
-    rows = pd.DataFrame(doc.get("rows", []))
+    rows = pd.DataFrame([{**dict.fromkeys(VALIDATION_COLUMNS), **r} for r in doc.get("rows", [])])
     if rows.empty:
         return None
     out = path.parent
@@ -152,8 +155,19 @@ def _work_precision(page, data: ValidationData) -> None:
     if doc_path is None or not doc_path.is_file():
         page.p("No work-precision diagrams: run `bench-myriapoda validate --work-precision`.", "note")
         return
+    from ..core.errors import InputError
+    from .inputs import read_json_file
+
+    doc = read_json_file(doc_path, "work_precision.json")  # depth and size limits, a regular file
+    if not (isinstance(doc, dict) and isinstance(doc.get("quantities", {}), dict) and all(
+            isinstance(q, dict) and isinstance(q.get("title"), str) and isinstance(q.get("curves"), list)
+            and all(isinstance(c, dict) and isinstance(c.get("body"), str) and "reference_kind" in c
+                    and all(isinstance(c.get(k), (int, float, type(None))) for k in ("ref_change", "resolution_change"))
+                    for c in q["curves"])
+            for q in doc.get("quantities", {}).values())):
+        raise InputError(str(doc_path), "quantities", "expected the object validate --work-precision writes "
+                                                      "(per quantity a title and curves with a body and reference_kind each)")
     page.h3("Work-precision diagrams")
-    doc = json.loads(doc_path.read_text())
     for name, q in doc.get("quantities", {}).items():
         png = src / f"work_precision_{name}.png"
         if not png.is_file():

@@ -52,6 +52,14 @@ def select(check_names: Sequence[str] | None, bodies: Sequence[str] | None,
                 pairs.append((c, CROSS))
             continue
         pairs.extend((c, b) for b in on if b in bodies)
+    for n in check_names or ():  # a check named with --check that no selected body has: refused, not 0 rows
+        c = BY_NAME.get(n)
+        if c is not None and c.bodies != (CROSS,) and not any(b in bodies for b in c.bodies):
+            raise InputError("--check", n, f"does not apply to body model {', '.join(bodies)}; it applies to "
+                                           f"{', '.join(c.bodies)} (choose one with --body)")
+    if not pairs:
+        raise InputError("--check", " ".join(check_names or ()) or None,
+                         f"no check of this selection applies to body model {', '.join(bodies)}")
     return pairs, bodies
 
 

@@ -36,7 +36,7 @@ from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
-from ..segment_chain import check_chain_segments
+from ..segment_chain import check_chain_segments, check_legged_gait
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import body_kernels as BK
 from . import kernels as FK
@@ -45,6 +45,13 @@ from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volume
 from .system import DT_PAPER, FEMSystem
 
 FROM_CREATURE = -1.0
+MIN_DENSITY_KG_M3 = 1.0e-6  # a given density below it makes node masses denormal and their inverses infinite
+
+
+def _check_density(v) -> str | None:
+    if 0.0 < v < MIN_DENSITY_KG_M3:
+        return f"{v!r} is out of range; must be >= {MIN_DENSITY_KG_M3:g} kg/m^3 (or <= 0: from the creature's mass)"
+    return None
 
 
 @dataclass(frozen=True)
@@ -55,7 +62,8 @@ class FEMConfig:
     youngs_modulus_pa: float = rng(4000.0, gt=0.0, doc="Young's modulus E [Pa] (paper preset 4000)")
     poisson_ratio: float = rng(0.4, ge=0.0, lt=0.5, doc="Poisson's ratio nu (paper preset 0.4)")
     damping_gamma: float = rng(50.0, ge=0.0, doc="damping coefficient gamma of eq. 13 [N s/m^4] (paper preset 50)")
-    density_kg_m3: float = rng(FROM_CREATURE, doc="density [kg/m^3]; default: creature mass / body volume")
+    density_kg_m3: float = rng(FROM_CREATURE, check=_check_density,
+                               doc="density [kg/m^3]; default: creature mass / body volume")
     resolution: int = rng(3, ge=1, le=50, doc="mesh resolution per segment edge (nodes or cells, see resolution_unit)")
     resolution_unit: str = rng("nodes", choices=("nodes", "cells"),
                                doc="the paper's '3 x 3 x 3 resolution' read as nodes (default) or cells")
@@ -358,6 +366,7 @@ def check_buildable(case, source: str) -> None:
     if not cre.legs_per_segment:
         return
     check_chain_segments(case, source, "a legged fem chain")
+    check_legged_gait(case, source, "a legged fem chain")
     if not body.block_density_kg_m3 > 0:
         ll = body.link_length_m if body.link_length_m > 0 else 0.5 * cre.segment_length_m
         rho = body.density_kg_m3 if body.density_kg_m3 > 0 else 1.0

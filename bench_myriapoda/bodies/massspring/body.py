@@ -26,7 +26,7 @@ from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
 from .. import step_status as S
-from ..segment_chain import chain_sizes, check_chain_segments, check_link_fit
+from ..segment_chain import chain_sizes, check_chain_segments, check_legged_gait, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
@@ -54,7 +54,8 @@ class MassSpringConfig:
     preset: str = rng("miller-worm", choices=tuple(MILLER_PRESETS), doc="Miller's constants for a creature")
     stiffness: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's k per unit mass [1/frame^2]")
     damping: float = rng(float(FROM_PRESET), ge=0.0, doc="Miller's D per unit mass [1/frame]")
-    frame_rate_hz: float = rng(60.0, gt=0.0, doc="frame rate that defines Miller's time unit [Hz]")
+    frame_rate_hz: float = rng(60.0, gt=0.0, le=1.0e6,
+                               doc="frame rate that defines Miller's time unit [Hz] (k_SI grows with its square)")
     substeps_per_frame: int = rng(FROM_PRESET, ge=1, le=100000, doc="integration substeps per frame; dt = 1/(fps*substeps)")
     integrator: str = rng("symplectic", choices=("symplectic", "euler"),
                           doc="semi-implicit Euler, or Miller's explicit Euler x += v dt + a dt^2/2")
@@ -249,6 +250,7 @@ def check_buildable(case, source: str) -> None:
     if not cre.legs_per_segment:
         return
     check_chain_segments(case, source, "a legged massspring chain")
+    check_legged_gait(case, source, "a legged massspring chain")
     check_link_fit(case, source)
     lay = chain_sizes(body, cre)
     cells = int(body.link_cells)
