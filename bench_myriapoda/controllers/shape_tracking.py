@@ -200,6 +200,99 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
             counts[2] = max(counts[2], abs(u))
 
 
+def scaled_gains(gains: tuple, scale: float) -> tuple:
+    """``gains`` (``TrackGains``' order) with the loop's gains, the proportional, the fundamental's integral and the
+    harmonics' integral ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the
+    integral state is zero)."""
+    g = TrackGains(*gains)
+    return tuple(g._replace(kp=g.kp * scale, ki=g.ki * scale, ki_h=g.ki_h * scale))
+
+
+# The guard's thresholds (``LoopGuard``): the loop has lost its margin when the body's bend, smoothed like the error,
+# exceeds the command by GUARD_AMPLITUDE_RATIO in RMS over the last quarter cycle (under the 25 % a run may overshoot
+# by, issue 44), or when more than GUARD_SATURATION of the muscles have been held at their strength over the last
+# half cycle ("most muscles saturated").  Each back-off halves the loop's gains (GUARD_BACKOFF) after a period of
+# the open loop; after GUARD_MAX_BACKOFFS the open loop stays.
+GUARD_AMPLITUDE_RATIO = 1.2
+GUARD_SATURATION = 0.5
+GUARD_BACKOFF = 0.5
+GUARD_MAX_BACKOFFS = 2
+
+
+class LoopGuard:
+    """Watches the closed loop for a runaway and backs it off to the calibrated open loop (``gait.shape_guard``).
+
+    The tracker's integral and proportional terms assume a plant whose response grows in proportion to the command
+    and lags it by less than 90 degrees.  Coulomb friction breaks both: a bend costs a friction moment that does not
+    grow with the bend, so the body hardly moves until the muscles' moment passes it and then bends far (the lattice
+    snake at 0.5 Hz, one wave per body, mu_t = 0.5: 1.5 of a commanded 10 open loop, 40 closed loop with half its
+    muscles at their strength; issue 44).  Once the bend passes the command by ``GUARD_AMPLITUDE_RATIO`` while the
+    loop commands more than the feed-forward (the loop's doing: a body that overshoots in open loop is pulled back
+    by the loop, and left alone here), or most muscles are held at their strength, the integral state is dropped and the command is the feed-forward alone for
+    one gait period; then the loop resumes at ``GUARD_BACKOFF`` times its gains, and after ``GUARD_MAX_BACKOFFS``
+    back-offs the open loop stays.  The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
+    ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
+    in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
+
+    def __init__(self, period_s: float, t_steady: float, dt_tick: float):
+        self.period_s, self.t_steady, self.dt_tick = float(period_s), float(t_steady), float(dt_tick)
+        self.reset()
+
+    def reset(self) -> None:
+        self.scale = 1.0           # the loop's gain scale once resumed
+        self.hold_until = -1.0     # open loop until this time [s]
+        self.backoffs = 0
+        self.times: list[float] = []
+        self.p_meas = 0.0          # mean square of the measured bend [strain^2], low-passed
+        self.p_cmd = 0.0           # mean square of the commanded bend, the feed-forward [strain^2], low-passed
+        self.p_out = 0.0           # mean square of the loop's command [strain^2], low-passed
+        self.sat = 0.0             # share of clipped commands, low-passed
+
+    @property
+    def fallen_back(self) -> bool:
+        """The open loop for good: the loop lost its margin ``GUARD_MAX_BACKOFFS`` + 1 times."""
+        return self.backoffs > GUARD_MAX_BACKOFFS
+
+    def gain_scale(self, t: float) -> float:
+        """The loop's gain scale at t [s]: 0 while backed off, else the scale it resumed at."""
+        return 0.0 if self.fallen_back or t < self.hold_until else self.scale
+
+    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float) -> bool:
+        """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
+        command; ramp_s [s]: the start ramp); True when the loop lost its margin at this tick (the caller drops the
+        integral state)."""
+        amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
+            waves[_LATERAL, _PHASE]
+        err, lateral = state[4], state[2]
+        r = 1.0 if ramp_s <= 0.0 or t >= ramp_s else max(t, 0.0) / ramp_s
+        ref = (r * amp) * np.sin(k * s_muscle - om * t + ph)
+        meas = ref - err  # the measured bend, smoothed along the body like the error [strain]
+        a_fast = self.dt_tick / (0.25 * self.period_s)
+        a_slow = self.dt_tick / (0.5 * self.period_s)
+        self.p_meas += a_fast * (float(np.mean(meas * meas)) - self.p_meas)
+        self.p_cmd += a_fast * (float(np.mean(ref * ref)) - self.p_cmd)
+        self.p_out += a_fast * (float(np.mean(lateral * lateral)) - self.p_out)
+        self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
+        if self.fallen_back or t < self.hold_until or r < 1.0:
+            return False
+        # the controller's doing: the body bends beyond the command while the loop commands more than the open
+        # loop would (a body that overshoots in open loop, which the loop is pulling back, is the body's own)
+        overshoot = self.p_meas > GUARD_AMPLITUDE_RATIO ** 2 * self.p_cmd and self.p_out > self.p_cmd
+        runaway = overshoot or self.sat > GUARD_SATURATION
+        if not runaway:
+            return False
+        self.backoffs += 1
+        self.times.append(float(t))
+        self.scale *= GUARD_BACKOFF
+        self.hold_until = t + self.period_s
+        self.sat = 0.0
+        return True
+
+    def acted_in_window(self) -> bool:
+        """The guard backed off in the steady window (after ``metrics.warmup_cycles``) or ended in the open loop."""
+        return self.fallen_back or any(tt >= self.t_steady for tt in self.times)
+
+
 class ShapeTracker:
     """The closed loop of a commanded bending wave (module docstring) for one run."""
 
@@ -219,6 +312,8 @@ class ShapeTracker:
         self.frequency_hz = float(g.frequency_hz)
         self.lead_rad = math.radians(float(g.shape_harmonic_lead_deg))
         self._set_harmonics(max(self.kh_key, 0.0))
+        self.period_s = float(g.period_s)
+        self.guard = LoopGuard(self.period_s, self.t_steady, self.dt_tick) if g.shape_guard else None
         self.ready = False
 
     def _set_harmonics(self, gain_per_cycle: float) -> None:
@@ -246,6 +341,9 @@ class ShapeTracker:
         self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n),
                                       np.zeros((n_h, n)), np.zeros((n_h, n))))
         self.s_centre = None
+        self.full_gains, self.scale = self.gains, 1.0
+        if self.guard is not None:
+            self.guard.reset()
         self.ready = True
 
     def command(self, obs, t: float, waves, ramp_s: float, s_seg, row) -> None:
@@ -255,10 +353,20 @@ class ShapeTracker:
             n = obs.seg_rot.shape[0]
             self.s_centre = float(obs.seg_half[0, 0]) + self.pitch * np.arange(n, dtype=np.float64)
             self.psi = np.zeros(n)
-        if ramp_s != self.gains[0]:  # the caller's ramp wins (the controller's, the gait's by default)
+        if ramp_s != self.full_gains[0]:  # the caller's ramp wins (the controller's, the gait's by default)
+            self.full_gains = (float(ramp_s),) + self.full_gains[1:]
             self.gains = (float(ramp_s),) + self.gains[1:]
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
+        if self.guard is not None:
+            scale = self.guard.gain_scale(t)
+            if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
+                self.gains, self.scale = scaled_gains(self.full_gains, scale), scale
         track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, self.gains, self.state)
+        if self.guard is not None and self.guard.watch(t, self.gains[0], waves, self.s_muscle, self.state, self.umax):
+            # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
+            # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
+            for arr in (self.state[0], self.state[1], self.state[6], self.state[7]):
+                arr[...] = 0.0
         row[:, _LATERAL] = self.lateral
 
     @property
@@ -275,6 +383,26 @@ class ShapeTracker:
         """muscle_saturation_fraction [-]: share of the steady window's (segment, tick) LATERAL commands
         clipped at max_muscle_strain; muscle_strain_peak [-]: the largest |LATERAL strain| commanded there."""
         n, clipped, peak = self.counts
-        if n == 0:
-            return {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")}
-        return {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
+        out = {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")} if n == 0 else \
+            {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
+        if self.guard is not None:
+            gd = self.guard
+            out.update({"shape_control_backoffs": float(gd.backoffs),
+                        "shape_control_gain_scale": 0.0 if gd.fallen_back else float(gd.scale),
+                        "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
+        return out
+
+    def run_status(self) -> tuple[str, str] | None:
+        """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good:
+        the motion measured there is the open loop's (or a lower gain's), because the loop drove the shape away;
+        None otherwise."""
+        gd = self.guard
+        if gd is None or not gd.acted_in_window():
+            return None
+        when = ", ".join(f"{t:.2f}" for t in gd.times)
+        end = "stayed in the calibrated open loop" if gd.fallen_back else \
+            f"resumed at {gd.scale:g} of its gains"
+        return ("controller_unstable",
+                f"controller_unstable: the shape tracker drove the body beyond the commanded shape (bend over "
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command or most muscles at max_muscle_strain) and backed off to the "
+                f"calibrated open loop at t = {when} s; it {end}")

@@ -344,6 +344,9 @@ def locomotion_group(row) -> Group:
     """The headline case's speed against its reference; commanded and too-short speeds say so."""
     if row is None:
         return Group(None, "no case", "the pair ran only in sweeps")
+    if row["status"] == "controller_unstable":
+        return Group(None, "controller_unstable", f"the shape tracker drove the body beyond the commanded shape and "
+                     f"backed off (no speed of the commanded shape): {row.get('message') or ''}"[:400])
     if row["status"] != "ok":
         return Group(None, f"{row['status']}", f"the headline case ended {row['status']} at t = "
                      f"{_num(row.get('metric.t_fail_s')) or float('nan'):.3g} s: no speed")
