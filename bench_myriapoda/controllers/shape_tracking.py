@@ -200,6 +200,48 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
             counts[2] = max(counts[2], abs(u))
 
 
+def _wrap_deg(x):
+    return (np.asarray(x, float) + 180.0) % 360.0 - 180.0
+
+
+class PlantMargin:
+    """The loop's stability margin at the wave frequency, from the body's measured open-loop response.
+
+    ``bodies.curvature_calibration.plant_response`` identifies, at each interior segment, the open loop's curvature
+    against the command: gain |G| and lag phi.  The fundamental's amplitude-and-phase integral (step 3), its update
+    rotated by a lead delta (0 here), converges at a segment where |phi - delta| < 90 degrees for a linear plant (the
+    model plant of tests/test_shape_tracking.py), so its phase margin is 90 - max over the segments of |phi - delta|
+    [deg].
+
+    Measured, and not acted on: under Coulomb friction the open loop's response is not the closed loop's plant.  On
+    the slithering grid (lattice) the open loop reached 0.97, 0.88, 0.76, 0.58, 0.20 and 0.03 of the command at
+    mu_t / mu_f = 1, 1.5, 2, 3, 5 and 10, with margins 25, 21, 11, -10, -88 and -90 degrees, and the closed loop
+    tracks every one of those cells (shape error 0.07 or less at 35.7 s); the first runaway case of issue 44 reads
+    like the cell at 5 (gain 0.15, margin -90), the default snake 0.99 and 53.  Scheduling the gains by the margin
+    (the open loop where there is none) dropped the grid's cells at 5 and 10, and turning the fundamental's update by
+    the median lag (a lead, as step 3b's) took the cells at 2 and 3 to shape errors of 0.12 and 0.19.  The guard
+    (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away."""
+
+    def __init__(self, gain, lag_deg):
+        self.gain = np.asarray(gain, float)
+        self.lag_deg = _wrap_deg(lag_deg)
+        self.lead_deg = 0.0
+        self.margin_deg = 90.0 - float(np.max(np.abs(_wrap_deg(self.lag_deg - self.lead_deg))))
+
+    @classmethod
+    def of(cls, response) -> "PlantMargin | None":
+        """From ``body_info["plant_response"]``; None when the plant was not identified (its status says why)."""
+        if not response or response.get("status") != "ok" or not response.get("gain"):
+            return None
+        return cls(response["gain"], response["lag_deg"])
+
+    def metrics(self) -> dict[str, float]:
+        """shape_plant_gain, shape_plant_lag_deg (medians over the segments), shape_loop_margin_deg,
+        the loop's phase margin on it."""
+        return {"shape_plant_gain": float(np.median(self.gain)), "shape_plant_lag_deg": float(np.median(self.lag_deg)),
+                "shape_loop_margin_deg": self.margin_deg}
+
+
 def scaled_gains(gains: tuple, scale: float) -> tuple:
     """``gains`` (``TrackGains``' order) with the loop's gains, the proportional, the fundamental's integral and the
     harmonics' integral ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the
@@ -313,6 +355,7 @@ class ShapeTracker:
         self.lead_rad = math.radians(float(g.shape_harmonic_lead_deg))
         self._set_harmonics(max(self.kh_key, 0.0))
         self.period_s = float(g.period_s)
+        self.plant = None
         self.guard = LoopGuard(self.period_s, self.t_steady, self.dt_tick) if g.shape_guard else None
         self.ready = False
 
@@ -334,6 +377,9 @@ class ShapeTracker:
                             else float(body_info.get("shape_harmonic_gain_per_cycle", 0.0)))
         n = self.s_muscle.shape[0]
         self.kappa = np.zeros(n)
+        # the open loop's measured response and the loop's margin on it: measured and reported, not acted on
+        # (``PlantMargin`` says why)
+        self.plant = PlantMargin.of(body_info.get("plant_response"))
         # plain tuples (``TrackGains``, ``TrackState``: why there)
         self.gains = tuple(TrackGains(self.ramp_s, self.dt_tick, self.strain_per_kappa, self.kp, self.ki, self.umax,
                                       SMOOTHING_PASSES, self.harmonics, self.ki_h, self.lead_cos, self.lead_sin))
@@ -385,6 +431,8 @@ class ShapeTracker:
         n, clipped, peak = self.counts
         out = {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")} if n == 0 else \
             {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
+        if self.plant is not None:
+            out.update(self.plant.metrics())
         if self.guard is not None:
             gd = self.guard
             out.update({"shape_control_backoffs": float(gd.backoffs),

@@ -7,7 +7,7 @@ along the same curve, tangentially.  Two figures measure the departures, on the 
 the ground (x, z; y up) over the steady window (``locomotion.measurement_window``):
 
 * ``tail_swing_ratio`` [-]: the RMS lateral excursion of the tail (the last recorded centre) over that of the
-  mid-body centre.  The lateral coordinate of a point is its position across the mean body axis of the window
+  mid-body (the median over the middle third of the centres).  The lateral coordinate of a point is its position across the mean body axis of the window
   (``body_shape.axis_angle``, averaged), less a straight line fitted over the window (the travel and a slow
   drift).  On a kinematic snake every point traces the same curve, so over whole cycles the ratio is 1; a tail
   that swishes wider than the body reads above 1, a tail dragged straight below 1.
@@ -37,7 +37,8 @@ def _lateral_rms(points: np.ndarray, t: np.ndarray, across: np.ndarray) -> np.nd
 
 
 def tail_swing_ratio(series: Series, i0: int, i1: int) -> float:
-    """RMS lateral excursion of the tail over the mid-body's over samples [i0, i1] (module docstring) [-]."""
+    """RMS lateral excursion of the tail over the mid-body's (the median over the middle third of the centres) over
+    samples [i0, i1] (module docstring) [-]."""
     c = series.segment_centers
     if c is None or c.shape[1] < 5 or i1 - i0 < 2:
         return float("nan")
@@ -45,8 +46,10 @@ def tail_swing_ratio(series: Series, i0: int, i1: int) -> float:
     ang = float(np.mean(axis_angle(win)))
     # the axis angle is right-handed about +y from +x: axis (cos, -sin) in (x, z); across it: (sin, cos)
     across = np.array([np.sin(ang), np.cos(ang)])
-    rms = _lateral_rms(win[..., [0, 2]][:, [c.shape[1] // 2, -1]], series.t[i0:i1 + 1], across)
-    return float(rms[1] / rms[0]) if rms[0] > 0 else float("nan")
+    n = c.shape[1]
+    rms = _lateral_rms(win[..., [0, 2]], series.t[i0:i1 + 1], across)
+    mid = float(np.median(rms[n // 3:n - n // 3]))  # the middle third: one centre may sit at a node of the wave
+    return float(rms[-1] / mid) if mid > 0 else float("nan")
 
 
 def sideways_slip_ratio(series: Series, i0: int, i1: int, pitch_m: float | None = None) -> float:
