@@ -47,6 +47,16 @@ def commands_a_shape(case) -> bool:
     return g.commands_curvature() and g.curvature_amplitude > 0.0 and not case.scenario.passive
 
 
+def shape_control_mode(gait) -> str:
+    """Which shape control a gait ran (``gait`` a GaitConfig or its dict): ``closed_loop`` (the commanded shape
+    tracked: the mode for comparisons with the kinematic reference), ``open_loop`` (the calibrated gain alone:
+    Miller's dynamic snake, its own departures from the command kept), or ``none`` (no commanded curvature)."""
+    get = gait.get if isinstance(gait, dict) else (lambda k, d=None: getattr(gait, k, d))
+    if not (get("curvature_amplitude", 0.0) or 0.0) > 0.0 or get("name") not in ("lateral-undulation", "sidewinding"):
+        return "none"
+    return str(get("shape_control", "open_loop"))
+
+
 def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:
     """(T, n) commanded ground curvature [1/m] at rest arc lengths s (n,) [m] and times t (T,) [s]."""
     g = case.gait

@@ -34,6 +34,7 @@ import pandas as pd
 
 from ..harness.store import StoreReadError, read_latest_stable_dt
 from ..metrics.shape_tracking import SHAPE_ERROR_THRESHOLD as SHAPE_THRESHOLD
+from ..metrics.shape_tracking import shape_control_mode
 from ..metrics.walk import EMERGENT_WALK_METRICS, commanded_metric
 from .sweeps import sweep_mask
 
@@ -397,7 +398,9 @@ def shape_group(row) -> Group:
     if v is None:
         return Group(None, "not measured", "no shape_tracking_error in these results")
     flagged = bool(_num(row.get(SHAPE_FLAG)))
-    return Group(v, f"{v:.3g}" + (" (shape not achieved)" if flagged else ""), None, {"shape_not_achieved": flagged})
+    mode = shape_control_mode(_case(row).get("gait", {}))  # which shape control the row ran (issue 44)
+    return Group(v, f"{v:.3g}" + (" (shape not achieved)" if flagged else "") + f" [shape_control {mode}]", None,
+                 {"shape_not_achieved": flagged, "shape_control": mode})
 
 
 # --------------------------------------------------------------------------- cost
