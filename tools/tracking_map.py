@@ -73,7 +73,8 @@ def draw(directory: Path, out: Path) -> Path:
     res = load_matrix_dir(directory)
     rows = cells(res.df)
     bodies = [b for b in ("massspring", "fem", "hybrid") if any(r["body"] == b for r in rows)]
-    fig, axes = plt.subplots(2, len(bodies), figsize=(4.2 * len(bodies), 7.0), squeeze=False)
+    fig, axes = plt.subplots(2, len(bodies), figsize=(max(6.5, 4.5 * len(bodies)), 8.0), squeeze=False,
+                             constrained_layout=True)
     im = None
     for k, body in enumerate(bodies):
         mine = [r for r in rows if r["body"] == body]
@@ -88,8 +89,8 @@ def draw(directory: Path, out: Path) -> Path:
                        f"{body}: shape error, mu_t / mu_f = 5, 0.5 BL")
     if im is not None:
         fig.colorbar(im, ax=axes.ravel().tolist(), shrink=0.6, label="shape_tracking_error (clipped at 1)")
-    fig.suptitle("Where the shape tracker holds: R = guard backed off (controller_unstable), X = blew up, "
-                 "(n) = shape_not_achieved", fontsize=9)
+    fig.suptitle("Where the shape tracker holds\nR: guard backed off (controller_unstable); X: blew up; "
+                 "(n): shape_not_achieved", fontsize=9)
     out.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(out, dpi=110)
     plt.close(fig)

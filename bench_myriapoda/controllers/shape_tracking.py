@@ -253,7 +253,7 @@ def scaled_gains(gains: tuple, scale: float) -> tuple:
 # The guard's thresholds (``LoopGuard``): the loop has lost its margin when the body's bend, smoothed like the error,
 # exceeds the command by GUARD_AMPLITUDE_RATIO in RMS over the last quarter cycle (under the 25 % a run may overshoot
 # by, issue 44), or when more than GUARD_SATURATION of the muscles have been held at their strength over the last
-# half cycle ("most muscles saturated").  Each back-off halves the loop's gains (GUARD_BACKOFF) after a period of
+# half cycle ("most muscles saturated") while the body bends at least as commanded.  Each back-off halves the loop's gains (GUARD_BACKOFF) after a period of
 # the open loop; after GUARD_MAX_BACKOFFS the open loop stays.
 GUARD_AMPLITUDE_RATIO = 1.2
 GUARD_SATURATION = 0.5
@@ -320,7 +320,9 @@ class LoopGuard:
         # the controller's doing: the body bends beyond the command while the loop commands more than the open
         # loop would (a body that overshoots in open loop, which the loop is pulling back, is the body's own)
         overshoot = self.p_meas > GUARD_AMPLITUDE_RATIO ** 2 * self.p_cmd and self.p_out > self.p_cmd
-        runaway = overshoot or self.sat > GUARD_SATURATION
+        # most muscles at their strength while the body bends at least as commanded: the loop's doing (a muscle too
+        # weak for the load saturates with the body short of the command; that is flagged, not backed off)
+        runaway = overshoot or (self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd)
         if not runaway:
             return False
         self.backoffs += 1

@@ -139,8 +139,10 @@ def shape_harmonic_content(series: Series, case, i0: int, i1: int) -> float:
 
 def shape_flag_reason(metrics: dict[str, float], case) -> str:
     """The run message of a ``shape_not_achieved`` run: the error, the achieved shape, the muscles' saturation."""
-    parts = [f"shape_not_achieved: shape_tracking_error {metrics['shape_tracking_error']:.3f} > "
-             f"{SHAPE_ERROR_THRESHOLD:g}",
+    err = metrics["shape_tracking_error"]
+    parts = [f"shape_not_achieved: shape_tracking_error {err:.3f} > {SHAPE_ERROR_THRESHOLD:g}" if math.isfinite(err)
+             else "shape_not_achieved: shape_tracking_error not measured (too few centre-line points one segment pitch "
+                  "apart, or too few samples in the steady window)",
              f"curvature_amplitude {metrics.get('curvature_amplitude', float('nan')):.3g} of "
              f"{case.gait.curvature_amplitude:g} commanded"]
     sat = metrics.get("muscle_saturation_fraction")
