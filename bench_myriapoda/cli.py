@@ -108,7 +108,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--store", metavar="PATH", default=None, help="results database (default reports/results.sqlite)")
     run.add_argument("--no-store", action="store_true", help="do not record the run in the results database")
     run.add_argument("--strict", action="store_true",
-                     help="exit 1 when the run is unstable or a legless body flipped or left the ground (posture_fault)")
+                     help="exit 1 when the run is unstable or controller_unstable or a legless body flipped or left "
+                          "the ground (posture_fault)")
     run.add_argument("--plot-gait", metavar="FILE.png", help="draw the gait diagram (legs x time, paper Fig. 10)")
     run.add_argument("--animate", metavar="FILE", help="animation of the body from above and from the side "
                                                        "(.gif, or .mp4 with ffmpeg)")
@@ -401,7 +402,7 @@ def cmd_run(args) -> int:
         return EXIT_FAIL
     if not written:
         return EXIT_FAIL
-    if args.strict and (result.status == "unstable" or result.metrics.get("posture_fault") == 1.0):
+    if args.strict and (result.status in ("unstable", "controller_unstable") or result.metrics.get("posture_fault") == 1.0):
         if result.metrics.get("posture_fault") == 1.0:
             print("bench-myriapoda: posture fault: the body flipped over or left the ground "
                   "(metrics roll_max_deg, airborne_max_s)", file=sys.stderr)

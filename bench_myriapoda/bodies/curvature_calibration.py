@@ -153,3 +153,110 @@ def lateral_gain(make_body: Callable[[Any], Any], case, cache: bool = True) -> f
         tmp.write_text(json.dumps({**res, "body": case.body.name}))
         os.replace(tmp, path)  # atomic: a concurrent reader never sees half a file
     return float(res["strain_per_curvature"])
+
+
+# ----------------------------------------------------------------------------- the plant of the shape loop
+#
+# The closed loop (``controllers.shape_tracking``) corrects the commanded wave's amplitude and phase at each muscle
+# by integrating the error's in-phase and quadrature parts; that converges where the body's response to its command
+# lags it by less than 90 degrees of the correction's lead, and diverges elsewhere.  The body's own lag depends on
+# everything it moves against: its inertia at the gait frequency, the ground's friction, the wavelength.  So the
+# plant is identified on the case itself: the body, on its own ground and in its own world, runs the calibrated open
+# loop (the feed-forward the tracker starts from) for the ramp and PLANT_SETTLE_CYCLES periods, and over the next
+# PLANT_FIT_CYCLES periods the ground curvature at each interior segment is fitted with the command's phase
+# theta = k s - omega t + phi: kappa ~ Im(c e^{i theta}) + const.  The plant at that point is G = c / c_cmd, c_cmd
+# the command's own coefficient: |G| the share of the commanded amplitude the open loop reaches, -arg G its lag.
+
+PLANT_FORMAT = "plant-response-v1"
+PLANT_SETTLE_CYCLES = 1.0    # open-loop periods after the ramp before the fit (the friction's transient)
+PLANT_FIT_CYCLES = 1.0       # periods fitted
+PLANT_SAMPLES_PER_CYCLE = 40
+
+
+def plant_key(case) -> str:
+    """sha256 over everything that changes the open loop's response: the body, the creature, the world (scenario,
+    friction), the gait's wave (not its shape-control gains), the time step and the calibrated gain's own key."""
+    g = case.gait
+    wave = {k: v for k, v in dataclasses.asdict(g).items() if not k.startswith(("shape_", "max_muscle"))}
+    data = {"format": PLANT_FORMAT, "gain": calibration_key(case), "body": dataclasses.asdict(case.body),
+            "creature": dataclasses.asdict(case.creature), "scenario": dataclasses.asdict(case.scenario),
+            "friction": dataclasses.asdict(case.friction), "gait": wave, "dt": case.dt, "seed": case.seed,
+            "settle": PLANT_SETTLE_CYCLES, "fit": PLANT_FIT_CYCLES, "samples": PLANT_SAMPLES_PER_CYCLE}
+    return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
+
+
+def fit_wave_response(s: np.ndarray, t: np.ndarray, kappa: np.ndarray, wavenumber: float, omega: float,
+                      phase: float, commanded: float) -> np.ndarray:
+    """(n,) complex G at each point: the least-squares coefficient c of kappa (T, n) [1/m] at rest arc lengths
+    s (n,) [m] and times t (T,) [s] on Im(c e^{i theta}) + const, theta = wavenumber s - omega t + phase, over
+    ``commanded`` (the command's own coefficient, signed [1/m])."""
+    out = np.zeros(s.shape[0], dtype=complex)
+    for j in range(s.shape[0]):
+        th = wavenumber * s[j] - omega * t + phase
+        basis = np.column_stack([np.sin(th), np.cos(th), np.ones_like(t)])
+        coef, *_ = np.linalg.lstsq(basis, kappa[:, j], rcond=None)
+        out[j] = (coef[0] + 1j * coef[1]) / commanded
+    return out
+
+
+def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple) -> dict[str, Any]:
+    """Identify the open loop's response (the block comment above) on ``make_body(case)`` driven by
+    ``fill(t0, dt, n_rows, act)`` (the calibrated open loop's actuation).  wave: (wavenumber [rad/m], omega [rad/s],
+    phase [rad], commanded ground curvature coefficient [1/m], ramp [s]).  Returns {"s": (n,) [m], "gain": (n,)
+    |G|, "lag_deg": (n,) -arg G [deg], "status": "ok" or why not}."""
+    from ..metrics.body_shape import ground_curvature  # noqa: PLC0415 (the metric's own curvature, no cycle)
+
+    k, om, ph, kappa_cmd, ramp = wave
+    body = make_body(case)
+    body.compile()
+    dt = case.dt
+    period = 2.0 * math.pi / om
+    t_fit = ramp + PLANT_SETTLE_CYCLES * period
+    t_end = t_fit + PLANT_FIT_CYCLES * period
+    n_chunk = max(1, int(round(period / PLANT_SAMPLES_PER_CYCLE / dt)))
+    act = Actuation.for_body(body)
+    obs = Observation()
+    t, times, curves, s = 0.0, [], [], None
+    fill(0.0, dt, 1, act)
+    body.advance(0.0, 0, act)
+    while t < t_end - 0.5 * n_chunk * dt:
+        fill(t, dt, n_chunk + 1, act)
+        done, code = body.advance(t, n_chunk, act)
+        t += done * dt
+        if code != 0:
+            return {"s": [], "gain": [], "lag_deg": [], "status": f"the open loop blew up at t = {t:.3f} s: "
+                                                                    f"{body.status_text(code)}"}
+        if t + 1e-12 >= t_fit:
+            body.sense(obs, t)
+            pts = np.asarray(obs.seg_pos, float)
+            if s is None:
+                pitch = float(body.segment_pitch_m)
+                s = float(obs.seg_half[0, 0]) + pitch * np.arange(pts.shape[0], dtype=float)
+            kappa, _ = ground_curvature(pts[None])
+            times.append(t)
+            curves.append(kappa[0])
+    if s is None or len(times) < 8 or s.shape[0] < 5:
+        return {"s": [], "gain": [], "lag_deg": [], "status": "too few samples or segments to fit"}
+    G = fit_wave_response(s[1:-1], np.asarray(times), np.asarray(curves), k, om, ph, kappa_cmd)
+    return {"s": s[1:-1].tolist(), "gain": np.abs(G).tolist(), "lag_deg": (-np.degrees(np.angle(G))).tolist(),
+            "status": "ok"}
+
+
+def plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple,
+                   cache: bool = True) -> dict[str, Any]:
+    """``measure_plant_response`` of ``case``, measured once and cached by ``plant_key``."""
+    path = calibration_cache_dir() / f"plant-{plant_key(case)}.json"
+    if cache and path.exists():
+        try:
+            res = json.loads(path.read_text())
+            if res.get("format") == PLANT_FORMAT:
+                return res
+        except (OSError, ValueError):
+            pass  # a damaged entry is measured again
+    res = {**measure_plant_response(make_body, case, fill, wave), "format": PLANT_FORMAT, "body": case.body.name}
+    if cache:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(res))
+        os.replace(tmp, path)
+    return res

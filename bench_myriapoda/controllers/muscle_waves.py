@@ -89,6 +89,13 @@ class MuscleWaveConfig(GaitConfig):
                                  "per-segment integral of the wave's in-phase and quadrature error); 'open_loop': the "
                                  "calibrated gain alone, bit for bit as before issue 27 "
                                  "(docs/explanation/shape-tracking.md)")
+    shape_guard: bool = rng(True, doc="closed_loop: protect the loop from running away: identify the body's open-loop "
+                                      "response on the case's ground, schedule the loop's gains by its stability "
+                                      "margin (the calibrated open loop where there is none; PlantMargin), and watch "
+                                      "the run (the body bent 20 % beyond the command while the loop pushes, or most "
+                                      "muscles held at max_muscle_strain: back off to the open loop, resume at half "
+                                      "the gains; LoopGuard; controllers/shape_tracking.py); false: the loop as it "
+                                      "was before issue 44, at the body's constant gains")
     shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
     shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,
@@ -254,6 +261,11 @@ class MuscleWaveController:
     def metrics(self) -> dict[str, float]:
         """The closed loop's muscle figures (``shape_tracking.ShapeTracker.metrics``); none in open loop."""
         return self.tracker.metrics() if self.tracker is not None and self.tracker.ready else {}
+
+    def run_status(self) -> tuple[str, str] | None:
+        """(status, message) when the closed loop had to be backed off (``shape_tracking.ShapeTracker.run_status``:
+        ``controller_unstable``); None otherwise."""
+        return self.tracker.run_status() if self.tracker is not None and self.tracker.ready else None
 
     def fill(self, t0: float, dt: float, n_steps: int, act: Actuation) -> None:
         act.ensure_rows(n_steps)

@@ -200,6 +200,143 @@ def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
             counts[2] = max(counts[2], abs(u))
 
 
+def _wrap_deg(x):
+    return (np.asarray(x, float) + 180.0) % 360.0 - 180.0
+
+
+class PlantMargin:
+    """The loop's stability margin at the wave frequency, from the body's measured open-loop response.
+
+    ``bodies.curvature_calibration.plant_response`` identifies, at each interior segment, the open loop's curvature
+    against the command: gain |G| and lag phi.  The fundamental's amplitude-and-phase integral (step 3), its update
+    rotated by a lead delta (0 here), converges at a segment where |phi - delta| < 90 degrees for a linear plant (the
+    model plant of tests/test_shape_tracking.py), so its phase margin is 90 - max over the segments of |phi - delta|
+    [deg].
+
+    Measured, and not acted on: under Coulomb friction the open loop's response is not the closed loop's plant.  On
+    the slithering grid (lattice) the open loop reached 0.97, 0.88, 0.76, 0.58, 0.20 and 0.03 of the command at
+    mu_t / mu_f = 1, 1.5, 2, 3, 5 and 10, with margins 25, 21, 11, -10, -88 and -90 degrees, and the closed loop
+    tracks every one of those cells (shape error 0.07 or less at 35.7 s); the first runaway case of issue 44 reads
+    like the cell at 5 (gain 0.15, margin -90), the default snake 0.99 and 53.  Scheduling the gains by the margin
+    (the open loop where there is none) dropped the grid's cells at 5 and 10, and turning the fundamental's update by
+    the median lag (a lead, as step 3b's) took the cells at 2 and 3 to shape errors of 0.12 and 0.19.  The guard
+    (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away."""
+
+    def __init__(self, gain, lag_deg):
+        self.gain = np.asarray(gain, float)
+        self.lag_deg = _wrap_deg(lag_deg)
+        self.lead_deg = 0.0
+        self.margin_deg = 90.0 - float(np.max(np.abs(_wrap_deg(self.lag_deg - self.lead_deg))))
+
+    @classmethod
+    def of(cls, response) -> "PlantMargin | None":
+        """From ``body_info["plant_response"]``; None when the plant was not identified (its status says why)."""
+        if not response or response.get("status") != "ok" or not response.get("gain"):
+            return None
+        return cls(response["gain"], response["lag_deg"])
+
+    def metrics(self) -> dict[str, float]:
+        """shape_plant_gain, shape_plant_lag_deg (medians over the segments), shape_loop_margin_deg,
+        the loop's phase margin on it."""
+        return {"shape_plant_gain": float(np.median(self.gain)), "shape_plant_lag_deg": float(np.median(self.lag_deg)),
+                "shape_loop_margin_deg": self.margin_deg}
+
+
+def scaled_gains(gains: tuple, scale: float) -> tuple:
+    """``gains`` (``TrackGains``' order) with the loop's gains, the proportional, the fundamental's integral and the
+    harmonics' integral ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the
+    integral state is zero)."""
+    g = TrackGains(*gains)
+    return tuple(g._replace(kp=g.kp * scale, ki=g.ki * scale, ki_h=g.ki_h * scale))
+
+
+# The guard's thresholds (``LoopGuard``): the loop has lost its margin when the body's bend, smoothed like the error,
+# exceeds the command by GUARD_AMPLITUDE_RATIO in RMS over the last quarter cycle (under the 25 % a run may overshoot
+# by, issue 44), or when more than GUARD_SATURATION of the muscles have been held at their strength over the last
+# half cycle ("most muscles saturated") while the body bends at least as commanded.  Each back-off halves the loop's gains (GUARD_BACKOFF) after a period of
+# the open loop; after GUARD_MAX_BACKOFFS the open loop stays.
+GUARD_AMPLITUDE_RATIO = 1.2
+GUARD_SATURATION = 0.5
+GUARD_BACKOFF = 0.5
+GUARD_MAX_BACKOFFS = 2
+
+
+class LoopGuard:
+    """Watches the closed loop for a runaway and backs it off to the calibrated open loop (``gait.shape_guard``).
+
+    The tracker's integral and proportional terms assume a plant whose response grows in proportion to the command
+    and lags it by less than 90 degrees.  Coulomb friction breaks both: a bend costs a friction moment that does not
+    grow with the bend, so the body hardly moves until the muscles' moment passes it and then bends far (the lattice
+    snake at 0.5 Hz, one wave per body, mu_t = 0.5: 1.5 of a commanded 10 open loop, 40 closed loop with half its
+    muscles at their strength; issue 44).  Once the bend passes the command by ``GUARD_AMPLITUDE_RATIO`` while the
+    loop commands more than the feed-forward (the loop's doing: a body that overshoots in open loop is pulled back
+    by the loop, and left alone here), or most muscles are held at their strength, the integral state is dropped and the command is the feed-forward alone for
+    one gait period; then the loop resumes at ``GUARD_BACKOFF`` times its gains, and after ``GUARD_MAX_BACKOFFS``
+    back-offs the open loop stays.  The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
+    ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
+    in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
+
+    def __init__(self, period_s: float, t_steady: float, dt_tick: float):
+        self.period_s, self.t_steady, self.dt_tick = float(period_s), float(t_steady), float(dt_tick)
+        self.reset()
+
+    def reset(self) -> None:
+        self.scale = 1.0           # the loop's gain scale once resumed
+        self.hold_until = -1.0     # open loop until this time [s]
+        self.backoffs = 0
+        self.times: list[float] = []
+        self.p_meas = 0.0          # mean square of the measured bend [strain^2], low-passed
+        self.p_cmd = 0.0           # mean square of the commanded bend, the feed-forward [strain^2], low-passed
+        self.p_out = 0.0           # mean square of the loop's command [strain^2], low-passed
+        self.sat = 0.0             # share of clipped commands, low-passed
+
+    @property
+    def fallen_back(self) -> bool:
+        """The open loop for good: the loop lost its margin ``GUARD_MAX_BACKOFFS`` + 1 times."""
+        return self.backoffs > GUARD_MAX_BACKOFFS
+
+    def gain_scale(self, t: float) -> float:
+        """The loop's gain scale at t [s]: 0 while backed off, else the scale it resumed at."""
+        return 0.0 if self.fallen_back or t < self.hold_until else self.scale
+
+    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float) -> bool:
+        """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
+        command; ramp_s [s]: the start ramp); True when the loop lost its margin at this tick (the caller drops the
+        integral state)."""
+        amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
+            waves[_LATERAL, _PHASE]
+        err, lateral = state[4], state[2]
+        r = 1.0 if ramp_s <= 0.0 or t >= ramp_s else max(t, 0.0) / ramp_s
+        ref = (r * amp) * np.sin(k * s_muscle - om * t + ph)
+        meas = ref - err  # the measured bend, smoothed along the body like the error [strain]
+        a_fast = self.dt_tick / (0.25 * self.period_s)
+        a_slow = self.dt_tick / (0.5 * self.period_s)
+        self.p_meas += a_fast * (float(np.mean(meas * meas)) - self.p_meas)
+        self.p_cmd += a_fast * (float(np.mean(ref * ref)) - self.p_cmd)
+        self.p_out += a_fast * (float(np.mean(lateral * lateral)) - self.p_out)
+        self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
+        if self.fallen_back or t < self.hold_until or r < 1.0:
+            return False
+        # the controller's doing: the body bends beyond the command while the loop commands more than the open
+        # loop would (a body that overshoots in open loop, which the loop is pulling back, is the body's own)
+        overshoot = self.p_meas > GUARD_AMPLITUDE_RATIO ** 2 * self.p_cmd and self.p_out > self.p_cmd
+        # most muscles at their strength while the body bends at least as commanded: the loop's doing (a muscle too
+        # weak for the load saturates with the body short of the command; that is flagged, not backed off)
+        runaway = overshoot or (self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd)
+        if not runaway:
+            return False
+        self.backoffs += 1
+        self.times.append(float(t))
+        self.scale *= GUARD_BACKOFF
+        self.hold_until = t + self.period_s
+        self.sat = 0.0
+        return True
+
+    def acted_in_window(self) -> bool:
+        """The guard backed off in the steady window (after ``metrics.warmup_cycles``) or ended in the open loop."""
+        return self.fallen_back or any(tt >= self.t_steady for tt in self.times)
+
+
 class ShapeTracker:
     """The closed loop of a commanded bending wave (module docstring) for one run."""
 
@@ -219,6 +356,9 @@ class ShapeTracker:
         self.frequency_hz = float(g.frequency_hz)
         self.lead_rad = math.radians(float(g.shape_harmonic_lead_deg))
         self._set_harmonics(max(self.kh_key, 0.0))
+        self.period_s = float(g.period_s)
+        self.plant = None
+        self.guard = LoopGuard(self.period_s, self.t_steady, self.dt_tick) if g.shape_guard else None
         self.ready = False
 
     def _set_harmonics(self, gain_per_cycle: float) -> None:
@@ -239,6 +379,9 @@ class ShapeTracker:
                             else float(body_info.get("shape_harmonic_gain_per_cycle", 0.0)))
         n = self.s_muscle.shape[0]
         self.kappa = np.zeros(n)
+        # the open loop's measured response and the loop's margin on it: measured and reported, not acted on
+        # (``PlantMargin`` says why)
+        self.plant = PlantMargin.of(body_info.get("plant_response"))
         # plain tuples (``TrackGains``, ``TrackState``: why there)
         self.gains = tuple(TrackGains(self.ramp_s, self.dt_tick, self.strain_per_kappa, self.kp, self.ki, self.umax,
                                       SMOOTHING_PASSES, self.harmonics, self.ki_h, self.lead_cos, self.lead_sin))
@@ -246,6 +389,9 @@ class ShapeTracker:
         self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n),
                                       np.zeros((n_h, n)), np.zeros((n_h, n))))
         self.s_centre = None
+        self.full_gains, self.scale = self.gains, 1.0
+        if self.guard is not None:
+            self.guard.reset()
         self.ready = True
 
     def command(self, obs, t: float, waves, ramp_s: float, s_seg, row) -> None:
@@ -255,10 +401,20 @@ class ShapeTracker:
             n = obs.seg_rot.shape[0]
             self.s_centre = float(obs.seg_half[0, 0]) + self.pitch * np.arange(n, dtype=np.float64)
             self.psi = np.zeros(n)
-        if ramp_s != self.gains[0]:  # the caller's ramp wins (the controller's, the gait's by default)
+        if ramp_s != self.full_gains[0]:  # the caller's ramp wins (the controller's, the gait's by default)
+            self.full_gains = (float(ramp_s),) + self.full_gains[1:]
             self.gains = (float(ramp_s),) + self.gains[1:]
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
+        if self.guard is not None:
+            scale = self.guard.gain_scale(t)
+            if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
+                self.gains, self.scale = scaled_gains(self.full_gains, scale), scale
         track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, self.gains, self.state)
+        if self.guard is not None and self.guard.watch(t, self.gains[0], waves, self.s_muscle, self.state, self.umax):
+            # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
+            # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
+            for arr in (self.state[0], self.state[1], self.state[6], self.state[7]):
+                arr[...] = 0.0
         row[:, _LATERAL] = self.lateral
 
     @property
@@ -275,6 +431,28 @@ class ShapeTracker:
         """muscle_saturation_fraction [-]: share of the steady window's (segment, tick) LATERAL commands
         clipped at max_muscle_strain; muscle_strain_peak [-]: the largest |LATERAL strain| commanded there."""
         n, clipped, peak = self.counts
-        if n == 0:
-            return {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")}
-        return {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
+        out = {"muscle_saturation_fraction": float("nan"), "muscle_strain_peak": float("nan")} if n == 0 else \
+            {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
+        if self.plant is not None:
+            out.update(self.plant.metrics())
+        if self.guard is not None:
+            gd = self.guard
+            out.update({"shape_control_backoffs": float(gd.backoffs),
+                        "shape_control_gain_scale": 0.0 if gd.fallen_back else float(gd.scale),
+                        "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
+        return out
+
+    def run_status(self) -> tuple[str, str] | None:
+        """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good:
+        the motion measured there is the open loop's (or a lower gain's), because the loop drove the shape away;
+        None otherwise."""
+        gd = self.guard
+        if gd is None or not gd.acted_in_window():
+            return None
+        when = ", ".join(f"{t:.2f}" for t in gd.times)
+        end = "stayed in the calibrated open loop" if gd.fallen_back else \
+            f"resumed at {gd.scale:g} of its gains"
+        return ("controller_unstable",
+                f"controller_unstable: the shape tracker drove the body beyond the commanded shape (bend over "
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command or most muscles at max_muscle_strain) and backed off to the "
+                f"calibrated open loop at t = {when} s; it {end}")

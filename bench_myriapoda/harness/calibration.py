@@ -11,7 +11,7 @@ import dataclasses
 import functools
 from typing import Any
 
-from ..bodies.curvature_calibration import lateral_gain
+from ..bodies.curvature_calibration import lateral_gain, plant_response
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
 from ..world.world import build_world, made_in
@@ -37,7 +37,37 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         info["strain_per_curvature"] = lateral_gain(functools.partial(_in_its_own_world, spec.factory), cal_case)
         info["shape_gain_p"] = float(spec.shape_gain_p)
         info["shape_harmonic_gain_per_cycle"] = float(spec.shape_harmonic_gain_per_cycle)
+        if identifies_the_plant(case):
+            info["plant_response"] = identified_plant(spec, case, info)
     return info
+
+
+def closes_the_shape_loop(case) -> bool:
+    """True when ``case``'s gait tracks its lateral shape in closed loop (``controllers.shape_tracking``)."""
+    g = case.gait
+    return (getattr(g, "shape_control", "open_loop") == "closed_loop" and getattr(g, "curvature_amplitude", 0.0) > 0.0
+            and not case.scenario.passive)
+
+
+def identifies_the_plant(case) -> bool:
+    """True when the closed loop schedules its gains from the body's measured plant (``gait.shape_guard``)."""
+    return closes_the_shape_loop(case) and bool(getattr(case.gait, "shape_guard", False))
+
+
+def identified_plant(spec, case, info) -> dict[str, Any]:
+    """The open loop's measured response on the case's own ground (``bodies.curvature_calibration.plant_response``,
+    cached): the calibrated open-loop controller of the same gait drives a body of the same case."""
+    from ..controllers.muscle_waves import LATERAL, wave_table  # noqa: PLC0415 (the gait's own open loop)
+    from ..core.protocols import LATERAL_GROUND_SIGN  # noqa: PLC0415
+
+    open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
+    ctrl = registry.GAITS[case.gait.name].controller(open_case)
+    ctrl.reset(open_case, info)
+    g, L = case.gait, float(case.creature.body_length_m)
+    table = wave_table(g, L, strain_per_curvature=info["strain_per_curvature"])
+    wave = (float(table[LATERAL, 1]), float(table[LATERAL, 2]), float(table[LATERAL, 3]),
+            LATERAL_GROUND_SIGN * g.curvature_amplitude / L, float(g.ramp_s))
+    return plant_response(lambda c: made_in(spec.factory, c, build_world(c)), case, ctrl.fill, wave)
 
 
 def _in_its_own_world(factory, cal_case):

@@ -44,7 +44,7 @@ from .recorder import Recorder, Series
 @dataclass
 class RunResult:
     case: Case
-    status: str  # "ok" | "unstable" | "error"
+    status: str  # "ok" | "unstable" | "controller_unstable" | "error" | "timeout"
     metrics: dict[str, float]
     timings: dict[str, float]
     message: str = ""
@@ -348,6 +348,13 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
             metrics.update(controller_metrics())
         if metrics.get("shape_not_achieved") == 1.0 and status == "ok":
             message = shape_flag_reason(metrics, case)
+        controller_status = getattr(creature.controller, "run_status", None)  # e.g. the shape tracker's guard
+        verdict = controller_status() if callable(controller_status) else None
+        if verdict is not None and status == "ok":
+            # the controller drove the body away (issue 44): its own status, the shape's reason kept in the message
+            status, message = verdict[0], verdict[1] + (f"; {message}" if message else "")
+        elif verdict is not None:  # a blow-up stays ``unstable`` (the body's); what the controller did is said too
+            message = f"{message}; {verdict[1]}"
         extra = {}
         if monitor is not None:
             metrics.update(monitor.metrics())

@@ -72,7 +72,7 @@ SUITE_SCENES: dict[tuple[str, str], tuple[str, float]] = {
     ("massspring", "centipede"): ("massspring-centipede", 18.0),
     ("fem", "centipede"): ("fem-centipede", 18.0 * 27.0),
 }
-OK_STATUSES = ("ok", "unstable")
+OK_STATUSES = ("ok", "unstable", "controller_unstable")
 
 
 # --------------------------------------------------------------------------- what a case costs

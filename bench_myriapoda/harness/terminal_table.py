@@ -63,8 +63,10 @@ def _status(row: dict, keys: Sequence[str]) -> str:
 def _metric_cell(row: dict, metric: str) -> str:
     v = row.get(f"metric.{metric}", row.get(metric))
     if metric in ("speed_bl_per_cycle", "speed_m_per_s", "travel_angle_deg"):
-        if row.get("status") == "unstable" or str(row.get("gait")) == "passive":
-            return "-"  # a blown-up run's speeds are no result; a passive body does not travel
+        if row.get("status") in ("unstable", "controller_unstable") or str(row.get("gait")) == "passive":
+            # a blown-up run's speeds are no result, nor those of a shape the tracker drove away (issue 44); a
+            # passive body does not travel
+            return "-"
         if _labels(row).get("too_short"):
             return "too short"
         if metric == "speed_m_per_s" and str(row.get("gait")) in LEGGED_GAITS and cell(v) != "-":
@@ -124,6 +126,8 @@ def closing_line(rows: Sequence[dict], grid_keys: Sequence[str], report: Path | 
         intended += s == "unstable" and any(k in BLOW_UP_KEYS for k in keys)
     parts = [f"{counts.get('ok', 0)} ok", f"{counts.get('unstable', 0)} unstable ({intended} intended)",
              f"{counts.get('error', 0)} error", f"{counts.get('timeout', 0)} timeout"]
+    if counts.get("controller_unstable"):  # the shape tracker backed off (issue 44): said only where it happened
+        parts.insert(2, f"{counts['controller_unstable']} controller_unstable")
     line = f"{len(rows)} cases: " + ", ".join(parts)
     if verdicts:
         line += "; figure verdicts: " + ", ".join(f"{n} {v}" for v, n in sorted(verdicts.items()))

@@ -150,6 +150,29 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
      "`gait.max_muscle_strain` (closed-loop shape control only)", "bending gaits"),
     ("muscle_strain_peak", "-", "largest |lateral strain| commanded in the steady window (closed-loop shape control "
      "only)", "bending gaits"),
+    ("shape_control_backoffs", "count", "times the closed loop's guard found the loop had lost its margin (the "
+     "body bent beyond 1.2 x the command or most muscles held at `gait.max_muscle_strain`) and backed it off to the "
+     "calibrated open loop (`gait.shape_guard`, closed-loop shape control only)", "bending gaits"),
+    ("shape_control_gain_scale", "-", "the closed loop's gains at the end of the run over its own: 1 when the guard "
+     "never acted, halved at each back-off, 0 when it stayed in the calibrated open loop", "bending gaits"),
+    ("shape_control_backoff_s", "s", "when the guard first backed the loop off (NaN when it never did)",
+     "bending gaits"),
+    ("shape_plant_gain", "-", "median over the interior segments of the curvature amplitude the calibrated open loop "
+     "reached on the case's own ground over the commanded one (identified before the run, "
+     "bodies/curvature_calibration.py plant_response; closed-loop shape control with gait.shape_guard)",
+     "bending gaits"),
+    ("shape_plant_lag_deg", "deg", "median over the interior segments of the open loop's curvature lag behind the "
+     "commanded wave, from the same identification", "bending gaits"),
+    ("shape_loop_margin_deg", "deg", "phase margin of the loop's amplitude-and-phase integral on the identified open "
+     "loop: 90 - the largest |lag| over the segments (a linear plant converges above 0); measured, not acted on: "
+     "under Coulomb friction it does not predict the closed loop (docs/explanation/shape-tracking.md)",
+     "bending gaits"),
+    ("tail_swing_ratio", "-", "RMS lateral excursion of the tail over that of the mid-body (median over the middle "
+     "third of the centres) over the steady window, each across the mean body axis less a line fitted in time: 1 for a kinematic snake whose every point "
+     "follows the head's path, above 1 for a tail that swishes wider (Miller Sec. 4)", "bending gaits"),
+    ("sideways_slip_ratio", "-", "RMS ground velocity across the local centre line over the RMS ground speed, over "
+     "the steady window and the interior centre-line points: 0 for a body that moves along itself, 1 for one "
+     "moving straight across itself (Miller Sec. 4: segments slide sideways when grip is poor)", "bending gaits"),
     # ---- emergent walking measures (metrics/walk.py): a walk's speed is commanded, these are not
     ("body_speed_ratio", "-", "centre-of-mass ground speed over the commanded head speed "
      "(`controller.head_speed_m_s`)", "legged creatures"),

@@ -47,6 +47,16 @@ def commands_a_shape(case) -> bool:
     return g.commands_curvature() and g.curvature_amplitude > 0.0 and not case.scenario.passive
 
 
+def shape_control_mode(gait) -> str:
+    """Which shape control a gait ran (``gait`` a GaitConfig or its dict): ``closed_loop`` (the commanded shape
+    tracked: the mode for comparisons with the kinematic reference), ``open_loop`` (the calibrated gain alone:
+    Miller's dynamic snake, its own departures from the command kept), or ``none`` (no commanded curvature)."""
+    get = gait.get if isinstance(gait, dict) else (lambda k, d=None: getattr(gait, k, d))
+    if not (get("curvature_amplitude", 0.0) or 0.0) > 0.0 or get("name") not in ("lateral-undulation", "sidewinding"):
+        return "none"
+    return str(get("shape_control", "open_loop"))
+
+
 def commanded_curvature(case, s: np.ndarray, t: np.ndarray) -> np.ndarray:
     """(T, n) commanded ground curvature [1/m] at rest arc lengths s (n,) [m] and times t (T,) [s]."""
     g = case.gait
@@ -129,8 +139,10 @@ def shape_harmonic_content(series: Series, case, i0: int, i1: int) -> float:
 
 def shape_flag_reason(metrics: dict[str, float], case) -> str:
     """The run message of a ``shape_not_achieved`` run: the error, the achieved shape, the muscles' saturation."""
-    parts = [f"shape_not_achieved: shape_tracking_error {metrics['shape_tracking_error']:.3f} > "
-             f"{SHAPE_ERROR_THRESHOLD:g}",
+    err = metrics["shape_tracking_error"]
+    parts = [f"shape_not_achieved: shape_tracking_error {err:.3f} > {SHAPE_ERROR_THRESHOLD:g}" if math.isfinite(err)
+             else "shape_not_achieved: shape_tracking_error not measured (too few centre-line points one segment pitch "
+                  "apart, or too few samples in the steady window)",
              f"curvature_amplitude {metrics.get('curvature_amplitude', float('nan')):.3g} of "
              f"{case.gait.curvature_amplitude:g} commanded"]
     sat = metrics.get("muscle_saturation_fraction")

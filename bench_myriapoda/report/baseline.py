@@ -32,7 +32,7 @@ LOWER_IS_BETTER = ("max_penetration_m", "energy_drift_rel", "energy_max_dev_rel"
                    "phase_lag_cv", "max_strain")
 HIGHER_IS_BETTER = ("walking_cycle_leg_fraction", "min_J", "steps_per_s", "realtime_factor")
 ABS_FLOOR = 1e-9
-STATUS_RANK = {"ok": 0, "unstable": 1, "timeout": 2, "error": 2}
+STATUS_RANK = {"ok": 0, "controller_unstable": 1, "unstable": 1, "timeout": 2, "error": 2}
 
 
 def _match(now: pd.DataFrame, base: pd.DataFrame) -> list[tuple[pd.Series, pd.Series]]:

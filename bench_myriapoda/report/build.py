@@ -298,6 +298,12 @@ def _overview(page: _Page, res: MatrixResults) -> None:
             page.table(df.loc[unexpected, ["label", "status", "metric.t_fail_s", "message"]]
                        .rename(columns={"metric.t_fail_s": "t_fail [s]"}).reset_index(drop=True),
                        ["unstable"] * int(unexpected.sum()))
+    runaway = df[df["status"] == "controller_unstable"] if not df.empty else df
+    if not runaway.empty:
+        page.p(f"{len(runaway)} controller_unstable: the closed-loop shape tracker drove the body beyond the commanded "
+               "shape and backed off to the calibrated open loop (controllers/shape_tracking.py, LoopGuard); their "
+               "speeds are not of the commanded shape:")
+        page.table(runaway[["label", "status", "message"]].reset_index(drop=True), ["unstable"] * len(runaway))
     bad = df[df["status"].isin(["error", "timeout"])] if not df.empty else df
     if not bad.empty:
         page.p("Cases that did not finish:")

@@ -40,6 +40,7 @@ import pandas as pd
 
 from ..harness.store import StoreReadError, read_latest_stable_dt
 from ..metrics.shape_tracking import SHAPE_ERROR_THRESHOLD as SHAPE_THRESHOLD
+from ..metrics.shape_tracking import shape_control_mode
 from ..metrics.walk import EMERGENT_WALK_METRICS, commanded_metric
 from .sweeps import sweep_mask
 
@@ -443,6 +444,9 @@ def locomotion_group(row) -> Group:
     """The headline case's speed against its reference; commanded and too-short speeds say so."""
     if row is None:
         return Group(None, "no case", "the pair ran only in sweeps")
+    if row["status"] == "controller_unstable":
+        return Group(None, "controller_unstable", f"the shape tracker drove the body beyond the commanded shape and "
+                     f"backed off (no speed of the commanded shape): {row.get('message') or ''}"[:400])
     if row["status"] != "ok":
         return Group(None, f"{row['status']}", f"the headline case ended {row['status']} at t = "
                      f"{_num(row.get('metric.t_fail_s')) or float('nan'):.3g} s: no speed")
@@ -493,7 +497,9 @@ def shape_group(row) -> Group:
     if v is None:
         return Group(None, "not measured", "no shape_tracking_error in these results")
     flagged = bool(_num(row.get(SHAPE_FLAG)))
-    return Group(v, f"{v:.3g}" + (" (shape not achieved)" if flagged else ""), None, {"shape_not_achieved": flagged})
+    mode = shape_control_mode(_case(row).get("gait", {}))  # which shape control the row ran (issue 44)
+    return Group(v, f"{v:.3g}" + (" (shape not achieved)" if flagged else "") + f" [shape_control {mode}]", None,
+                 {"shape_not_achieved": flagged, "shape_control": mode})
 
 
 # --------------------------------------------------------------------------- cost

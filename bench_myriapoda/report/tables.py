@@ -88,6 +88,10 @@ ROW_REASONS: tuple[tuple[str, tuple[str, ...], str], ...] = (
     ("unstable", tuple(c for c, _, g in COMPARISON_COLUMNS if g in ("speed", "gait")) + ("metric.energy_drift_rel",
                                                                                         "metric.energy_drift_free_rel"),
      "the run blew up (status unstable, at t_fail): what it measured until then is no result"),
+    ("controller_unstable", tuple(c for c, _, g in COMPARISON_COLUMNS if g in ("speed", "gait")),
+     "controller_unstable: the closed-loop shape tracker drove the body beyond the commanded shape and backed off "
+     "to the calibrated open loop (controllers/shape_tracking.py, LoopGuard); its locomotion is not that of the "
+     "commanded shape (the values stay in the results store and --json; the run's message says when)"),
     ("commanded", ("metric.speed_m_per_s", "metric.speed_bl_per_s"),
      "commanded: a legged walk's speed is the head speed the controller commands (controller.head_speed_m_s), "
      "the same on every body model; left out of comparisons (see body / commanded speed, foot slip, sway)"),
@@ -120,6 +124,7 @@ def row_reason(row, column: str) -> str | None:
             labels = {}
     impact = row.get("metric.impact_energy_loss_rel")
     applies = {"unstable": row.get("status") == "unstable", "commanded": legged,
+               "controller_unstable": row.get("status") == "controller_unstable",
                "too_short": bool(labels.get("too_short")),
                "contact": isinstance(impact, float) and math.isfinite(impact)}
     for key, columns, _ in ROW_REASONS:

@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 
+from ..metrics.shape_tracking import shape_control_mode
 from .core import Context, Outcome, failed_run, holds, not_applicable, relative
 
 MILLER = "Miller 1988"
@@ -80,7 +81,8 @@ def image_run(run_key: str, sidewinder_reversal: bool = False):
             figures.update(lateral_plus=lp, lateral_minus=lm)
             ok = ok and bool(rev)
             passed += int(bool(rev))
-        n = len(lines)
+        lines.append(f"shape_control {shape_control_mode(r.case.gait)}")  # which mode the row ran (issue 44)
+        n = len(lines) - 1
         return holds(ok, f"{passed}/{n} behaviours", f"all {n} (Images; reference.miller_images)",
                      "every described behaviour", "; ".join(lines), **figures)
 
@@ -210,7 +212,8 @@ def _against_reference(ctx: Context, body: str, shape_of) -> Outcome:
                          f"{r.metrics['shape_tracking_error']:.2f})")
     err = max(abs(m - f) / abs(f) for m, f in zip(measured, reference))
     out = relative(measured[-1], reference[-1], SLITHERING_REL_TOL, "BL/cycle",
-                   detail="mu_t/mu_f " + ", ".join(f"{q:g}: {m:.3f} vs {f:.3f}" for q, m, f in
+                   detail=f"shape_control {shape_control_mode(runs[0].case.gait)}; mu_t/mu_f "
+                   + ", ".join(f"{q:g}: {m:.3f} vs {f:.3f}" for q, m, f in
                                                     zip(ratios, measured, reference)) + f"; worst {err:.2f}"
                    + "".join(f"; {n}" for n in notes))
     ok = err <= SLITHERING_REL_TOL

