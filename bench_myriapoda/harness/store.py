@@ -173,21 +173,38 @@ def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[
             check_writable_file(path, flag)
         return path
     try:
-        with open(path, "rb") as fh:
-            header = fh.read(100)
+        size = path.stat().st_size
     except OSError as exc:
         raise InputError(flag, None, f"{path}: cannot read ({exc.strerror})") from None
-    if header and header[: len(SQLITE_MAGIC)] != SQLITE_MAGIC:
-        raise InputError(flag, None, f"{path} is not a SQLite database (a results store written by bench-myriapoda)")
+    # The file is read through SQLite first: closing a plain file handle on it would drop every POSIX lock this
+    # process holds on it, a transaction another connection of the caller's has open included (SQLite's own
+    # handles keep them).  Only a file SQLite cannot open as a database has its header read directly.
+    facts = _page_facts(path) if size else None
+    header = None
+    if isinstance(facts, sqlite3.Error):
+        if _is_busy(facts):
+            raise InputError(flag, None, _locked_message(path))
+        try:
+            with open(path, "rb") as fh:
+                header = fh.read(100)
+        except OSError as exc:
+            raise InputError(flag, None, f"{path}: cannot read ({exc.strerror})") from None
+        if header[: len(SQLITE_MAGIC)] != SQLITE_MAGIC:
+            raise InputError(flag, None, f"{path} is not a SQLite database (a results store written by "
+                                         "bench-myriapoda)")
     if write:
         if not os.access(path, os.W_OK) or _read_only_mount(path):
             raise InputError(flag, None, f"{path} is not writable")
         check_writable_dir(path.parent, flag, what=f"the folder of {path} (SQLite writes its journal there)")
-    if not header:  # an empty file: SQLite makes it a database on first write
+    if not size:  # an empty file: SQLite makes it a database on first write
         if need:
             raise InputError(flag, None, f"{path} is an empty file, not a results store")
         return path
-    _check_not_truncated(path, header, flag)
+    if header is not None:
+        _check_not_truncated(path, header, flag)
+    elif size < facts[0] * facts[1]:
+        raise InputError(flag, None, f"{path} is a truncated SQLite file ({size:,} bytes; its header says "
+                                     f"{facts[0] * facts[1]:,})")
     problem = _roll_back_hot_journal(path)
     if problem:
         raise InputError(flag, None, f"{path}: {problem}")
@@ -287,6 +304,20 @@ def _roll_back_hot_journal(path: Path) -> str | None:
             return _LOCKED
         return f"has a hot journal ({journal.name}) that SQLite could not roll back ({exc})"
     return None
+
+
+def _page_facts(path: Path) -> tuple[int, int] | sqlite3.Error:
+    """(page size, page count) as SQLite reads them from the header (the count from the file's size when the
+    header's is stale), or the error SQLite gives for a file it cannot open as a database."""
+    try:
+        con = sqlite3.connect(path.resolve().as_uri() + "?mode=ro", uri=True, timeout=LOCK_WAIT_S)
+        try:
+            pages = con.execute("PRAGMA page_count").fetchone()[0]
+            return con.execute("PRAGMA page_size").fetchone()[0], pages
+        finally:
+            con.close()
+    except sqlite3.Error as exc:
+        return exc
 
 
 def _check_not_truncated(path: Path, header: bytes, flag: str) -> None:
