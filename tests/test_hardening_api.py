@@ -370,6 +370,26 @@ def test_a_store_locked_by_another_writer_is_refused_within_seconds(fresh, monke
     assert rows(store) == 0
 
 
+def test_checking_a_store_keeps_a_lock_this_process_holds_on_it(fresh):
+    """A notebook's own connection in a write transaction on the store, then a check of that store: the
+    lock must survive (a plain open and close of the file drops every POSIX lock of the process on it, and
+    another program could then write into the transaction's pages)."""
+    store = fresh / "r.sqlite"
+    connect(store).close()
+    mine = sqlite3.connect(store, isolation_level=None)
+    mine.execute("BEGIN IMMEDIATE")
+    try:
+        assert check_store(store, "--store", write=False) == store
+        refused(lambda: check_store(store, "--store"), "--store", "locked")  # a writer would wait for it
+        code = ("import sqlite3, sys; c = sqlite3.connect(sys.argv[1], timeout=0.2, isolation_level=None)\n"
+                "try:\n    c.execute('BEGIN IMMEDIATE'); print('got the lock')\n"
+                "except sqlite3.OperationalError as e:\n    print(e)")
+        other = subprocess.run([sys.executable, "-c", code, str(store)], capture_output=True, text=True, timeout=60)
+        assert other.stdout.strip() == "database is locked", other.stdout
+    finally:
+        mine.close()
+
+
 def test_a_store_with_a_hot_journal_is_recovered_and_used(fresh):
     """A writer killed mid-transaction leaves a hot journal; SQLite rolls it back on the next read-write
     open and the store is as it was: valid input, for the command line and the API."""
