@@ -371,19 +371,20 @@ def cmd_run(args) -> int:
     bar.close()
     # From here on nothing may raise before the result is printed: a failed write keeps the result (stored
     # elsewhere, printed) and says so in a line; the exit code is then 1.
-    unstored = None
+    failed: list[str] = []  # one line each: the store, --record, --plot-gait
     run_id = None
     if not args.no_store:
         store = args.store or DEFAULT_STORE
         run_id, unstored = _store_or_keep(store, "run", lambda: record_run(store, result, command="run"),
                                           result.to_json_dict)
+        failed += [unstored] if unstored else []
     if args.record and result.series is not None:
         def record():
             extra = {}
             if "leg_timeline" in result.extra:
                 extra = dict(zip(("leg_t", "leg_states", "leg_tips"), result.extra["leg_timeline"]))
             save_npz(Path(args.record), result.series, case.to_dict(), extra)
-        unstored = unstored or _write_after_the_run("--record", args.record, record)
+        failed += filter(None, [_write_after_the_run("--record", args.record, record)])
     if args.plot_gait and "leg_timeline" in result.extra:
         def plot():
             from .report.gait_diagram import plot_gait_diagram
@@ -391,7 +392,7 @@ def cmd_run(args) -> int:
             if len(t):
                 plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
                                   title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
-        unstored = unstored or _write_after_the_run("--plot-gait", args.plot_gait, plot)
+        failed += filter(None, [_write_after_the_run("--plot-gait", args.plot_gait, plot)])
     try:
         written = _write_frame_outputs(args, case, frames, anim_stride, world)
     except Exception as exc:  # anything _write_frame_outputs does not expect: the result is still printed
@@ -404,8 +405,9 @@ def cmd_run(args) -> int:
         print_result_table(result)
         if run_id is not None:  # where the result went (--json keeps stdout to the one object)
             print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id})")
-    if unstored:
-        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+    for line in failed:
+        print(f"bench-myriapoda: error: {line}", file=sys.stderr)
+    if failed:
         return EXIT_FAIL
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)

@@ -529,6 +529,22 @@ def test_a_write_that_raises_anything_after_the_run_keeps_the_printed_and_stored
     assert out.err.count("\n") == 1 and "could not write --record x.npz (RecursionError" in out.err, out.err
 
 
+def test_a_store_and_a_record_that_both_fail_after_the_run_are_both_named(fresh, capsys, monkeypatch):
+    from bench_myriapoda.cli import main
+
+    def disk_full(*a, **k):
+        raise sqlite3.OperationalError("database or disk is full")
+    monkeypatch.setattr(store_mod, "connect", disk_full)
+    after_the_run(monkeypatch, lambda: (fresh / "y").write_text(""))  # a file where the recording's folder goes
+    code = main([*RUN, "--store", "r.sqlite", "--record", "y/x.npz", "--json"])
+    out = capsys.readouterr()
+    assert code == 1 and json.loads(out.out)["timings"]["steps"] > 0
+    lines = out.err.splitlines()
+    assert len(lines) == 2 and "could not store the run" in lines[0] and "could not write --record y/x.npz" in \
+        lines[1], lines
+    assert kept_file(lines[0]).is_file()
+
+
 # --------------------------------------------------------------------------- timeouts and signals
 
 def two_case_matrix(folder: Path) -> Path:
