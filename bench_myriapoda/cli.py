@@ -1080,14 +1080,14 @@ def cmd_validate(args) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
-        if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
-            raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
-        parser = build_parser()
-        args = parser.parse_args(argv or ["quick"])
-        if args.command is None:
-            args = parser.parse_args(["quick", *argv])
-        _print_any_file_name()
-        with _sigterm_as_interrupt():
+        with _sigterm_as_interrupt():  # from the start: building the parser imports the body models (~1.3 s)
+            if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
+                raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
+            parser = build_parser()
+            args = parser.parse_args(argv or ["quick"])
+            if args.command is None:
+                args = parser.parse_args(["quick", *argv])
+            _print_any_file_name()
             code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
                     "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
                     "peers": cmd_peers, "validate": cmd_validate, "scorecard": cmd_scorecard}[args.command](args)
