@@ -103,6 +103,7 @@ class Result:
 
     raw: Any  # harness.runner.RunResult
     run_id: int | None = None
+    unstored: str | None = None  # why ``store`` could not take the run, and which file keeps it (run_id is None)
 
     @property
     def case(self) -> Case:
@@ -191,17 +192,136 @@ class Result:
                 f"<table><tr><th>metric</th><th>value</th></tr>{rows}</table></div>")
 
 
-def resolve(creature: str, body: str, scenario: str, gait: str | None = None, duration: float | None = None,
-            dt: float | None = None, seed: int | None = 0, set: Mapping[str, Any] | None = None,
-            **overrides: Any) -> Case:
+def resolve(creature: str | os.PathLike, body: str, scenario: str | os.PathLike, gait: str | None = None,
+            duration: float | None = None, dt: float | None = None, seed: int | None = 0,
+            set: Mapping[str, Any] | None = None, **overrides: Any) -> Case:
     """The resolved :class:`Case` :func:`run` would simulate (nothing runs)."""
-    return resolve_case(creature, body, scenario, gait, duration=duration, dt=dt, seed=seed,
-                        overrides=override_items(set, **overrides))
+    a = _checked_case_arguments(creature, body, scenario, gait, duration, dt, seed, set)
+    return resolve_case(a["creature"], a["body"], a["scenario"], a["gait"], duration=a["duration"], dt=a["dt"],
+                        seed=a["seed"], overrides=override_items(a["set"], **overrides))
 
 
-def run(creature: str, body: str, scenario: str, gait: str | None = None, duration: float | None = None,
-        dt: float | None = None, seed: int | None = 0, controller: Any = None, store: str | os.PathLike | None = None,
-        *, set: Mapping[str, Any] | None = None, keep_nodes: bool = False, **overrides: Any) -> Result:
+# --------------------------------------------------------------------------- argument checks
+# The API takes what the command line's flags take, typed: each wrong type is an InputError naming the
+# argument and what is allowed, before anything is resolved or run (a number where a name goes would
+# otherwise end in an AttributeError deep in the resolver).
+
+def _got(value: Any) -> str:
+    """``got 123 (int)``: the value (cut short) and its type, for a message."""
+    shown = repr(value)
+    return f"got {shown if len(shown) <= 60 else shown[:57] + '...'} ({type(value).__name__})"
+
+
+def _file_or_name(value: Any, arg: str) -> str:
+    """A creature or scenario: a name, or a ``.toml`` path as a str or ``os.PathLike`` (``pathlib.Path``)."""
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if isinstance(value, bytes):
+        value = os.fsdecode(value)
+    if not isinstance(value, str):
+        raise InputError(arg, None, f"{_got(value)}; give a name (a str) or a .toml path (a str or "
+                                    "pathlib.Path)")
+    return value
+
+
+def _name(value: Any, arg: str, optional: bool = False) -> str | None:
+    """A body model or gait: a name (a str); None where the argument has a default."""
+    if value is None and optional:
+        return None
+    if not isinstance(value, str):
+        allowed = "a name (a str)" + (" or None for the default" if optional else "")
+        raise InputError(arg, None, f"{_got(value)}; give {allowed}")
+    return value
+
+
+def _real(value: Any, arg: str, what: str) -> float | None:
+    """A number (int, float, numpy scalar; not a bool) as a float, or None."""
+    import numbers
+
+    if value is None:
+        return None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise InputError(arg, None, f"{_got(value)}; give {what} (a number) or None")
+    return float(value)
+
+
+def _whole(value: Any, arg: str, what: str) -> int | None:
+    """A whole number (int, numpy integer; not a bool or a float) as an int, or None."""
+    import numbers
+
+    if value is None:
+        return None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise InputError(arg, None, f"{_got(value)}; give {what} (a whole number) or None")
+    return int(value)
+
+
+def _flag(value: Any, arg: str) -> bool:
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputError(arg, None, f"{_got(value)}; give True or False")
+    return bool(value)
+
+
+def _checked_case_arguments(creature, body, scenario, gait, duration, dt, seed, set) -> dict[str, Any]:
+    if set is not None and not isinstance(set, Mapping):
+        raise InputError("set", None, f"{_got(set)}; give a dict of dotted keys and values, e.g. "
+                                      "set={\"friction.mu_transverse\": 0.2}")
+    return {"creature": _file_or_name(creature, "creature"), "body": _name(body, "body"),
+            "scenario": _file_or_name(scenario, "scenario"), "gait": _name(gait, "gait", optional=True),
+            "duration": _real(duration, "duration", "a duration in seconds"),
+            "dt": _real(dt, "dt", "a time step in seconds"), "seed": _whole(seed, "seed", "a seed"), "set": set}
+
+
+def _checked_store(store: Any):
+    """``store``: None, or a path (str or ``os.PathLike``) that ``check_store`` lets through: absent, empty or
+    this suite's store, writable, not locked, not damaged; checked before the run, as ``run --store``."""
+    if store is None:
+        return None
+    if isinstance(store, os.PathLike):
+        store = os.fspath(store)
+    if isinstance(store, bytes):
+        store = os.fsdecode(store)
+    if not isinstance(store, str):
+        raise InputError("store", None, f"{_got(store)}; give a path to a SQLite results file (a str or "
+                                        "pathlib.Path) or None")
+    if not store.strip():
+        raise InputError("store", None, "empty path; give a path to a SQLite results file, or None not to store")
+    from .harness.store import check_store
+
+    return check_store(store, "store")
+
+
+def _check_budget(case: Case, source: str, force: bool, memory_budget: Any, max_steps: Any,
+                  keep_nodes: bool) -> None:
+    """The command line's resource budget (``--max-steps``, ``--memory-budget``, ``--force``), as keywords."""
+    from .core.feasibility import check_budget
+
+    force = _flag(force, "force")
+    gb = _real(memory_budget, "memory_budget", "a memory budget in GB")
+    steps = _real(max_steps, "max_steps", "a number of steps")
+    if gb is not None and not (math.isfinite(gb) and gb > 0):
+        raise InputError("memory_budget", None, f"{memory_budget} is out of range; must be a number of GB > 0")
+    if steps is not None and not (math.isfinite(steps) and steps >= 1):
+        raise InputError("max_steps", None, f"{max_steps} is out of range; must be a number >= 1")
+    if force:
+        n = case.duration / case.dt
+        if not math.isfinite(n) or n > 2 ** 62:
+            raise InputError(source, None, f"duration {case.duration:g} s / dt {case.dt:g} s: too many steps to "
+                                           "count, even with force=True")
+        return
+    try:
+        check_budget(case, source, None if gb is None else gb * 1e9, steps, keep_nodes)
+    except InputError as exc:  # the same refusal, in the API's words
+        msg = (exc.message.replace("(--max-steps)", "(max_steps=)").replace("(--memory-budget)", "(memory_budget=)")
+               .replace("pass --force", "pass force=True"))
+        raise InputError(exc.source, exc.key, msg) from None
+
+
+def run(creature: str | os.PathLike, body: str, scenario: str | os.PathLike, gait: str | None = None,
+        duration: float | None = None, dt: float | None = None, seed: int | None = 0, controller: Any = None,
+        store: str | os.PathLike | None = None, *, set: Mapping[str, Any] | None = None, keep_nodes: bool = False,
+        force: bool = False, memory_budget: float | None = None, max_steps: float | None = None,
+        **overrides: Any) -> Result:
     """Run one case and return its :class:`Result`.
 
     ``creature``, ``scenario``: a name (``models/NAME.toml``, ``scenarios/NAME.toml``) or a ``.toml`` path;
@@ -211,30 +331,53 @@ def run(creature: str, body: str, scenario: str, gait: str | None = None, durati
     ``controller``: handed to ``run_case`` to drive the body instead of the gait's own controller.
     ``store``: a results database to record the run in (as ``command = 'api'``); default: not stored.
     ``keep_nodes``: also record every node position (``result.series.nodes``).
+    ``max_steps``, ``memory_budget`` [GB], ``force``: the resource budget, as ``--max-steps``,
+    ``--memory-budget`` and ``--force``: by default a case over 1e9 steps or half the memory is refused.
 
-    Raises :class:`InputError` for bad input; a failure during the run is status ``error`` with
-    ``result.message`` and ``result.traceback``.
+    Raises :class:`InputError` for bad input, before anything runs: a wrong type (``run(123)``, a list
+    as ``body``), a bad name or value, a case over the budget, a ``store`` that is not this suite's
+    results store (another program's database, a damaged or locked one, a directory, a read-only or
+    full file system).  A failure during the run is status ``error`` with ``result.message`` and
+    ``result.traceback``.  When ``store`` fails after the run (the disk filled, the file was replaced),
+    the result is still returned, with ``run_id`` None and ``unstored`` saying why and naming the JSON
+    file in ``unsaved/`` beside the store that keeps it; a ``RuntimeWarning`` says the same.
     """
     from .harness.runner import run_case
 
     case = resolve(creature, body, scenario, gait, duration, dt, seed, set, **overrides)
+    keep_nodes = _flag(keep_nodes, "keep_nodes")
+    _check_budget(case, "run", force, memory_budget, max_steps, keep_nodes)
+    store_path = _checked_store(store)
     kwargs: dict[str, Any] = {"keep_nodes": keep_nodes}
     if controller is not None:
         kwargs["controller"] = controller
     raw = run_case(case, **kwargs)
-    run_id = None
-    if store is not None:
-        from .harness.store import record_run
+    if store_path is None:
+        return Result(raw)
+    return _stored(raw, store_path)
 
-        run_id = record_run(store, raw, command="api")
-    return Result(raw, run_id)
+
+def _stored(raw, store: Path) -> Result:
+    """``raw`` recorded in ``store``; when the insert fails after the run, the result kept in memory and in a
+    fallback file (``unsaved/`` beside the store, else the temporary folder), as the command line keeps it."""
+    import warnings
+
+    from .harness.store import UnstoredError, record_run, store_or_keep
+
+    try:
+        return Result(raw, store_or_keep(store, "run", lambda: record_run(store, raw, command="api"),
+                                         raw.to_json_dict))
+    except UnstoredError as exc:
+        warnings.warn(str(exc), RuntimeWarning, stacklevel=3)
+        return Result(raw, None, str(exc))
 
 
 # --------------------------------------------------------------------------- matrices
 
 def run_matrix(file_or_name: str | os.PathLike, out: str | os.PathLike | None = None, workers: int | None = None, *,
                executor: str = "local", scheduler: str | None = None, resume: bool = False,
-               timeout_per_case: float | None = None, report: bool = False, progress: bool = False):
+               timeout_per_case: float | None = None, report: bool = False, progress: bool = False,
+               force: bool = False, memory_budget: float | None = None, max_steps: float | None = None):
     """Run a scenario matrix (a ``.toml`` path or a name in ``scenarios/matrix/``); return :func:`load_results`
     of its output directory.
 
@@ -242,29 +385,44 @@ def run_matrix(file_or_name: str | os.PathLike, out: str | os.PathLike | None = 
     ``series/``, as ``bench-myriapoda matrix FILE --out DIR`` writes them; ``report=True`` also writes
     ``index.html`` and ``summary.md``.  ``executor``: ``local`` (a process pool of ``workers``) or
     ``dask`` (``scheduler`` address, default a LocalCluster); ``resume`` runs only the cases not yet
-    stored; ``timeout_per_case`` [s]; ``progress``: a progress bar on stderr.
+    stored; ``timeout_per_case`` [s], any finite number > 0 (None: no limit); ``progress``: a progress bar
+    on stderr.  ``max_steps``, ``memory_budget`` [GB], ``force``: each case's resource budget, as
+    :func:`run`'s.
+
+    Raises :class:`InputError` before anything runs or is written for a wrong type (``workers="2"``,
+    ``workers=1.5``), a bad matrix file, a case over the budget, or an ``out`` that cannot take the results:
+    ``""``, the file-system root, a file, a read-only folder, a ``results.sqlite`` there that is not this
+    suite's store.
     """
     from .harness.executors import EXECUTORS, run_matrix as run_cases
-    from .harness.matrix import expand_matrix, locate_matrix, write_matrix_manifest
+    from .harness.matrix import (check_matrix_outputs, check_timeout_per_case, check_workers, expand_matrix,
+                                 locate_matrix, write_matrix_manifest)
     from .harness.progress import MatrixProgress
 
-    if workers is not None and workers < 1:
-        raise InputError("workers", None, f"{workers} is out of range; must be >= 1")
-    if executor not in EXECUTORS:
+    file_or_name = _file_or_name(file_or_name, "file_or_name")
+    workers = check_workers(workers, "workers")
+    if not isinstance(executor, str) or executor not in EXECUTORS:
         raise InputError("executor", None, f"{executor!r} is not allowed; choose one of {', '.join(EXECUTORS)}")
-    if timeout_per_case is not None and not timeout_per_case > 0:
-        raise InputError("timeout_per_case", None, f"{timeout_per_case} is out of range; must be > 0")
+    timeout_per_case = check_timeout_per_case(timeout_per_case, "timeout_per_case")
+    resume, report, progress = _flag(resume, "resume"), _flag(report, "report"), _flag(progress, "progress")
+    if scheduler is not None and not isinstance(scheduler, str):
+        raise InputError("scheduler", None, f"{_got(scheduler)}; give an address such as 'tcp://host:8786' or "
+                                            "None")
+    if out is not None:
+        out = _file_or_name(out, "out")
+        if not out.strip():
+            raise InputError("out", None, "empty path; give a folder, or None for reports/matrix/NAME")
     if executor == "dask":
         try:
             import dask.distributed  # noqa: F401
         except ImportError:
             raise InputError("executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
-    exp = expand_matrix(locate_matrix(str(file_or_name)))
-    out = Path(out) if out is not None else Path("reports") / "matrix" / exp.name
-    if out.exists() and not out.is_dir():
-        raise InputError("out", None, f"{out} exists and is not a directory")
+    exp = expand_matrix(locate_matrix(file_or_name))
+    out = check_matrix_outputs(out if out is not None else Path("reports") / "matrix" / exp.name, "out", report)
     if not exp.cases:
         raise InputError(str(exp.path), None, "no case left to run after exclusions and unsupported combinations")
+    for m in exp.cases:  # the command line's budget, each case (its body's own limits make an error row, as there)
+        _check_budget(m.case, f"{exp.path}: case {m.label}", force, memory_budget, max_steps, False)
     write_matrix_manifest(out, exp)
     labels = {m.case.case_hash(): m.label for m in exp.cases}
     bar = MatrixProgress(progress, len(exp.cases), label=f"matrix {exp.name}")
@@ -368,15 +526,97 @@ def _run_kinds(runs, flat: list[dict[str, Any]], cases: list[dict[str, Any]], ma
         else:
             out.append("sweep" if len(by_group.get(k, ())) > 1 else "headline")
     return out
+# --------------------------------------------------------------------------- reading what a matrix or a store holds
+# A matrix directory or a store may have been damaged or written by something else: each part is checked for
+# what load_results uses of it, and anything else is one InputError naming the file (and the run), not a
+# TypeError or RecursionError from deep in pandas.
+
+MAX_MANIFEST_BYTES = 500_000_000  # 20,000 cases (the matrix limit) of a few kB each fit many times over
+
+
+def _loads(text: str | bytes, where: str, what: str, key: str | None = None) -> Any:
+    """``json.loads`` with every way it can fail (bad JSON, nesting deeper than the interpreter's stack,
+    bytes that are not UTF-8) as one InputError naming ``where``."""
+    try:
+        return json.loads(text)
+    except RecursionError:
+        raise InputError(where, key, f"{what} is nested too deeply to be one this suite wrote") from None
+    except (ValueError, TypeError) as exc:
+        raise InputError(where, key, f"{what} is not JSON ({exc})") from None
+
+
+def _read_manifest(path: Path) -> dict[str, Any]:
+    """``matrix.json``: an object whose ``cases`` maps case hashes to ``{"axes": {...}}`` objects, with
+    ``grid_keys`` a list of str and ``name`` a str (as ``write_matrix_manifest`` writes them)."""
+    where = str(path)
+    if not path.is_file():
+        raise InputError(where, None, "not a regular file; a matrix directory's matrix.json is a file")
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_MANIFEST_BYTES + 1)
+    except OSError as exc:
+        raise InputError(where, None, f"cannot read ({exc.strerror or exc})") from None
+    if len(raw) > MAX_MANIFEST_BYTES:
+        raise InputError(where, None, f"larger than {MAX_MANIFEST_BYTES:,} bytes; not a matrix manifest")
+    doc = _loads(raw, where, "unreadable matrix manifest: the file")
+    if not isinstance(doc, dict):
+        raise InputError(where, None, f"unreadable matrix manifest: expected a JSON object, got {type(doc).__name__}")
+    cases = doc.get("cases")
+    if not isinstance(cases, dict):
+        raise InputError(where, "cases", f"unreadable matrix manifest: expected an object of case hash -> case, got "
+                                         f"{type(cases).__name__}")
+    for h, c in cases.items():
+        if not isinstance(c, dict) or not isinstance(c.get("axes", {}), dict):
+            raise InputError(where, f"cases.{h}", "unreadable matrix manifest: a case is an object with an "
+                                                  "\"axes\" object")
+    keys = doc.get("grid_keys", [])
+    if not isinstance(keys, list) or not all(isinstance(k, str) for k in keys):
+        raise InputError(where, "grid_keys", "unreadable matrix manifest: expected a list of dotted keys (str)")
+    if not isinstance(doc.get("name"), (str, type(None))):
+        raise InputError(where, "name", f"unreadable matrix manifest: expected a str, got {type(doc['name']).__name__}")
+    return doc
+
+
+def _row_json(store: Path, r, column: str) -> dict[str, Any]:
+    """Column ``column`` of run row ``r``, a JSON object; an InputError naming the store and run otherwise."""
+    text = r[column] if column in r and r[column] is not None else "{}"
+    where, key = str(store), f"run {r.id}: {column}"
+    if not isinstance(text, str):
+        raise InputError(where, key, f"expected JSON text, got {type(text).__name__}")
+    value = _loads(text, where, "the value", key)
+    if not isinstance(value, dict):
+        raise InputError(where, key, f"expected a JSON object, got {type(value).__name__}")
+    return value
+
+
+def _check_row_case(store: Path, r, case: dict[str, Any]) -> None:
+    """A row's resolved case has what load_results reads: each axis a table with a name, seed, dt, duration."""
+    where = str(store)
+    for axis in AXES[:4]:
+        if not isinstance(case.get(axis), dict) or "name" not in case[axis]:
+            raise InputError(where, f"run {r.id}: case_json", f"has no {axis} table with a name; not a case this "
+                                                              "suite stored")
+    for k in ("seed", "dt", "duration"):
+        if k not in case:
+            raise InputError(where, f"run {r.id}: case_json", f"has no {k}; not a case this suite stored")
 
 
 def _read_runs(store: Path):
     from .harness.store import StoreReadError, read_runs
 
     try:
-        return read_runs(store)  # read-only: reading never creates a file
+        runs = read_runs(store)  # read-only: reading never creates a file
     except StoreReadError as exc:
         raise InputError(str(store), None, f"not a bench-myriapoda results store ({exc})") from None
+    missing = [c for c in ("id", "case_hash", "status", "message", "case_json", "metrics_json", "timings_json",
+                           "git_commit", "timestamp") if c not in runs.columns]
+    if missing:
+        raise InputError(str(store), None, f"not a bench-myriapoda results store (its runs table has no "
+                                           f"{', '.join(missing)})")
+    for column, default in (("command", "run"), ("labels_json", "{}"), ("matrix", None)):  # a store of an
+        if column not in runs.columns:                                                   # older release
+            runs[column] = default
+    return runs
 
 
 def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, ...] = ()):
@@ -407,17 +647,15 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
     """
     import pandas as pd
 
-    p = Path(store_or_dir)
+    p = Path(_file_or_name(store_or_dir, "store_or_dir"))
+    if isinstance(keys, str) or not isinstance(keys, (list, tuple)) or not all(isinstance(k, str) for k in keys):
+        raise InputError("keys", None, f"{keys!r}: give a list of dotted configuration keys (str)")
     manifest = None
     if p.is_dir():
         from .harness.matrix import MANIFEST
 
-        if (p / MANIFEST).is_file():
-            try:
-                manifest = json.loads((p / MANIFEST).read_text())
-                manifest["cases"]
-            except (ValueError, KeyError) as exc:
-                raise InputError(str(p / MANIFEST), None, f"unreadable matrix manifest: {exc}") from None
+        if os.path.lexists(p / MANIFEST):
+            manifest = _read_manifest(p / MANIFEST)
         p = p / "results.sqlite"
         if not p.is_file():
             raise InputError(str(store_or_dir), None, "no results.sqlite in this directory; give a results store "
@@ -430,8 +668,10 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
     if manifest is not None:
         runs = runs[(runs.command == "matrix") & (runs.matrix == manifest.get("name"))]
         runs = runs.drop_duplicates("case_hash", keep="last")
-        runs = runs[runs.case_hash.isin(manifest["cases"])]
-    cases = [json.loads(c) for c in runs.case_json]
+        runs = runs[runs.case_hash.isin(list(manifest["cases"]))]
+    cases = [_row_json(p, r, "case_json") for _, r in runs.iterrows()]
+    for (_, r), case in zip(runs.iterrows(), cases):
+        _check_row_case(p, r, case)
     flat = [_flatten_case(c) for c in cases]
     if manifest is not None:
         swept = list(manifest.get("grid_keys", []))
@@ -448,7 +688,8 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
         axes = {"creature": case["creature"]["name"], "body": case["body"]["name"], "gait": case["gait"]["name"],
                 "scenario": case["scenario"]["name"], "seed": case["seed"]}
         if manifest is not None:  # the axis values as the matrix names them (a .toml path, not its stem)
-            axes.update({k: v for k, v in manifest["cases"][r.case_hash]["axes"].items() if k in AXES and k != "seed"})
+            axes.update({k: v for k, v in manifest["cases"][r.case_hash].get("axes", {}).items()
+                         if k in AXES and k != "seed"})
             axes["seed"] = case["seed"]
         row = {"run_id": int(r.id), "case_hash": r.case_hash, **axes, "dt": case["dt"]}
         for k in swept + extra:  # a key this run's body model lacks (a mixed-body sweep): an empty cell
@@ -456,12 +697,12 @@ def load_results(store_or_dir: str | os.PathLike, keys: list[str] | tuple[str, .
             row[k] = list(v) if isinstance(v, tuple) else (np.nan if v is None else v)
         row.update({"duration": case["duration"], "status": r.status, "run_kind": kind, "message": r.message or "",
                     "command": r.command, "matrix": r.matrix, "git_commit": r.git_commit, "timestamp": r.timestamp})
-        timings = json.loads(r.timings_json)
+        timings = _row_json(p, r, "timings_json")
         for k in ("steps", "steps_per_s", "realtime_factor", "compile_s", "wall_s"):
             row[k] = np.nan if timings.get(k) is None else timings[k]
-        for k, v in json.loads(r.metrics_json).items():
+        for k, v in _row_json(p, r, "metrics_json").items():
             row[k if k not in row else f"metric.{k}"] = np.nan if v is None else v
-        for k, v in json.loads(r.labels_json or "{}").items():
+        for k, v in _row_json(p, r, "labels_json").items():
             row[f"{k}_label"] = v
         rows.append(row)
     if not rows:

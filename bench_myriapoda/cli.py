@@ -357,6 +357,9 @@ def cmd_run(args) -> int:
         raise InputError("--plot-gait", None, f"{args.plot_gait!r}: the file name must end in .png")
     _check_run_outputs(args)
     _check_frame_outputs(args)
+    for flag in ("--plot-gait", "--animate"):
+        if getattr(args, flag[2:].replace("-", "_")):
+            _check_drawing(flag)
     case = _resolve(args)
     if args.plot_gait and not case.creature.legs_per_segment:
         raise InputError("--plot-gait", None, f"creature {case.creature.name!r} has no legs: no gait diagram")
@@ -367,35 +370,45 @@ def cmd_run(args) -> int:
                       total_s=case.duration, dt=case.dt)
     result = run_case(case, progress=bar.update, keep_nodes=bool(args.record), on_sample=frames, world=world)
     bar.close()
-    unstored = None  # from here on a failed write keeps the result (stored elsewhere, printed) and says so
+    # From here on nothing may raise before the result is printed: a failed write keeps the result (stored
+    # elsewhere, printed) and says so in a line; the exit code is then 1.
+    failed: list[str] = []  # one line each: the store, --record, --plot-gait
     run_id = None
     if not args.no_store:
         store = args.store or DEFAULT_STORE
         run_id, unstored = _store_or_keep(store, "run", lambda: record_run(store, result, command="run"),
                                           result.to_json_dict)
+        failed += [unstored] if unstored else []
     if args.record and result.series is not None:
-        extra = {}
-        if "leg_timeline" in result.extra:
-            extra = dict(zip(("leg_t", "leg_states", "leg_tips"), result.extra["leg_timeline"]))
-        try:
+        def record():
+            extra = {}
+            if "leg_timeline" in result.extra:
+                extra = dict(zip(("leg_t", "leg_states", "leg_tips"), result.extra["leg_timeline"]))
             save_npz(Path(args.record), result.series, case.to_dict(), extra)
-        except OSError as exc:
-            unstored = unstored or f"could not write --record {args.record} ({exc.strerror or exc})"
+        failed += filter(None, [_write_after_the_run("--record", args.record, record)])
     if args.plot_gait and "leg_timeline" in result.extra:
-        from .report.gait_diagram import plot_gait_diagram
-        t, states, _ = result.extra["leg_timeline"]
-        if len(t):
-            plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
-                              title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
-    written = _write_frame_outputs(args, case, frames, anim_stride, world)
+        def plot():
+            from .report.gait_diagram import plot_gait_diagram
+            t, states, _ = result.extra["leg_timeline"]
+            if len(t):
+                plot_gait_diagram(t, states, Path(args.plot_gait), last_seconds=1.0,
+                                  title=f"{case.creature.name} / {case.body.name} / {case.scenario.name}")
+        failed += filter(None, [_write_after_the_run("--plot-gait", args.plot_gait, plot)])
+    try:
+        written = _write_frame_outputs(args, case, frames, anim_stride, world)
+    except Exception as exc:  # anything _write_frame_outputs does not expect: the result is still printed
+        print(f"bench-myriapoda: could not write the animation or frames ({type(exc).__name__}: {exc})",
+              file=sys.stderr)
+        written = False
     if args.json:
         print(json.dumps(result.to_json_dict()))
     else:
         print_result_table(result)
         if run_id is not None:  # where the result went (--json keeps stdout to the one object)
             print(f"stored in {args.store or DEFAULT_STORE} (run id {run_id})")
-    if unstored:
-        print(f"bench-myriapoda: error: {unstored}", file=sys.stderr)
+    for line in failed:
+        print(f"bench-myriapoda: error: {line}", file=sys.stderr)
+    if failed:
         return EXIT_FAIL
     if result.status == "error":
         print(f"bench-myriapoda: run failed: {result.message}", file=sys.stderr)
@@ -408,6 +421,32 @@ def cmd_run(args) -> int:
                   "(metrics roll_max_deg, airborne_max_s)", file=sys.stderr)
         return EXIT_FAIL
     return EXIT_OK
+
+
+def _write_after_the_run(flag: str, path: str, write) -> str | None:
+    """``write()`` one output file of a finished run; None, or the line saying why it failed.  Any exception
+    is caught: after the simulation a traceback would lose the computed result, which is printed and
+    stored whatever happened to this file."""
+    try:
+        write()
+        return None
+    except Exception as exc:
+        why = exc.strerror if isinstance(exc, OSError) and exc.strerror else f"{type(exc).__name__}: {exc}"
+        return f"could not write {flag} {path} ({why})"
+
+
+def _check_drawing(flag: str) -> None:
+    """matplotlib can be imported before a run that draws (``--plot-gait``, ``--animate``): an ``MPLBACKEND``
+    naming no backend makes its import raise, which after the run would have lost the result."""
+    try:
+        import matplotlib  # noqa: F401
+    except ValueError as exc:
+        if "backend" in str(exc).lower():
+            raise InputError("MPLBACKEND", None, f"{os.environ.get('MPLBACKEND', '')!r} is not a matplotlib backend "
+                                                 f"({flag} draws with matplotlib); unset it or set it to agg") from None
+        raise InputError(flag, None, f"matplotlib cannot be imported ({exc})") from None
+    except ImportError as exc:
+        raise InputError(flag, None, f"matplotlib cannot be imported ({exc})") from None
 
 
 def _check_frame_outputs(args) -> None:
@@ -753,19 +792,28 @@ def cmd_matrix(args) -> int:
 
 class _sigterm_as_interrupt:
     """Inside the block SIGTERM raises KeyboardInterrupt (as SIGINT does), so that a terminated matrix
-    stops its workers, keeps what it stored and prints "interrupted"; the old handler is restored after."""
+    stops its workers, keeps what it stored and prints "interrupted"; the old handler is restored after.
+    ``main`` holds it around every command: a terminated ``run`` or matrix start-up ends with 130, as
+    Ctrl-C does, not -15.  A process forked inside the block (the report's figure pool) dies of SIGTERM
+    as it would without the handler."""
 
     def __enter__(self):
         import signal
 
+        self.pid = os.getpid()
         try:
             self.saved = signal.signal(signal.SIGTERM, self._raise)
         except ValueError:  # not the main thread: leave SIGTERM as it is
             self.saved = None
         return self
 
-    @staticmethod
-    def _raise(signum, frame):
+    def _raise(self, signum, frame):
+        import signal
+
+        if os.getpid() != self.pid:  # a forked child inherited the handler: end as SIGTERM ends it
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
+            os.kill(os.getpid(), signal.SIGTERM)
+            return
         raise KeyboardInterrupt
 
     def __exit__(self, *exc):
@@ -933,19 +981,11 @@ def _check_matrix_flags(args) -> None:
 
 
 def _check_matrix_outputs(args, out: Path, store: Path) -> None:
-    """``matrix``: DIR can be written, its store is opened and schema-checked, its files are files."""
-    from .harness.store import check_store, check_writable_dir
+    """``matrix``: DIR can be written, its store is opened and schema-checked, its files are files
+    (``harness.matrix.check_matrix_outputs``, which the API's ``run_matrix`` uses too)."""
+    from .harness.matrix import check_matrix_outputs
 
-    check_writable_dir(out, "--out")
-    check_store(store, "--out")
-    for name in ("matrix.json", "results.csv", "results.parquet"):
-        if (out / name).exists() and not (out / name).is_file():
-            raise InputError("--out", None, f"{out / name} exists and is not a file")
-    if (out / "series").exists() and not (out / "series").is_dir():
-        raise InputError("--out", None, f"{out / 'series'} exists and is not a directory")
-    if args.report:
-        from .report.build import check_report_outputs
-        check_report_outputs(out)
+    check_matrix_outputs(out, "--out", report=args.report)
 def cmd_peers(args) -> int:
     """Time the peers (MuJoCo flex, PyElastica's snake) and ours in one sitting; store and print the ratios.
 
@@ -1062,18 +1102,20 @@ def cmd_validate(args) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
-        from .core.numba_env import check_numba_env
-        check_numba_env()  # before numba is imported: it reads these variables once, at import
-        if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
-            raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
-        parser = build_parser()
-        args = parser.parse_args(argv or ["quick"])
-        if args.command is None:
-            args = parser.parse_args(["quick", *argv])
-        code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
-                "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
-                "peers": cmd_peers, "validate": cmd_validate, "scorecard": cmd_scorecard}[args.command](args)
-        sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
+        with _sigterm_as_interrupt():  # from the start: building the parser imports the body models (~1.3 s)
+            from .core.numba_env import check_numba_env
+            check_numba_env()  # before numba is imported: it reads these variables once, at import
+            if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
+                raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
+            parser = build_parser()
+            args = parser.parse_args(argv or ["quick"])
+            if args.command is None:
+                args = parser.parse_args(["quick", *argv])
+            _print_any_file_name()
+            code = {"list": cmd_list, "run": cmd_run, "quick": cmd_quick, "stable-dt": cmd_stable_dt,
+                    "matrix": cmd_matrix, "report": cmd_report, "regress": cmd_regress, "keys": cmd_keys,
+                    "peers": cmd_peers, "validate": cmd_validate, "scorecard": cmd_scorecard}[args.command](args)
+            sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
         return code
     except BrokenPipeError:
         return _closed_pipe()
@@ -1083,6 +1125,33 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("bench-myriapoda: interrupted", file=sys.stderr)
         return 130
+
+
+PRINT_ERRORS = "bench_myriapoda_file_names"
+
+
+def _print_any_file_name() -> None:
+    """Let stdout print a file name that is not UTF-8 (``--store $'\\xff.sqlite'``, held by Python as a lone
+    surrogate): as its own bytes, as ``ls`` would, and any other unencodable character as a backslash
+    escape.  With strict UTF-8 the line naming the store raised UnicodeEncodeError after the run."""
+    import codecs
+
+    def write_bytes_or_escape(exc):
+        try:
+            return codecs.lookup_error("surrogateescape")(exc)
+        except UnicodeError:
+            return codecs.lookup_error("backslashreplace")(exc)
+
+    try:
+        codecs.lookup_error(PRINT_ERRORS)
+    except LookupError:
+        codecs.register_error(PRINT_ERRORS, write_bytes_or_escape)
+    stream = sys.stdout
+    if getattr(stream, "errors", None) == "strict" and hasattr(stream, "reconfigure"):
+        try:
+            stream.reconfigure(errors=PRINT_ERRORS)
+        except (ValueError, OSError):  # a stream that cannot change now: leave it
+            pass
 
 
 def _closed_pipe() -> int:

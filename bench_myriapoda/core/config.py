@@ -196,7 +196,7 @@ def scenario_paths() -> dict[str, Path]:
 
 
 def _locate(name: str, kind: str, flag: str, known: Mapping[str, Path]) -> Path:
-    if name.endswith(".toml"):
+    if name.lower().endswith(".toml"):  # a file of the user's (also FILE.TOML)
         return Path(name)
     if name not in known:
         raise InputError(flag, None, f"unknown {kind} {name!r}{did_you_mean(name, known)}; choose one of "

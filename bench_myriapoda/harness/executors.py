@@ -60,6 +60,7 @@ from .store import (STORE_WRITE_ERRORS, UnstoredError, keep_unstored, matrix_cas
 
 EXECUTORS = ("local", "dask")
 STARTUP_GRACE_S = 120.0  # a fresh worker's imports before its first case do not count against the timeout
+MAX_WAIT_S = 3600.0  # the longest single wait for a worker's message; longer timeouts wait again
 
 
 def slim_result(result: RunResult) -> RunResult:
@@ -480,7 +481,9 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
                 continue
             wait_s = None
             if timeout is not None:
-                wait_s = max(0.0, min(s.deadline(timeout) for s in busy) - time.monotonic())
+                # at most an hour per wait (the loop waits again): a timeout of 3e6 s or 1e300 s is a deadline
+                # select/poll cannot take in one call (OverflowError above about 2.1e6 s)
+                wait_s = min(MAX_WAIT_S, max(0.0, min(s.deadline(timeout) for s in busy) - time.monotonic()))
             mp_wait([s.conn for s in busy] + [s.proc.sentinel for s in busy], timeout=wait_s)
             for i, s in enumerate(slots):
                 if s.job is None:

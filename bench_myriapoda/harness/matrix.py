@@ -120,7 +120,7 @@ def locate_matrix(name_or_path: str) -> Path:
     if not name_or_path.strip():
         raise InputError("matrix", None, "empty matrix name; give a .toml path or a name in scenarios/matrix/")
     p = check_path_text(name_or_path, "matrix")
-    if p.suffix == ".toml" or os.path.lexists(p):
+    if p.suffix.lower() == ".toml" or os.path.lexists(p):
         return p
     known = matrix_paths()
     if name_or_path not in known:
@@ -128,6 +128,66 @@ def locate_matrix(name_or_path: str) -> Path:
                                          f"give a .toml path or one of "
                                          f"{', '.join(sorted(known)) or '(none found)'}")
     return known[name_or_path]
+
+
+# --------------------------------------------------------------------------- how a matrix runs, where it writes
+# The same checks for ``bench-myriapoda matrix`` and the Python API's ``run_matrix``, before anything runs.
+
+MAX_WORKERS = 1024
+
+
+def check_workers(workers: Any, flag: str) -> int | None:
+    """``workers``: None (one per core) or a whole number 1 to ``MAX_WORKERS`` (a numpy integer too; not a
+    bool, a float such as 1.5 or a string such as "2")."""
+    import numbers
+
+    if workers is None:
+        return None
+    if isinstance(workers, bool) or not isinstance(workers, numbers.Integral):
+        raise InputError(flag, None, f"got {workers!r:.60} ({type(workers).__name__}); must be a whole number of "
+                                     f"worker processes, 1 to {MAX_WORKERS}, or None for one per core")
+    if not 1 <= int(workers) <= MAX_WORKERS:
+        raise InputError(flag, None, f"{workers} is out of range; must be 1 to {MAX_WORKERS}")
+    return int(workers)
+
+
+def check_timeout_per_case(timeout: Any, flag: str) -> float | None:
+    """``timeout``: None (no limit) or a finite number of seconds > 0.  Any finite size works (the pool
+    waits an hour at a time); infinity is refused, as on the command line: None is "no limit"."""
+    import numbers
+
+    if timeout is None:
+        return None
+    if isinstance(timeout, bool) or not isinstance(timeout, numbers.Real):
+        raise InputError(flag, None, f"got {timeout!r:.60} ({type(timeout).__name__}); must be a number of "
+                                     "seconds > 0, or None for no limit")
+    value = float(timeout)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(flag, None, f"{timeout} is out of range; must be a finite number of seconds > 0 (None for "
+                                     "no limit)")
+    return value
+
+
+def check_matrix_outputs(out: Path | str, flag: str, report: bool = False) -> Path:
+    """A matrix output folder that can take ``results.sqlite``, ``matrix.json``, ``results.csv`` and
+    ``series/`` (and with ``report`` the report's files): not the file-system root, not an empty path,
+    writable, its store absent or this suite's (``check_store``), each file a file.  Nothing is written."""
+    from .store import check_store, check_writable_dir
+
+    out = check_path_text(out, flag)
+    if out.exists() and not out.is_dir():
+        raise InputError(flag, None, f"{out} exists and is not a directory")
+    check_writable_dir(out, flag)
+    check_store(out / "results.sqlite", flag)
+    for name in ("matrix.json", "results.csv", "results.parquet"):
+        if (out / name).exists() and not (out / name).is_file():
+            raise InputError(flag, None, f"{out / name} exists and is not a file")
+    if (out / "series").exists() and not (out / "series").is_dir():
+        raise InputError(flag, None, f"{out / 'series'} exists and is not a directory")
+    if report:
+        from ..report.build import check_report_outputs
+        check_report_outputs(out)
+    return out
 
 
 def _check_list(src: str, key: str, value: Any, item_type: type | tuple) -> list:
@@ -214,7 +274,7 @@ def _check_block(src: str, prefix: str, table: Any, allowed: set[str],
     names = names or _axis_names()
     for key, known in names.items():
         for v in out.get(key, ()):
-            if v not in known and not (key in ("creatures", "scenarios") and v.endswith(".toml")):
+            if v not in known and not (key in ("creatures", "scenarios") and v.lower().endswith(".toml")):
                 raise InputError(src, f"{prefix}.{key}", f"unknown {AXIS_KEYS[key]} {v!r}{did_you_mean(v, known)}; "
                                                          f"choose one of {', '.join(known)}")
     return out
