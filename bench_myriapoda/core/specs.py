@@ -32,8 +32,8 @@ class BodySpec:
     """A body model backend.
 
     - ``config_cls``: frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
-    - ``factory``: ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case; a factory that
-      also takes a ``world`` keyword is given the run's world (``world.world.World``, built once by the runner).
+    - ``factory``: ``factory(case, world) -> Body`` (``core.protocols.Body``) for a resolved case in the run's
+      world (``world.world.World``, built once by the runner; a body builds no world of its own).
     - ``capabilities``: what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
     - ``default_dt``: ``default_dt(body_config) -> float``, the time step [s] when none is given.
     - ``footprint``: ``footprint(case) -> Footprint``, the memory estimate (``core.feasibility``).
@@ -55,7 +55,7 @@ class BodySpec:
     name: str
     description: str
     config_cls: type
-    factory: Callable[[Any], Any]
+    factory: Callable[[Any, Any], Any]
     capabilities: frozenset
     default_dt: Callable[[Any], float]
     footprint: Callable[[Any], Footprint]
@@ -69,8 +69,8 @@ class BodySpec:
 @dataclass(frozen=True)
 class GaitSpec:
     """A gait: what it needs from a body (``requires``), the controller that drives it
-    (``controller(case) -> Controller``, ``core.protocols.Controller``; a controller class that also takes a
-    ``world`` keyword is given the run's world, as a body factory) and the frozen dataclass of its
+    (``controller(case) -> Controller``, ``core.protocols.Controller``; with ``takes_world`` True,
+    ``controller(case, world=world)`` in the run's world, as a body factory) and the frozen dataclass of its
     ``[gaits.<name>]`` keys (``config_cls``, ``case.gait``).  A gait with keys of its own declares a
     subclass of ``GaitConfig`` next to its controller: the base's keys (period, wave, volume rule) are
     the ones the runner, the metrics and the bodies read of every gait."""
@@ -80,3 +80,4 @@ class GaitSpec:
     requires: frozenset
     controller: Callable[[Any], Any] | None = None
     config_cls: type = GaitConfig
+    takes_world: bool = False

@@ -3,18 +3,16 @@
 A gait that commands a body shape (``gait.curvature_amplitude``) needs the body's strain per unit
 of curvature x body length.  The body measures it itself (``bodies.curvature_calibration``, cached
 on disk); this module, which may know both bodies and gaits, decides when a controller needs it
-and builds the calibration body through the catalog's factory.
+and hands the calibration the catalog's factory and the run's world.
 """
 from __future__ import annotations
 
 import dataclasses
-import functools
 from typing import Any
 
 from ..bodies.curvature_calibration import lateral_gain
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
-from ..world.world import build_world, made_in
 
 
 def needs_curvature_gain(case) -> bool:
@@ -23,9 +21,12 @@ def needs_curvature_gain(case) -> bool:
     return case.gait.commands_curvature()
 
 
-def calibrated_body_info(body, case) -> dict[str, Any]:
+def calibrated_body_info(body, case, world) -> dict[str, Any]:
     """``body_info`` plus ``strain_per_curvature`` [-] and the body's ``shape_gain_p`` and
-    ``shape_harmonic_gain_per_cycle`` [-] (``BodySpec``) when the gait commands a curvature."""
+    ``shape_harmonic_gain_per_cycle`` [-] (``BodySpec``) when the gait commands a curvature.
+
+    ``world``: the run's (``world.world.World``); a calibration measures its body in that world less its
+    ground (``World.without_ground``, in ``bodies.curvature_calibration``), so it builds no world of its own."""
     info = body_info(body, case.dt)
     if needs_curvature_gain(case) and MUSCLES in body.capabilities:
         registry.load_all()
@@ -34,16 +35,8 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         # case run at a deliberately unstable dt (stable-dt searches, blow-up tests) still gets its gain
         # and blows up in its own run, where that is recorded as ``unstable``
         cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
-        info["strain_per_curvature"] = lateral_gain(functools.partial(_in_its_own_world, spec.factory), cal_case)
+        info["strain_per_curvature"] = lateral_gain(spec.factory, cal_case, world)
         info["shape_gain_p"] = float(spec.shape_gain_p)
         info["shape_harmonic_gain_per_cycle"] = float(spec.shape_harmonic_gain_per_cycle)
     return info
 
-
-def _in_its_own_world(factory, cal_case):
-    """The calibration body, made by the catalog's ``factory`` in the calibration case's world.
-
-    That world is legitimately not the run's: the calibration case (``curvature_calibration._calibration_case``)
-    has its own scenario (no ground, no gravity), so its world is built here, once
-    per calibration, through ``build_world`` from that explicit scenario -- not rebuilt inside the factory."""
-    return made_in(factory, cal_case, build_world(cal_case))

@@ -15,8 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..core.config import Case
-from ..world.world import build_world
-from .runner import run_case
+from .runner import run_case, run_world
 
 
 @dataclass
@@ -31,8 +30,8 @@ def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_flo
                    dt_ceiling: float | None = None,
                    progress: Callable[[float, str], None] | None = None, world=None) -> StableDtResult:
     """Bisect dt for ``case`` (its duration and everything else fixed).  ``world``: the case's
-    ``world.world.World`` (it does not depend on dt), built once here when None and shared by every trial."""
-    world = build_world(case) if world is None else world
+    ``world.world.World`` (it does not depend on dt), built once (``runner.run_world``) when None and shared by every trial."""
+    world = run_world(case, None, world)
     ceiling = dt_ceiling if dt_ceiling is not None else case.duration / 20.0
     trials: list[tuple[float, str, float]] = []
 

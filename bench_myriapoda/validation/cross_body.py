@@ -121,9 +121,9 @@ def hanging_bar_reference(case) -> tuple[float, float]:
     """
     import numpy as np
 
-    from ..core import registry
+    from ..harness.runner import build_body
 
-    body = registry.BODIES[case.body.name].factory(case)
+    body = build_body(case)
     cfg, cre, g = case.body, case.creature, case.scenario.gravity_m_s2
     E, nu = cfg.youngs_modulus_pa, cfg.poisson_ratio
     if case.body.name == "hybrid":

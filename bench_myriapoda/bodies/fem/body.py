@@ -30,7 +30,6 @@ from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
 from ..case_scalars import contact_scalars
 from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
@@ -167,7 +166,7 @@ class BodyFEM(NodeSegments):
     name = "fem"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: FEMConfig = case.body
         self.case = case
@@ -213,8 +212,8 @@ class BodyFEM(NodeSegments):
         self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
         self.tail_nodes = np.flatnonzero(nodes[:, 0] <= nodes[:, 0].min() + end_band)
 
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(BK.N_PHYS)
@@ -323,7 +322,7 @@ class BodyFEM(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_fem(case, world=None):
+def make_fem(case, world):
     """The FEM body; a creature with legs is built as one mesh of stiff segment blocks and soft links
     (``fem.myriapod``): legs attach to rigid segments (the creature's morphology; the leg controller
     itself is composed by the runner); world: the run's ``world.world.World``."""

@@ -65,7 +65,6 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from ...world.world import world_of
 from ..case_scalars import contact_scalars
 from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
@@ -322,7 +321,7 @@ class BodyFEMChain(LeggedSegments):
     """
 
     name = "fem"
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -367,8 +366,8 @@ class BodyFEMChain(LeggedSegments):
         self.att_nodes = np.flatnonzero(side).astype(np.int64)
         self.att_block = node_block[self.att_nodes].astype(np.int64)
         self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(N_PHYS)

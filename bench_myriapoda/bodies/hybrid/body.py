@@ -78,7 +78,6 @@ from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..fem.element_quality import ElementQuality
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
@@ -236,7 +235,7 @@ class BodyHybrid(SupportedSegments):
 
     name = "hybrid"
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: HybridConfig = case.body
         sc = case.scenario
@@ -286,8 +285,8 @@ class BodyHybrid(SupportedSegments):
         self.total_mass = m_rigid * lay.n_rigid + free_mass
 
         # ---- world placement, terrain, attached nodes on the boxes
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         place_box_chain(case, self.world, mesh.nodes, mesh.attached, mesh.rigid_centres, half, self.rigid, self.x,
@@ -537,7 +536,7 @@ class BodyHybrid(SupportedSegments):
         return float(self.acc[K.ACC_MAX_PEN])
 
 
-def make_hybrid(case, world=None):
+def make_hybrid(case, world):
     """The hybrid body, for every creature (legged or not: the runner composes the controller), in the run's
     world (``world.world.World``)."""
     return BodyHybrid(case, world)

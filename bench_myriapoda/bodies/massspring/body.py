@@ -20,7 +20,6 @@ from ...core.feasibility import lattice_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
 from ..case_scalars import contact_scalars
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
@@ -95,7 +94,7 @@ class BodyMassSpring(NodeSegments):
     name = "massspring"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: MassSpringConfig = case.body
         self.case = case
@@ -118,8 +117,8 @@ class BodyMassSpring(NodeSegments):
         self.seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
         self.seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
         self.seg_rest_offsets = csr_rest_offsets(lat.rest_nodes, self.seg_ptr, self.seg_nodes)
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
@@ -220,7 +219,7 @@ class BodyMassSpring(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_massspring(case, world=None):
+def make_massspring(case, world):
     """Miller's lattice; a creature with legs is built as rigid boxes joined by spring-cube links
     (``massspring.myriapod``): legs attach to rigid segments (the creature's morphology; the leg
     controller itself is composed by the runner); world: the run's ``world.world.World``."""

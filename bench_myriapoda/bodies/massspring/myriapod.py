@@ -45,7 +45,6 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
@@ -202,7 +201,7 @@ class BodyRigidSpringChain(LeggedSegments):
     """
 
     name = "massspring"
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -231,8 +230,8 @@ class BodyRigidSpringChain(LeggedSegments):
         self.segment_pitch_m = lay.pitch
         self.segment_half_extents = np.tile(half, (lay.n_rigid, 1))
 
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         self.x = np.zeros_like(mesh.nodes)
