@@ -101,7 +101,7 @@ def test_mesh_in_its_active_shape_feels_no_elastic_force():
                            s.Dm_inv_eff, s.coef)
     x = body.rest * np.array([1.2, 1 / np.sqrt(1.2), 1 / np.sqrt(1.2)])
     f = np.zeros_like(x)
-    FK.elastic_forces(x, s.tets, s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, f)
+    FK.elastic_forces(x, s.tets, s.Dm_inv_eff, s.coef, s.q_ws, s.F_work, s.H_work, f)
     scale = np.abs(s.mu).max() * s.vol.max() ** (2 / 3)
     assert np.abs(f).max() < 1e-10 * scale
 

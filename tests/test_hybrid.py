@@ -129,7 +129,7 @@ def reference_step(b: BodyHybrid):
     fem = FEMSystem(b.fem.X, b.fem.tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio, rho=cfg.density_kg_m3,
                     gamma=cfg.damping_gamma)
     fem.set_fixed(b.mesh.attached)
-    fem.x[:], fem.v[:], fem._q_ws[:] = b.x, b.v, b.fem._q_ws
+    fem.x[:], fem.v[:], fem.q_ws[:] = b.x, b.v, b.fem.q_ws
     x0 = b.x.copy()
     # (1) FEM step with the attached nodes prescribed (eq. 14), no terrain ...
     assert fem.advance(1, dt=dt, gravity=g).ok

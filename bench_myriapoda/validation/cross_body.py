@@ -106,7 +106,8 @@ def bar_elongation(s_mass, mass, bounds, ea, s_top: float, s_bottom: float, g: f
 
 
 def hanging_bar_reference(case) -> tuple[float, float]:
-    """(bar value [m], Young's modulus / oedometric modulus) of a hanging chain body (fem or hybrid).
+    """(bar value [m], Young's modulus / oedometric modulus) of a hanging chain body (one whose ``BodySpec``
+    declares its ``hanging_bar``: fem and hybrid).
 
     The bar value is ``bar_elongation`` of the body's own simulated masses (the hybrid: its boxes
     and its links' free nodes, whose share of a link's mass is (n - 2) / (n - 1) at n nodes per
@@ -121,24 +122,18 @@ def hanging_bar_reference(case) -> tuple[float, float]:
     """
     import numpy as np
 
+    from ..core import registry
     from ..harness.runner import build_body
 
-    body = build_body(case)
-    cfg, cre, g = case.body, case.creature, case.scenario.gravity_m_s2
+    registry.load_all()
+    spec = registry.BODIES[case.body.name]
+    if spec.hanging_bar is None:
+        raise ValueError(f"no hanging bar reference for body {case.body.name!r}: its BodySpec declares none")
+    cfg = case.body
+    g = case.scenario.gravity_m_s2
     E, nu = cfg.youngs_modulus_pa, cfg.poisson_ratio
-    if case.body.name == "hybrid":
-        lay = body.layout
-        n, P, l_head = lay.n_rigid, lay.pitch, lay.rigid_length
-        s_mass = np.concatenate([np.arange(n) * P + 0.5 * lay.rigid_length, -body.mesh.nodes[body.free, 0]])
-        mass = np.concatenate([body.rigid.mass, body.fem.mass[body.free]])
-        piece_ea = (math.inf, E * lay.link_height * lay.link_width)
-    elif case.body.name == "fem":
-        n, P, l_head = body.n_blocks, body.pitch, body.block_length
-        s_mass, mass = -body.rest[:, 0], body.fem.mass
-        a = cre.height_m * cre.width_m
-        piece_ea = (cfg.rigid_stiffness_factor * E * a, E * a)
-    else:
-        raise ValueError(f"no hanging bar reference for body {case.body.name!r} (fem and hybrid only)")
+    hb = spec.hanging_bar(build_body(case), case)  # the body's own geometry and masses
+    s_mass, mass, n, P, l_head, piece_ea = hb.s_mass, hb.mass, hb.n_segments, hb.pitch, hb.head_length, hb.piece_ea
     bounds = np.sort(np.concatenate([np.arange(n) * P, np.arange(n) * P + l_head, [n * P]]))[:2 * n]
     ea = np.array([piece_ea[k % 2] for k in range(2 * n - 1)])
     bar = bar_elongation(s_mass, mass, bounds, ea, 0.5 * l_head, (n - 1) * P + 0.5 * l_head, g)

@@ -399,8 +399,8 @@ class BodyFEMChain(LeggedSegments):
     def _chain_args(self) -> tuple:
         """``advance_chain``'s packs (the chain's arrays, the world)."""
         f, s = self.fem, self.solver
-        chain = (self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
-                           f._H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+        chain = (self.x, self.v, f.mass, f.tets, f.inc_ptr, f.inc_off, f.coef, f.q_ws, f.F_work,
+                           f.H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                            self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
                            self.support, self._f_work, self._b_work, self._cent, self._spine)
         return chain, (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
@@ -413,10 +413,10 @@ class BodyFEMChain(LeggedSegments):
         return BlockChainLegs(blocks, self._chain_args() + (self.acc,))
 
     def _state(self):
-        return [a.copy() for a in (self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc)]
+        return [a.copy() for a in (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc)]
 
     def _restore(self, saved) -> None:
-        for dst, src in zip((self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc), saved):
+        for dst, src in zip((self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc), saved):
             dst[...] = src
 
     def compile(self) -> None:

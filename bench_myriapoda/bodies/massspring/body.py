@@ -23,7 +23,8 @@ from ...core.specs import BodySpec, Footprint
 from ..case_scalars import contact_scalars
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
-from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
+from ..scene import LATTICE_SURFACE, Scene
+from .lattice import lattice_surface_faces
 from .. import step_status as S
 from ..segment_chain import chain_sizes, check_chain_segments, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
@@ -281,4 +282,12 @@ BACKEND = BodySpec(
     shape_gain_p=2.0,
     # its third-harmonic correction at gain 1 per cycle: the grid of issue 27 at 78.5 s passes on every ratio
     # (shape error 0.016-0.058; docs/explanation/shape-tracking.md)
-    shape_harmonic_gain_per_cycle=1.0)
+    shape_harmonic_gain_per_cycle=1.0,
+    # per-step wall [s] per size unit with warm kernels, unlegged / legged (harness.schedule): from the quick
+    # matrix on the development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs):
+    # the median over its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's
+    # summed case times (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker)
+    step_cost_s={False: 1.0e-6, True: 2.2e-5},
+    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
+    suite_scenes={"snake": ("massspring-snake", 50.0),  # Miller's 50-segment snake
+                  "centipede": ("massspring-centipede", 18.0)})

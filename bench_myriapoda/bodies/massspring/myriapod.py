@@ -56,7 +56,8 @@ from ..legged_chunk import register
 from ...core.protocols import Actuation, Observation
 from ..placement import place_box_chain
 from ..rigid import ContactSettings, RigidBoxes
-from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
+from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles
+from .lattice import lattice_surface_faces
 from ..segment_chain import CouplingScratch, LeggedSegments, SegmentChainLayout, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
