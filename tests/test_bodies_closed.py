@@ -71,10 +71,6 @@ KNOWN_NAMING: set[tuple[str, str]] = {
     ("validation/references.py", "import massspring"),
     ("validation/references.py", ".lattice"),
     ("validation/references.py", ".stiffness"),
-    # issue 42: the hanging comparison is of the two bodies that declare a hanging bar; it should pair the
-    # bodies whose specs declare one (and their hanging time steps) instead of naming them
-    ("validation/cross_body.py", "'fem'"),
-    ("validation/cross_body.py", "'hybrid'"),
     # issue 42: the work-precision quantities per body (the fem hanging worm, the lattice's resolution) should
     # be declared by the bodies
     ("validation/work_precision.py", "'fem'"),
@@ -162,7 +158,7 @@ def test_no_module_outside_a_body_names_a_body_model():
 
 def test_the_specs_declare_what_the_harness_and_validation_read():
     """What moved out of the harness and validation into the bodies' specs: the scheduler's per-step costs and
-    the throughput suite's scenes, and the hanging-bar reference's masses and pieces."""
+    the throughput suite's scenes, and the hanging comparison's bodies, masses, pieces and time steps."""
     from bench_myriapoda.core import registry
 
     registry.load_all()
@@ -172,3 +168,6 @@ def test_the_specs_declare_what_the_harness_and_validation_read():
         assert spec.suite_scenes and all(entry.startswith(f"{name}-") for entry, _ in spec.suite_scenes.values())
     assert registry.BODIES["fem"].hanging_bar is not None and registry.BODIES["hybrid"].hanging_bar is not None
     assert registry.BODIES["massspring"].hanging_bar is None
+    from bench_myriapoda.validation.cross_body import hanging_pair
+
+    assert hanging_pair() == ("fem", "hybrid")  # the hanging comparison's pair, found through the specs

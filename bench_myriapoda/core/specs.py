@@ -76,6 +76,7 @@ class BodySpec:
       suite's measured rate of this body with that creature, scaled to other sizes (``harness.schedule``).
     - ``hanging_bar``: ``hanging_bar(body, case) -> HangingBar``, the 1-D bar a built legged chain of this body
       is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
+      ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
     """
 
     name: str
@@ -93,6 +94,7 @@ class BodySpec:
     step_cost_s: Mapping[bool, float] = field(default_factory=dict)
     suite_scenes: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     hanging_bar: Callable[[Any, Any], HangingBar] | None = None
+    hang_dt_s: float | None = None
 
 
 @dataclass(frozen=True)

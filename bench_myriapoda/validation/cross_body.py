@@ -60,7 +60,6 @@ def centipede_phase_lag(ctx: Context, body: str) -> Outcome:
 
 HANG_SETTLE_S = 0.5  # the static elongation: the time mean after the first quarter-oscillation
 HANG_RESOLUTION = 5  # nodes per link edge for the hang comparison (hang_elongation_difference says why)
-HANG_DT_S = {"fem": 1.0 / 6000.0}  # the fem chain at 5 nodes per edge blows up at 1/3000 s within 1 s
 HANG_AGREEMENT = 0.10  # |(fem / its bar value) / (hybrid / its bar value) - 1|
 
 
@@ -160,10 +159,14 @@ def hang_elongation_difference(ctx: Context, body: str) -> Outcome:
     (fem 21.8 cm, hybrid 14.1 cm: 1.55x), a mesh artefact; at 5 and 7 nodes the two bodies' q
     agree within 3 % (issue 11; README, validate).
     """
-    if not {"fem", "hybrid"} <= set(ctx.bodies):
-        return not_applicable("compares the fem and hybrid bodies; select both (--body)")
+    pair = hanging_pair()
+    if len(pair) < 2:
+        return not_applicable("needs two body models that declare a hanging bar (BodySpec.hanging_bar)")
+    a, b2 = pair
+    if not {a, b2} <= set(ctx.bodies):
+        return not_applicable(f"compares the {a} and {b2} bodies; select both (--body)")
     res = (f"body.resolution={HANG_RESOLUTION}", "body.resolution_unit=nodes")
-    runs = {b: ctx.run("centipede", b, "hang", duration=3.0, overrides=res, dt=HANG_DT_S.get(b)) for b in ("fem", "hybrid")}
+    runs = {b: ctx.run("centipede", b, "hang", duration=3.0, overrides=res, dt=_spec(b).hang_dt_s) for b in pair}
     for r in runs.values():
         if r.status != "ok":
             return failed_run(r)
@@ -172,17 +175,30 @@ def hang_elongation_difference(ctx: Context, body: str) -> Outcome:
         bar, lo[b] = hanging_bar_reference(r.case)
         e[b] = static_elongation(r)
         q[b] = e[b] / bar
-    agree = q["fem"] / q["hybrid"] - 1.0
+    agree = q[a] / q[b2] - 1.0
     bounded = all(lo[b] <= q[b] <= 1.0 for b in q)
     ok = bounded and abs(agree) <= HANG_AGREEMENT
-    ratio = e["fem"] / e["hybrid"]
-    bar_ratio = (e["fem"] / q["fem"]) / (e["hybrid"] / q["hybrid"])
+    ratio = e[a] / e[b2]
+    bar_ratio = (e[a] / q[a]) / (e[b2] / q[b2])
     return holds(ok, round(ratio, 3), round(bar_ratio, 3),
-                 f"fem / hybrid within {100 * HANG_AGREEMENT:g} % of the bar values' ratio; each body within "
+                 f"{a} / {b2} within {100 * HANG_AGREEMENT:g} % of the bar values' ratio; each body within "
                  f"[E/M, 1] of its bar value",
-                 f"{HANG_RESOLUTION} nodes per edge; static elongation fem {e['fem'] * 100:.2f} cm "
-                 f"({q['fem']:.3f} of its bar value {e['fem'] / q['fem'] * 100:.2f} cm), hybrid "
-                 f"{e['hybrid'] * 100:.2f} cm ({q['hybrid']:.3f} of {e['hybrid'] / q['hybrid'] * 100:.2f} cm); "
-                 f"E/M = {lo['fem']:.3f}",
-                 fem_m=e["fem"], hybrid_m=e["hybrid"], fem_of_bar=q["fem"], hybrid_of_bar=q["hybrid"],
+                 f"{HANG_RESOLUTION} nodes per edge; static elongation {a} {e[a] * 100:.2f} cm "
+                 f"({q[a]:.3f} of its bar value {e[a] / q[a] * 100:.2f} cm), {b2} "
+                 f"{e[b2] * 100:.2f} cm ({q[b2]:.3f} of {e[b2] / q[b2] * 100:.2f} cm); "
+                 f"E/M = {lo[a]:.3f}",
+                 **{f"{a}_m": e[a], f"{b2}_m": e[b2], f"{a}_of_bar": q[a], f"{b2}_of_bar": q[b2]},
                  agreement=agree)
+
+
+def _spec(name: str):
+    from ..core import registry
+
+    registry.load_all()
+    return registry.BODIES[name]
+
+
+def hanging_pair() -> tuple[str, ...]:
+    """The first two body models, in the catalog's order, that declare a hanging bar (``BodySpec.hanging_bar``):
+    the pair the hanging comparison compares (fem and hybrid)."""
+    return tuple(b for b in all_bodies() if _spec(b).hanging_bar is not None)[:2]

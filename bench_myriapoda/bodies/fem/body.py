@@ -409,6 +409,7 @@ BACKEND = BodySpec(
     step_cost_s={False: 2.3e-7, True: 4.0e-7},
     # what validation.cross_body's hanging-bar reference reads of a built chain
     hanging_bar=hanging_bar,
+    hang_dt_s=1.0 / 6000.0,  # the chain at 5 nodes per edge blows up at 1/3000 s within 1 s
     # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
     suite_scenes={"worm": ("fem-worm", 20.0 * 27.0),  # the default 20-segment worm, resolution 3
                   "centipede": ("fem-centipede", 18.0 * 27.0)})
