@@ -29,6 +29,6 @@ GAITS: dict[str, GaitSpec] = {
                         requires=frozenset(), controller=PassiveController),
     "leg-wave": GaitSpec(name="leg-wave", description="myriapod legs: decentralized Switchers and Targeters whose "
                          "leg wave emerges from local rules (Fang et al. 2013, Sec. 4)",
-                         requires=frozenset({LEGS, SEGMENTS}), controller=MyriapodController),
+                         requires=frozenset({LEGS, SEGMENTS}), controller=MyriapodController, takes_world=True),
 }
 

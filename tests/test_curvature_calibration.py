@@ -14,6 +14,7 @@ from bench_myriapoda.core import registry
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.calibration import calibrated_body_info
 from bench_myriapoda.harness.runner import Creature, run_case
+from bench_myriapoda.world.world import build_world
 
 LATTICE_GAIN_REL_TOL = 0.02   # the lattice's fibres sit at the corners: kappa = 2 strain / width exactly
 FEM_MIN_SPEED_BL_PER_CYCLE = 0.1
@@ -31,14 +32,14 @@ def test_lattice_gain_is_half_the_width_over_the_length(tmp_path, monkeypatch):
     monkeypatch.setenv("BENCH_MYRIAPODA_CACHE", str(tmp_path))
     registry.load_all()
     case = resolve_case("snake", "massspring", "flat", "lateral-undulation")
-    res = measure_lateral_gain(registry.BODIES["massspring"].factory, case)
+    res = measure_lateral_gain(registry.BODIES["massspring"].factory, case, build_world(case))
     cre = case.creature
     # a fibre strain a at z = +-w/2 bends the lattice to kappa = 2 a / w: gain = a / (kappa L) = w / (2 L)
     assert res["strain_per_curvature"] == pytest.approx(cre.width_m / (2 * cre.body_length_m),
                                                         rel=LATTICE_GAIN_REL_TOL)
     assert res["curvature_m"] == pytest.approx(2 * CAL_STRAIN / cre.width_m, rel=LATTICE_GAIN_REL_TOL)
     # cached: a second call reads the file, and the key follows what shapes the gain
-    g = lateral_gain(registry.BODIES["massspring"].factory, case)
+    g = lateral_gain(registry.BODIES["massspring"].factory, case, build_world(case))
     assert list(tmp_path.rglob("*.json")) and g == pytest.approx(res["strain_per_curvature"], rel=1e-12)
     stiffer = dataclasses.replace(case, body=dataclasses.replace(case.body, stiffness=1.0))
     assert calibration_key(stiffer) != calibration_key(case)
@@ -50,7 +51,7 @@ def test_the_controller_gets_the_gain_and_scales_the_command(tmp_path, monkeypat
     monkeypatch.setenv("BENCH_MYRIAPODA_CACHE", str(tmp_path))
     case = resolve_case("snake", "massspring", "flat", "lateral-undulation", overrides=["gait.curvature_amplitude=7"])
     c = Creature(case)
-    info = calibrated_body_info(c.body, case)
+    info = calibrated_body_info(c.body, case, c.world)
     from bench_myriapoda.core.protocols import LATERAL
     assert c.controller.waves[LATERAL, 0] == pytest.approx(7 * info["strain_per_curvature"], rel=1e-12)
     raw = resolve_case("snake", "massspring", "flat", "lateral-undulation", overrides=["gait.curvature_amplitude=0"])

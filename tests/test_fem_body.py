@@ -9,6 +9,7 @@ from bench_myriapoda.bodies.fem import kernels as FK
 from bench_myriapoda.bodies.fem.body import BodyFEM
 from bench_myriapoda.core.config import resolve_case, scenario_paths
 from bench_myriapoda.harness.runner import run_case
+from bench_myriapoda.world.world import build_world
 
 TOL_EXACT = 1e-12
 TOL_STEP = 1e-9           # one step against a scipy composition (a sparse direct solve in between)
@@ -58,7 +59,7 @@ def test_hanging_fem_worm_elongates_like_a_bar_under_its_own_weight():
     # drops below 1/3000 s); bar hanging from its top: rho g L^2 / (2 E)
     case = resolve_case("worm", "fem", "hang", duration=3.0, dt=1e-4,
                         overrides=["body.youngs_modulus_pa=64300", "body.damping_gamma=2000"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     r = run_case(case)
     assert r.status == "ok", r.message
     L = case.creature.body_length_m
@@ -75,7 +76,7 @@ def test_hanging_fem_worm_elongates_like_a_bar_under_its_own_weight():
 
 def test_active_coefficients_match_numpy():
     case = resolve_case("snake", "fem", "flat", overrides=["creature.segments=4"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     s = body.system
     act = rng.uniform(-0.3, 0.3, size=(4, 3))
     BK.active_coefficients(s.Dm_inv, s.vol, s.mu, s.lam, body.tet_seg, body.tet_y, body.tet_z, act, 1.0, True,
@@ -92,7 +93,7 @@ def test_active_coefficients_match_numpy():
 def test_mesh_in_its_active_shape_feels_no_elastic_force():
     # uniform axial activation (no bending): the stress-free shape is the rest shape stretched along x
     case = resolve_case("worm", "fem", "drop", overrides=["creature.segments=3"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     s = body.system
     act = np.zeros((3, 3))
     act[:, 0] = 0.2
@@ -100,14 +101,14 @@ def test_mesh_in_its_active_shape_feels_no_elastic_force():
                            s.Dm_inv_eff, s.coef)
     x = body.rest * np.array([1.2, 1 / np.sqrt(1.2), 1 / np.sqrt(1.2)])
     f = np.zeros_like(x)
-    FK.elastic_forces(x, s.tets, s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, f)
+    FK.elastic_forces(x, s.tets, s.Dm_inv_eff, s.coef, s.q_ws, s.F_work, s.H_work, f)
     scale = np.abs(s.mu).max() * s.vol.max() ** (2 / 3)
     assert np.abs(f).max() < 1e-10 * scale
 
 
 def test_segment_spines_match_numpy():
     case = resolve_case("snake", "fem", "flat", overrides=["creature.segments=6"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     x = body.x + rng.normal(scale=0.01, size=body.x.shape)
     centers, spine = np.zeros((6, 3)), np.zeros((6, 3))
     BK.segment_spines(x, body.seg_ptr, body.seg_nodes, centers, spine)
@@ -120,7 +121,7 @@ def test_segment_spines_match_numpy():
 
 def test_advance_one_step_matches_a_scipy_step_without_contact():
     case = resolve_case("snake", "fem", "drop", overrides=["creature.segments=3", "scenario.terrain=none"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     s = body.system
     body.x[:] += rng.normal(scale=1e-3, size=body.x.shape)
     body.v[:] = rng.normal(scale=0.05, size=body.v.shape)
@@ -168,7 +169,7 @@ def test_fem_body_from_a_closed_surface_is_meshed_once_and_crawls(tmp_path, monk
     case = resolve_case("worm", "fem", "flat", duration=3.0, dt=1e-4,
                         overrides=["body.mesh=capsule", "body.mesh_edge_length_fac=0.08",
                                    "metrics.min_steady_cycles=0"])
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     assert set(np.unique(body.tet_seg)) == set(range(case.creature.segments))  # every segment has tets
     extent = body.rest.max(axis=0) - body.rest.min(axis=0)
     target = np.array([case.creature.body_length_m, case.creature.height_m, case.creature.width_m])
@@ -225,7 +226,7 @@ def test_cell_lumped_mass_is_the_dual_cell_mass_whatever_the_split(tets_per_cell
 def test_snake_fem_body_takes_the_cell_lumped_masses():
     case = resolve_case("snake", "fem", "flat", overrides=["creature.segments=4"])
     assert case.body.mass_lumping == "cells"
-    body = BodyFEM(case)
+    body = BodyFEM(case, build_world(case))
     m = body.system.mass
     assert m.sum() == pytest.approx(case.creature.mass_kg, rel=1e-12)
     interior = np.all((body.rest > body.rest.min(axis=0) + 1e-9) & (body.rest < body.rest.max(axis=0) - 1e-9), axis=1)

@@ -40,7 +40,6 @@ from bench_myriapoda.core.feasibility import lattice_footprint
 from bench_myriapoda.core.protocols import MUSCLES, Actuation, Observation
 from bench_myriapoda.core.schema import rng
 from bench_myriapoda.core.specs import BodySpec
-from bench_myriapoda.world.terrain import terrain_from_scenario
 from bench_myriapoda.world.terrain_kernels import signed_distance
 
 NAME = "pointchain"
@@ -131,7 +130,7 @@ class BodyPointChain(S.AccumulatedContact):  # contact_fraction_mean, max_penetr
     name = NAME
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case):
+    def __init__(self, case, world):
         cre, cfg = case.creature, case.body
         n = cre.segments + 1
         self.case, self.dt = case, case.dt
@@ -148,9 +147,9 @@ class BodyPointChain(S.AccumulatedContact):  # contact_fraction_mean, max_penetr
         rest_nodes = np.zeros((n, 3))
         rest_nodes[:, 0] = -np.arange(n) * cre.segment_length_m
         rest_nodes[:, 1] = 0.5 * cre.height_m
-        self.x = place_points(rest_nodes, case)
+        self.x = place_points(rest_nodes, case, world)
         self.v = np.zeros_like(self.x)
-        self.terr_kind, self.terr = terrain_from_scenario(case.scenario)
+        self.terr_kind, self.terr = world.terrain  # the run's world (``world.world.World``), built once by the runner
         self.fric_model, self.fric = friction_params(case.friction)
         k_ax, k_b = m * (2 * math.pi * cfg.axial_hz) ** 2, m * (2 * math.pi * cfg.bending_hz) ** 2
         self.phys = np.array([k_ax, 2 * cfg.damping_ratio * math.sqrt(k_ax * m), k_b,

@@ -42,7 +42,7 @@ def state(cr):
         out.update(c=b.rigid.c, q=b.rigid.q, v=b.rigid.v, w=b.rigid.w, kin=b.rigid.kinematic,
                    impulse=b.rigid.impulse_cache)
     if hasattr(b, "fem"):
-        out["q_ws"] = b.fem._q_ws
+        out["q_ws"] = b.fem.q_ws
     if hasattr(b, "att_target"):
         out.update(att_target=b.att_target, support=b.support)
     if c.antennae is not None:

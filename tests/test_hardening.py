@@ -20,6 +20,7 @@ import pytest
 
 from bench_myriapoda.cli import main
 from bench_myriapoda.harness.store import connect
+from bench_myriapoda.world.world import build_world
 from matrix_toml import tiny_worm_matrix
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -373,7 +374,7 @@ def test_the_geometry_checks_accept_what_the_bodies_build():
         check_buildable(resolve_case(creature, body, "flat"), "test")
     case = resolve_case("chain", "hybrid", "flat", overrides=["creature.mass_kg=1.01"])
     check_buildable(case, "test")
-    registry.BODIES["hybrid"].factory(case)  # builds
+    registry.BODIES["hybrid"].factory(case, build_world(case))  # builds
 
 
 def test_obstacles_that_cannot_be_placed_are_refused_before_the_run(fresh, capsys):

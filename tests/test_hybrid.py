@@ -24,6 +24,7 @@ from bench_myriapoda.cli import main
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import run_case
 from bench_myriapoda.world.terrain_kernels import signed_distance
+from bench_myriapoda.world.world import build_world
 
 DT = 1.0 / 3000.0                 # [s] the paper's time step (App. A)
 MOMENTUM_REL_TOL = 1e-12          # |P - (P0 + M g t)| / (|P0| + M g t): exact up to round-off (seen: 2e-15)
@@ -81,7 +82,8 @@ def test_free_flight_linear_momentum_is_p0_plus_mg_t_at_every_sample(free_flight
     # Damped links (gamma = 50): the damping reaction -(D v)_p on the boxes must use the
     # same prescribed v_p as the solve, else momentum leaks; a sign error or a missing
     # reaction (elastic or damping) shows up at the first sample.
-    body = BodyHybrid(resolve_case("chain", "hybrid", free_flight))
+    case = resolve_case("chain", "hybrid", free_flight)
+    body = BodyHybrid(case, build_world(case))
     spin_up(body, V=np.array([0.5, 2.0, -0.3]), W=np.array([0.4, 1.5, -0.7]))
     M = body.total_mass
     P0, _ = body.momenta()
@@ -104,7 +106,8 @@ def test_free_flight_angular_momentum_about_the_com_is_constant(free_flight):
     # error.  Without it the elastic forces at x^n carry no net torque, the boxes get
     # the reactions at the same points, symplectic Euler and the boxes' L-conserving
     # rotation keep the rest exact, and gravity exerts no torque about the COM.
-    body = BodyHybrid(resolve_case("chain", "hybrid", free_flight, overrides=["body.damping_gamma=0"]))
+    case = resolve_case("chain", "hybrid", free_flight, overrides=["body.damping_gamma=0"])
+    body = BodyHybrid(case, build_world(case))
     spin_up(body, V=np.array([0.0, 1.0, 0.0]), W=np.array([0.4, 1.5, -0.7]))
     _, L0 = body.momenta()
 
@@ -126,7 +129,7 @@ def reference_step(b: BodyHybrid):
     fem = FEMSystem(b.fem.X, b.fem.tets, E=cfg.youngs_modulus_pa, nu=cfg.poisson_ratio, rho=cfg.density_kg_m3,
                     gamma=cfg.damping_gamma)
     fem.set_fixed(b.mesh.attached)
-    fem.x[:], fem.v[:], fem._q_ws[:] = b.x, b.v, b.fem._q_ws
+    fem.x[:], fem.v[:], fem.q_ws[:] = b.x, b.v, b.fem.q_ws
     x0 = b.x.copy()
     # (1) FEM step with the attached nodes prescribed (eq. 14), no terrain ...
     assert fem.advance(1, dt=dt, gravity=g).ok
@@ -164,7 +167,8 @@ def reference_step(b: BodyHybrid):
 
 @pytest.mark.parametrize("t_state", [0.2, 0.452], ids=["in-flight", "at-impact"])
 def test_one_kernel_step_matches_the_python_composition(t_state):
-    b = BodyHybrid(resolve_case("chain", "hybrid", "fig4-drop"))
+    case = resolve_case("chain", "hybrid", "fig4-drop")
+    b = BodyHybrid(case, build_world(case))
     assert b.advance(0.0, int(round(t_state / DT)))[1] == K.OK
     # stir the state: deformed links, sliding and spinning boxes, so every term acts
     rng = np.random.default_rng(7)
@@ -184,7 +188,8 @@ def test_one_kernel_step_matches_the_python_composition(t_state):
 
 
 def test_place_attached_and_momenta_kernels_match_numpy():
-    b = BodyHybrid(resolve_case("chain", "hybrid", "fig4-drop"))
+    case = resolve_case("chain", "hybrid", "fig4-drop")
+    b = BodyHybrid(case, build_world(case))
     rng = np.random.default_rng(3)
     rb = b.rigid
     q = rng.normal(size=rb.q.shape)
@@ -212,7 +217,8 @@ def test_place_attached_and_momenta_kernels_match_numpy():
 # Fig. 4: the chain dropped onto a slippery plane
 # ------------------------------------------------------------------------------------
 def test_fig4_drop_attached_nodes_stay_on_the_boxes_and_the_residual_is_small():
-    b = BodyHybrid(resolve_case("chain", "hybrid", "fig4-drop"))
+    case = resolve_case("chain", "hybrid", "fig4-drop")
+    b = BodyHybrid(case, build_world(case))
     link = b.layout.link_length
     assert b.advance(0.0, int(round(0.44 / DT)))[1] == K.OK
     for _ in range(60):  # step by step through the impact at ~0.45 s
@@ -240,7 +246,7 @@ def test_coupling_residual_grows_with_the_time_step():
 
 def test_fig4_drop_lands_deforms_recovers_and_settles():
     case = resolve_case("chain", "hybrid", "fig4-drop")
-    body = BodyHybrid(case)
+    body = BodyHybrid(case, build_world(case))
     impact_strain, t, chunk = 0.0, 0.0, 15  # tet quality every 5 ms
     while t < case.duration - 1e-9:
         k, code = body.advance(t, chunk)
@@ -274,7 +280,7 @@ def test_hanging_elongation_matches_the_static_estimate():
     case = resolve_case("chain", "hybrid", "hang", overrides=["body.poisson_ratio=0"], duration=4.0)
     r = run_case(case)
     assert r.status == "ok", r.message
-    body = BodyHybrid(case)
+    body = BodyHybrid(case, build_world(case))
     lay, g = body.layout, case.scenario.gravity_m_s2
     m_box = body.rigid.mass[0]
     m_link = np.array([body.fem.mass[body.free][body.node_link[body.free] == k].sum() for k in range(lay.n_rigid - 1)])

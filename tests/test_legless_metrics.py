@@ -15,6 +15,7 @@ from bench_myriapoda.metrics.body_shape import body_shape_metrics
 from bench_myriapoda.metrics.legless import legless_metrics
 from bench_myriapoda.metrics.posture import AIRBORNE_FAULT_S, posture_metrics, roll_angles_deg
 from bench_myriapoda.reference.slithering import body_shape
+from bench_myriapoda.world.world import build_world
 
 SHAPE_REL = 0.03  # discrete curvature of 51 centres on a serpenoid sampled 25 times per wavelength
 T_S, L_M = 2.0, 1.0
@@ -137,12 +138,13 @@ def test_posture_flags_a_body_that_leaves_the_ground():
     heights = np.full(k, 0.025)
     contact[10:10 + 8] = False  # 0.35 s in the air after touching down
     heights[10:18] = 0.025 + np.sin(np.linspace(0, np.pi, 8)) * 0.2
-    m = posture_metrics(_posture_series(contact, heights), case.scenario, 0, k - 1)
+    m = posture_metrics(_posture_series(contact, heights), case.scenario, 0, k - 1, build_world(case))
     assert m["airborne_max_s"] > AIRBORNE_FAULT_S and m["posture_fault"] == 1.0
     assert m["lift_max_m"] == pytest.approx(0.2 * np.sin(np.linspace(0, np.pi, 8)).max())
     contact[:] = True
     contact[::2, 5:] = False  # half the segments lift every other sample: still on the ground
-    m = posture_metrics(_posture_series(contact, np.full(k, 0.025)), case.scenario, 0, k - 1)
+    m = posture_metrics(_posture_series(contact, np.full(k, 0.025)), case.scenario, 0, k - 1,
+                        build_world(case))
     assert m["posture_fault"] == 0.0 and m["segment_contact_fraction"] == pytest.approx(0.75)
 
 
@@ -150,9 +152,9 @@ def test_posture_flags_a_flip_on_flat_ground_only():
     k = 10
     s = _posture_series(np.ones((k, 10), bool), np.full(k, 0.025), roll_deg=150.0)
     flat = resolve_case("snake", "massspring", "flat")
-    assert posture_metrics(s, flat.scenario, 0, k - 1)["posture_fault"] == 1.0
+    assert posture_metrics(s, flat.scenario, 0, k - 1, build_world(flat))["posture_fault"] == 1.0
     slope = resolve_case("snake", "massspring", "slope")
-    assert posture_metrics(s, slope.scenario, 0, k - 1)["posture_fault"] == 0.0
+    assert posture_metrics(s, slope.scenario, 0, k - 1, build_world(slope))["posture_fault"] == 0.0
 
 
 def run_lattice_snake(flip: bool, duration_s: float = 1.0) -> dict[str, float]:
@@ -176,7 +178,7 @@ def run_lattice_snake(flip: bool, duration_s: float = 1.0) -> dict[str, float]:
         assert code == 0
         done += k
         rec.add(body.observe(done * case.dt))
-    return legless_metrics(rec.series(), case, body.body_length_m)
+    return legless_metrics(rec.series(), case, body.body_length_m, creature.world)
 
 
 def test_a_snake_on_its_back_is_a_posture_fault():

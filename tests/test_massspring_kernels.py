@@ -12,6 +12,7 @@ from bench_myriapoda.controllers.muscle_waves import (CORNER_Y, CORNER_Z, segmen
                                                       segment_activation_numpy)
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.world import terrain_kernels as TK
+from bench_myriapoda.world.world import build_world
 
 TOL_EXACT = 1e-12        # same arithmetic in a different order
 TOL_FD = 1e-6            # central finite differences of the spring energy (relative)
@@ -188,7 +189,7 @@ def test_advance_one_step_matches_numpy_step(creature, integrator):
     case = resolve_case(creature, "massspring", "drop", overrides=["scenario.passive=true", "scenario.start_height_m=0.0005",
                                                                    "collision.r_n=0.2", "collision.r_t=0.9",
                                                                    f"body.integrator={integrator}"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     body.v[:] = rng.normal(scale=0.05, size=body.v.shape)
     body.x[:] += rng.normal(scale=0.0005, size=body.x.shape)
     # every mass starts above the ground (the kernel and the reference treat a start inside
@@ -208,7 +209,7 @@ def test_advance_one_step_matches_numpy_step(creature, integrator):
 def test_symplectic_lattice_conserves_energy_without_damping_or_ground():
     case = resolve_case("snake", "massspring", "drop", overrides=[
         "scenario.passive=true", "scenario.gravity_m_s2=0", "body.damping=0", "scenario.start_height_m=1.0"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     body.v[:] = rng.normal(scale=0.02, size=body.v.shape)
     body.v -= body.v.mean(axis=0)
     e0 = sum(body.energy(0.0))
@@ -221,7 +222,7 @@ def test_symplectic_lattice_conserves_energy_without_damping_or_ground():
 
 def test_lattice_energy_matches_numpy():
     case = resolve_case("worm", "massspring", "drop", overrides=["scenario.passive=true"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     body.x[:] += rng.normal(scale=0.002, size=body.x.shape)
     body.v[:] = rng.normal(scale=0.1, size=body.v.shape)
     ke, el, pg = body.energy(0.0)
@@ -265,7 +266,7 @@ def test_stick_holds_segments_resting_a_face_on_the_ground_not_a_cube_on_one_edg
     descent; issue 11), while the corners of the segments resting flat behind it are held."""
     case = resolve_case("caterpillar", "massspring", "drop", overrides=[
         "scenario.passive=true", "scenario.start_height_m=0.001", "body.stiffness=0", "body.damping=0"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     assert body.fric_model == FK.STICK
     body.x[4:8, 1] += 0.02                      # face 1 (rear face of the head cube) lifted
     body.v[:] = [1.0, -0.01, 0.0]               # sliding along +x, pressing toward the ground
@@ -282,7 +283,7 @@ def test_family_spring_forces_bitwise_equal_numpys_three_pass_order(segments):
     # (forces, minus at the a ends, plus at the b ends), short and long lattices alike
     from bench_myriapoda.bodies.massspring.lattice import FAM_A, FAM_B, FAM_SHIFT, PAR_D, PAR_K
     case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     r = np.random.default_rng(segments)
     x = body.x + r.normal(scale=0.003, size=body.x.shape)
     x[4:8] = x[0:4]  # zero-length axial springs (a spring shorter than 1e-12 m pulls nothing)
@@ -318,7 +319,7 @@ def _family_reference(segments, state):
     forces fu (3, 4, n_faces): the per-family kernels on rows of exactly n_faces columns.  ``random``: random
     positions with zero-length axial springs; ``collapsed``: every node at one point (every force +0.0)."""
     case = resolve_case("snake", "massspring", "flat", overrides=[f"creature.segments={segments}"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     r = np.random.default_rng(100 + segments)
     n_faces = segments + 1
     if state == "random":
@@ -446,7 +447,7 @@ def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integ
     step's status (a runaway speed, a non-finite force)."""
     case = resolve_case("snake", "massspring", scenario, overrides=["creature.segments=12", f"body.integrator={integrator}",
                                                                     "collision.r_n=0.2", "collision.r_t=0.9"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     assert body.fric_model == FK.COULOMB and body.terr_kind in (TK.PLANE, TK.SLOPE)
     r = np.random.default_rng(11)
     n_nodes = body.x.shape[0]
@@ -498,7 +499,7 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
     the step kernel's layout (stride > n_faces), keep their velocities exactly: the same bits as
     ``_nodes_general`` with the dorsal rows lifted and some ventral nodes off the plane, as on the snake."""
     case = resolve_case("snake", "massspring", "flat", overrides=["creature.segments=9", f"body.integrator={integrator}"])
-    body = BodyMassSpring(case)
+    body = BodyMassSpring(case, build_world(case))
     r = np.random.default_rng(5)
     n_nodes = body.x.shape[0]
     n_faces = n_nodes // 4

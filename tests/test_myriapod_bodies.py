@@ -25,6 +25,7 @@ from bench_myriapoda.bodies.rigid import RigidBoxes
 from bench_myriapoda.core import registry
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import run_case
+from bench_myriapoda.world.world import build_world
 
 LIFT_M = 100.0                 # [m] raised this far above the plane: no contact during the short checks
 KERNEL_REL_TOL = 1e-10         # kernel step vs numpy composition, relative to the state's scale (seen: 2e-15)
@@ -43,7 +44,7 @@ def _case(body):
 
 def _lifted(body_cls, body_name, seed=0):
     """The body (no leg controller) lifted LIFT_M with random node / box velocities of ~0.1 m/s."""
-    b = body_cls(_case(body_name))
+    b = body_cls(case := _case(body_name), build_world(case))
     rng = np.random.default_rng(seed)
     b.x[:, 1] += LIFT_M
     b.v[:] = rng.normal(scale=0.1, size=b.v.shape)
@@ -90,7 +91,7 @@ def test_the_factories_give_legged_bodies_for_the_centipede():
 
 # ------------------------------------------------------------------ segment interface
 def test_massspring_supported_box_is_at_its_target_after_one_step():
-    b = BodyRigidSpringChain(_case("massspring"))
+    b = BodyRigidSpringChain(case := _case("massspring"), build_world(case))
     rng = np.random.default_rng(1)
     c, sup, c_T, R_T = _three_supported(b, rng)
     b.set_support(sup, c_T, R_T, b.dt)
@@ -110,7 +111,7 @@ def test_fem_supported_block_tracks_its_target():
     """One step: the leg-attachment nodes (2/3 of the block's nodes at 3 nodes across) reach their targets
     up to the penalty's m / (m + dt^2 k_p); the interior nodes follow elastically, so the best-fit centroid
     gets about 2/3 of the way.  Steady motion at the head's 0.5 m/s for 0.1 s: the lag stays small."""
-    b = BodyFEMChain(_case("fem"))
+    b = BodyFEMChain(case := _case("fem"), build_world(case))
     rng = np.random.default_rng(2)
     dt = b.case.dt
     c, sup, c_T, R_T = _three_supported(b, rng)

@@ -433,7 +433,7 @@ def test_the_harmonic_correction_is_the_default_at_each_bodys_own_gain(body, gai
 
     def tracker(*extra):
         c = Creature(snake_case(body, 1.5, *extra, duration=0.1))
-        c.controller.reset(c.case, calibrated_body_info(c.body, c.case))
+        c.controller.reset(c.case, calibrated_body_info(c.body, c.case, c.world))
         return c.controller.tracker
 
     default, explicit, off = tracker(), tracker(*GRID_HARMONIC_CORRECTION[body]), tracker(NO_HARMONIC_CORRECTION)

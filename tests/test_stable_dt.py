@@ -8,6 +8,7 @@ from bench_myriapoda.cli import main
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.stable_dt import find_stable_dt
 from bench_myriapoda.validation.references import lattice_omega_max as omega_max
+from bench_myriapoda.world.world import build_world
 
 STABLE_DT_REL_TOL = 0.08  # bisection bracket 2 % plus the finite duration needed for growth to show
 
@@ -16,7 +17,7 @@ def test_stable_dt_matches_symplectic_euler_limit_two_over_omega_max():
     case = resolve_case("worm", "massspring", "drop", duration=2.0, overrides=[
         "creature.segments=3", "scenario.passive=true", "scenario.gravity_m_s2=0", "scenario.start_height_m=1",
         "body.damping=0", "scenario.perturbation_m=1e-6"])
-    expected = 2.0 / omega_max(BodyMassSpring(case))
+    expected = 2.0 / omega_max(BodyMassSpring(case, build_world(case)))
     res = find_stable_dt(case, rel_tol=0.02)
     assert res.stable_dt_max_s == pytest.approx(expected, rel=STABLE_DT_REL_TOL)
     assert res.stable_dt_max_s < expected * 1.01 < res.unstable_dt_min_s * 1.1

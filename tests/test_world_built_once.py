@@ -12,6 +12,9 @@ was built with.
 """
 from __future__ import annotations
 
+import ast
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -162,3 +165,161 @@ def test_the_reports_plots_of_a_case_draw_its_one_world(monkeypatch, tmp_path):
                        worlds=[res.world("h")])
     assert (builds.terrains, builds.food) == (1, 1)
     assert np.array_equal(res.world("h").food, build_world(case).food)
+
+
+# --------------------------------------------------------------------------- statically: who builds a world (issue 42)
+
+PACKAGE = Path(__file__).resolve().parents[1] / "bench_myriapoda"
+
+# What builds (part of) a world from a scenario: the world's constructors, the terrain and food builders and the
+# placement check that returns the world it built.  ``World.without_ground`` derives a world and
+# ``World.placement_terrain`` reads one; neither is listed.
+WORLD_BUILDERS = {"build_world", "world_from_sections", "world_of", "terrain_from_scenario", "placement_terrain",
+                  "food_sources", "random_cylinders", "_base_terrain", "check_placements"}
+
+# The owners outside ``world/``, each the one place of its kind (a new one fails the test, and a listed one that
+# is gone fails it too):
+WORLD_OWNERS = {
+    # a run's world, when its caller gives none (``run_world``: ``run_case``, ``Creature``, ``build_body``,
+    # ``find_stable_dt``): one per run
+    ("bench_myriapoda.harness.runner", "build_world"),
+    # the CLI's pre-run placement check builds the case's world and hands it to the run and its animation
+    ("bench_myriapoda.cli", "check_placements"),
+    # the report: one world per stored case (``MatrixResults.world``), handed to every plot of the case
+    ("bench_myriapoda.report.matrix_data", "world_from_sections"),
+    # the leg controller set up alone (a script, a test); the runner hands it the run's world before its reset.
+    # Issue 42: a controller spec that always receives the world removes it.
+    ("bench_myriapoda.controllers.myriapod.controller", "world_of"),
+}
+
+
+def world_builds_in(tree: ast.AST) -> set[str]:
+    """The ``WORLD_BUILDERS`` names that ``tree`` imports, names or calls as an attribute (``terrain.X``), and
+    ``placement_terrain`` only where it is not a world's method (``world.placement_terrain()``)."""
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            found |= {a.name for a in node.names if a.name in WORLD_BUILDERS}
+        elif isinstance(node, ast.Name) and node.id in WORLD_BUILDERS:
+            found.add(node.id)
+        elif isinstance(node, ast.Attribute) and node.attr in WORLD_BUILDERS:
+            if node.attr == "placement_terrain" and not (isinstance(node.value, ast.Name)
+                                                         and node.value.id in ("terrain", "_terrain")):
+                continue
+            found.add(node.attr)
+        elif isinstance(node, ast.Attribute) and node.attr == "from_case" and isinstance(node.value, ast.Name) \
+                and node.value.id == "World":
+            found.add("World.from_case")
+    return found
+
+
+def world_builds_outside_world() -> set[tuple[str, str]]:
+    out = set()
+    for p in sorted(PACKAGE.rglob("*.py")):
+        rel = p.relative_to(PACKAGE.parent).with_suffix("")
+        if rel.parts[1] == "world":
+            continue
+        module = ".".join(rel.parts[:-1] if rel.parts[-1] == "__init__" else rel.parts)
+        out |= {(module, name) for name in world_builds_in(ast.parse(p.read_text(encoding="utf-8")))}
+    return out
+
+
+def test_the_world_build_check_finds_one():
+    tree = ast.parse("from ..world.terrain import terrain_from_scenario\nfrom ..world import food\n"
+                     "def f(sc, world):\n    world.placement_terrain()\n    return food.food_sources(sc), World.from_case(sc)\n")
+    assert world_builds_in(tree) == {"terrain_from_scenario", "food_sources", "World.from_case"}
+
+
+def test_a_world_is_built_from_a_scenario_only_inside_world():
+    found = world_builds_outside_world()
+    assert found - WORLD_OWNERS == set(), "a world built from a scenario outside world/: " + repr(sorted(found - WORLD_OWNERS))
+    assert WORLD_OWNERS - found == set(), "gone: remove from WORLD_OWNERS: " + repr(sorted(WORLD_OWNERS - found))
+
+
+def test_every_body_factory_receives_the_world_no_signature_is_read():
+    """No module reads a callable's signature to decide what to pass it (``inspect.signature``: the old
+    ``takes_world``); a body factory is always called ``factory(case, world)``.  The one reader left records
+    numba kernels' argument names for the compile plans (``harness.compile_plan``)."""
+    bad = {str(p.relative_to(PACKAGE)) for p in PACKAGE.rglob("*.py") if "inspect.signature(" in p.read_text(encoding="utf-8")}
+    assert bad == {"harness/compile_plan.py"}, f"signature sniffing in {sorted(bad)}"
+
+
+# --------------------------------------------------------------------------- the commands: one build per run (issue 42)
+
+@pytest.fixture
+def build_log(monkeypatch, tmp_path):
+    """Counts world builds in this process and in every worker process (``tests/world_build_counter.py``, read as
+    a plugin module by each process's ``registry.load_all``); yields the log's path."""
+    from bench_myriapoda.core import registry
+
+    log = tmp_path / "builds.log"
+    monkeypatch.setenv("WORLD_BUILD_LOG", str(log))
+    monkeypatch.setenv(registry.PLUGINS_ENV, "world_build_counter")
+    import world_build_counter
+
+    world_build_counter.install()
+    try:
+        yield log
+    finally:
+        world_build_counter.uninstall()
+
+
+MATRIX_TOML = """[matrix]
+name = "worlds"
+seeds = [0]
+
+[[block]]
+creatures = ["worm"]
+bodies = ["massspring"]
+gaits = ["rectilinear"]
+scenarios = ["fig13-cylinders"]
+duration = 0.1
+set = { "scenario.obstacle_region_m" = [0.3, 3.0, -1.0, 1.0], "scenario.obstacle_radius_m" = [0.02, 0.05], "scenario.obstacle_height_m" = [0.05, 0.1], "scenario.obstacle_clear_radius_m" = 0.3, "scenario.start_height_m" = 0.0 }
+
+[[block]]
+creatures = ["centipede"]
+bodies = ["hybrid"]
+scenarios = ["foraging"]
+duration = 0.1
+"""
+
+
+def test_the_matrix_and_its_report_build_each_cases_world_once(build_log, tmp_path, capsys):
+    """``matrix`` (its cases run in worker processes): one world per case; ``report`` on its directory: one world
+    per case it draws (from above and from the side, in several sections), none more."""
+    from world_build_counter import counts
+
+    from bench_myriapoda.cli import main
+
+    matrix, out = tmp_path / "worlds.toml", tmp_path / "out"
+    matrix.write_text(MATRIX_TOML)
+    assert main(["matrix", str(matrix), "--workers", "1", "--out", str(out)]) == 0, capsys.readouterr().err
+    assert counts(build_log) == {"terrain": 2, "food": 2}, "matrix: two cases, each world built once"
+    build_log.unlink()
+    assert main(["report", str(out)]) == 0, capsys.readouterr().err
+    drawn = counts(build_log)
+    assert 1 <= drawn["terrain"] <= 2, f"report: {drawn['terrain']} terrains built for 2 cases"
+    assert drawn["food"] == drawn["terrain"]
+
+
+def test_validate_builds_one_world_per_run(build_log, monkeypatch, tmp_path, capsys):
+    """``validate``: the stable-dt check runs its lattice at many time steps in one world, built once (and the
+    body it measures omega_max of lives in it)."""
+    from world_build_counter import counts
+
+    from bench_myriapoda.cli import main
+    from bench_myriapoda.harness import stable_dt
+
+    runs = []
+    original = stable_dt.run_case
+
+    def counted_run(case, *args, **kwargs):
+        runs.append(kwargs.get("world"))
+        return original(case, *args, **kwargs)
+
+    monkeypatch.setattr(stable_dt, "run_case", counted_run)
+    code = main(["validate", "--quick", "--check", "analytic.stable-dt", "--body", "massspring", "--json", "--no-store",
+                 "--out", str(tmp_path)])
+    assert code in (0, 1), capsys.readouterr().err
+    assert len(runs) >= 3 and all(w is runs[0] for w in runs), "the stable-dt trials share one world"
+    assert counts(build_log) == {"terrain": 1, "food": 1}

@@ -93,11 +93,13 @@ def calibration_key(case) -> str:
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 
-def measure_lateral_gain(make_body: Callable[[Any], Any], case) -> dict[str, float]:
-    """Run the calibration bend (module docstring) on ``make_body(case')``; return
-    {"strain_per_curvature": gain [-], "curvature_m": kappa [1/m], "t_rest_s": time to rest [s]}."""
+def measure_lateral_gain(factory: Callable[[Any, Any], Any], case, world) -> dict[str, float]:
+    """Run the calibration bend (module docstring) on ``factory(case', world')`` (a ``BodySpec.factory``):
+    case' the calibration case, world' the run's ``world`` less its ground, obstacles and food
+    (``World.without_ground``: the gain is measured off the ground, and its cache key holds none of the
+    scenario); return {"strain_per_curvature": gain [-], "curvature_m": kappa [1/m], "t_rest_s": time to rest [s]}."""
     cal = _calibration_case(case)
-    body = make_body(cal)
+    body = factory(cal, world.without_ground(cal.scenario))
     body.compile()
     dt = cal.dt
     L = float(case.creature.body_length_m)  # the full creature's: the command is kappa x its length
@@ -138,15 +140,16 @@ def measure_lateral_gain(make_body: Callable[[Any], Any], case) -> dict[str, flo
     return {"strain_per_curvature": CAL_STRAIN / (kappa * L), "curvature_m": kappa, "t_rest_s": t}
 
 
-def lateral_gain(make_body: Callable[[Any], Any], case, cache: bool = True) -> float:
-    """Strain per unit of (curvature x body length) of ``case``'s body, measured once and cached."""
+def lateral_gain(factory: Callable[[Any, Any], Any], case, world, cache: bool = True) -> float:
+    """Strain per unit of (curvature x body length) of ``case``'s body, measured once and cached
+    (``factory``, ``world``: as ``measure_lateral_gain``)."""
     path = calibration_cache_dir() / f"{calibration_key(case)}.json"
     if cache and path.exists():
         try:
             return float(json.loads(path.read_text())["strain_per_curvature"])
         except (OSError, ValueError, KeyError):
             pass  # a damaged entry is measured again
-    res = measure_lateral_gain(make_body, case)
+    res = measure_lateral_gain(factory, case, world)
     if cache:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")

@@ -13,7 +13,6 @@ import math
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from ..world.terrain import placement_terrain
 from ..world.terrain_kernels import signed_distance
 from .rigid import CORNER_SIGNS
 
@@ -21,11 +20,11 @@ from .rigid import CORNER_SIGNS
 MAX_LIFT_ITERATIONS = 60
 
 
-def initial_transform(rest_points: np.ndarray, case, world=None) -> tuple[np.ndarray, np.ndarray]:
+def initial_transform(rest_points: np.ndarray, case, world) -> tuple[np.ndarray, np.ndarray]:
     """Rotation R (3, 3) and translation t (3,) [m] with world = R @ rest + t.
 
     rest_points: (n, 3) [m] every material point of the body, used for the clearance; world: the run's
-    ``world.world.World`` (its terrain; built from the scenario here when None).
+    ``world.world.World`` (its terrain).
     """
     sc = case.scenario
     R = np.eye(3)
@@ -40,7 +39,7 @@ def initial_transform(rest_points: np.ndarray, case, world=None) -> tuple[np.nda
         R = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
         normal = np.array([-s, c, 0.0])
     t = np.array([sc.start_x_m, 0.0, 0.0])
-    kind, f = placement_terrain(sc) if world is None else world.placement_terrain()
+    kind, f = world.placement_terrain()
     # Lift along the normal until the lowest point is start_height_m above the surface.  One step is
     # exact for the planar terrains; a mesh clamps phi to +-band far from its surface (and a height
     # field's phi is a first-order distance), so repeat until the clearance is right.
@@ -53,7 +52,7 @@ def initial_transform(rest_points: np.ndarray, case, world=None) -> tuple[np.nda
     return R, t
 
 
-def place_points(rest_points: np.ndarray, case, world=None) -> np.ndarray:
+def place_points(rest_points: np.ndarray, case, world) -> np.ndarray:
     """World positions (n, 3) [m] at t = 0, with the scenario's seeded random perturbation (world: as
     ``initial_transform``)."""
     R, t = initial_transform(rest_points, case, world)

@@ -10,10 +10,11 @@ scene owns copies of the positions (frames are stored while the body moves on);
 the face arrays are static topology, computed once per body and shared
 read-only between frames.
 
-This module also holds the topology helpers the bodies use: the outward
-triangles of a box (``BOX_FACES``), of a Miller cube lattice
-(``lattice_surface_faces``) and of a tetrahedral mesh's boundary
-(``tet_boundary_faces``).
+This module also holds the topology helpers the bodies share: the outward
+triangles of a box (``BOX_FACES``) and of a tetrahedral mesh's boundary
+(``tet_boundary_faces``), read-only face arrays (``static_topology``) and their
+outward winding (``orient_outward``); a body's own topology lives with it (the
+Miller lattice's surface: ``massspring.lattice.lattice_surface_faces``).
 """
 from __future__ import annotations
 
@@ -76,7 +77,7 @@ class Scene:
         return p.min(axis=0), p.max(axis=0)
 
 
-def _static(a: np.ndarray) -> np.ndarray:
+def static_topology(a: np.ndarray) -> np.ndarray:
     """A read-only int64 copy: topology shared by every stored frame must never be edited."""
     a = np.array(a, dtype=np.int64, copy=True)
     a.setflags(write=False)
@@ -101,44 +102,18 @@ def _box_faces() -> np.ndarray:
     return orient_outward(CORNER_SIGNS, tris, np.zeros((len(tris), 3)))
 
 
-BOX_FACES = _static(_box_faces())  # (12, 3) outward triangles of one box's 8 corners
+BOX_FACES = static_topology(_box_faces())  # (12, 3) outward triangles of one box's 8 corners
 
 
 @lru_cache(maxsize=None)
 def boxes_faces(n: int) -> np.ndarray:
     """(12 n, 3) read-only outward triangles of n boxes whose corners are stacked 8 per box; built once per n."""
-    return _static((BOX_FACES[None, :, :] + 8 * np.arange(n)[:, None, None]).reshape(-1, 3))
+    return static_topology((BOX_FACES[None, :, :] + 8 * np.arange(n)[:, None, None]).reshape(-1, 3))
 
 
 def box_triangles(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (8 n, 3) [m] (a copy) and faces (12 n, 3) of n boxes from their corners (8 n, 3) [m]."""
     return np.array(corners, dtype=np.float64, copy=True), boxes_faces(len(corners) // 8)
-
-
-def lattice_surface_faces(n_cells: int) -> np.ndarray:
-    """(8 n_cells + 4, 3) outward triangles of a Miller cube lattice of n_cells cubes (``lattice.build_lattice``).
-
-    Node 4 j + c is corner c of cross-section face j; the four side faces of
-    every cube and the two end faces are quads, each split into two triangles.
-    The winding is fixed once on the lattice's rest shape: a body's placement is
-    a proper rotation, which keeps it outward.
-    """
-    from .massspring.lattice import SIDE_FACES, build_lattice
-
-    rest = build_lattice(n_cells, 1.0, 1.0, 1.0).rest_nodes
-    tris, inside = [], []
-    for i in range(n_cells):
-        centre = rest[4 * i:4 * i + 8].mean(axis=0)
-        for a, b in SIDE_FACES:
-            q = (4 * i + a, 4 * i + b, 4 * (i + 1) + b, 4 * (i + 1) + a)
-            tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
-            inside += [centre, centre]
-    for j, cell in ((0, 0), (n_cells, n_cells - 1)):  # the end caps; corners 0, 1, 3, 2 go around a face
-        centre = rest[4 * cell:4 * cell + 8].mean(axis=0)
-        q = (4 * j + 0, 4 * j + 1, 4 * j + 3, 4 * j + 2)
-        tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
-        inside += [centre, centre]
-    return _static(orient_outward(rest, np.array(tris, dtype=np.int64), np.array(inside)))
 
 
 # The four faces of a positively oriented tet (det(X1-X0, X2-X0, X3-X0) > 0), wound outward.
@@ -165,7 +140,7 @@ def compact(faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     used = np.unique(faces)
     remap = np.full(int(used.max()) + 1 if len(used) else 0, -1, dtype=np.int64)
     remap[used] = np.arange(len(used))
-    return _static(used), _static(remap[faces])
+    return static_topology(used), static_topology(remap[faces])
 
 
 def legs_scene(segment_c: np.ndarray, segment_R: np.ndarray, geom: np.ndarray, angles: np.ndarray,

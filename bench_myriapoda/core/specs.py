@@ -28,12 +28,30 @@ class Footprint:
 
 
 @dataclass(frozen=True)
+class HangingBar:
+    """A legged chain body as the 1-D bar it is when hanging by its head (``validation.cross_body``).
+
+    ``s_mass``, ``mass``: (m,) its simulated point masses [m along the rest axis from the head, kg];
+    ``n_segments``, ``pitch`` [m] (segment to segment), ``head_length`` [m]: each segment's stiff piece (a
+    rigid box, a stiff block) from ``k pitch`` to ``k pitch + head_length``, a link from there to the next;
+    ``piece_ea``: (stiff piece, link) axial stiffness E A [N] (inf: rigid).
+    """
+
+    s_mass: Any
+    mass: Any
+    n_segments: int
+    pitch: float
+    head_length: float
+    piece_ea: tuple[float, float]
+
+
+@dataclass(frozen=True)
 class BodySpec:
     """A body model backend.
 
     - ``config_cls``: frozen dataclass of the backend's ``[body]`` keys (has a ``name`` field).
-    - ``factory``: ``factory(case) -> Body`` (``core.protocols.Body``) for a resolved case; a factory that
-      also takes a ``world`` keyword is given the run's world (``world.world.World``, built once by the runner).
+    - ``factory``: ``factory(case, world) -> Body`` (``core.protocols.Body``) for a resolved case in the run's
+      world (``world.world.World``, built once by the runner; a body builds no world of its own).
     - ``capabilities``: what the backend can honour, e.g. ``{"muscles", "friction:coulomb"}``.
     - ``default_dt``: ``default_dt(body_config) -> float``, the time step [s] when none is given.
     - ``footprint``: ``footprint(case) -> Footprint``, the memory estimate (``core.feasibility``).
@@ -50,12 +68,21 @@ class BodySpec:
     - ``shape_harmonic_gain_per_cycle``: the integral gain per gait cycle [-] of the same tracker's correction of
       the wave's temporal harmonics (``gait.shape_harmonics``) that this body's dynamics tolerate;
       ``gait.shape_harmonic_gain_per_cycle = -1`` (the default) takes it.  0: no harmonic is corrected.
+    - ``step_cost_s``: legged (False / True) -> wall time of one step per unit of size [s] with warm kernels
+      (``harness.schedule.size_of``: segments x FEM nodes per link), for a kind of case neither the results
+      store nor the throughput suite knows; only the order in which a matrix starts its cases depends on it.
+      Empty: ``harness.schedule.UNKNOWN_STEP_S``.
+    - ``suite_scenes``: creature -> (throughput-suite entry, its scene's size in ``size_of``'s units): the
+      suite's measured rate of this body with that creature, scaled to other sizes (``harness.schedule``).
+    - ``hanging_bar``: ``hanging_bar(body, case) -> HangingBar``, the 1-D bar a built legged chain of this body
+      is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
+      ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
     """
 
     name: str
     description: str
     config_cls: type
-    factory: Callable[[Any], Any]
+    factory: Callable[[Any, Any], Any]
     capabilities: frozenset
     default_dt: Callable[[Any], float]
     footprint: Callable[[Any], Footprint]
@@ -64,13 +91,17 @@ class BodySpec:
     checks: Mapping[str, bool] = field(default_factory=dict)
     shape_gain_p: float = 0.0
     shape_harmonic_gain_per_cycle: float = 0.0
+    step_cost_s: Mapping[bool, float] = field(default_factory=dict)
+    suite_scenes: Mapping[str, tuple[str, float]] = field(default_factory=dict)
+    hanging_bar: Callable[[Any, Any], HangingBar] | None = None
+    hang_dt_s: float | None = None
 
 
 @dataclass(frozen=True)
 class GaitSpec:
     """A gait: what it needs from a body (``requires``), the controller that drives it
-    (``controller(case) -> Controller``, ``core.protocols.Controller``; a controller class that also takes a
-    ``world`` keyword is given the run's world, as a body factory) and the frozen dataclass of its
+    (``controller(case) -> Controller``, ``core.protocols.Controller``; with ``takes_world`` True,
+    ``controller(case, world=world)`` in the run's world, as a body factory) and the frozen dataclass of its
     ``[gaits.<name>]`` keys (``config_cls``, ``case.gait``).  A gait with keys of its own declares a
     subclass of ``GaitConfig`` next to its controller: the base's keys (period, wave, volume rule) are
     the ones the runner, the metrics and the bodies read of every gait."""
@@ -80,3 +111,4 @@ class GaitSpec:
     requires: frozenset
     controller: Callable[[Any], Any] | None = None
     config_cls: type = GaitConfig
+    takes_world: bool = False

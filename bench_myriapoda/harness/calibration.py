@@ -3,18 +3,16 @@
 A gait that commands a body shape (``gait.curvature_amplitude``) needs the body's strain per unit
 of curvature x body length.  The body measures it itself (``bodies.curvature_calibration``, cached
 on disk); this module, which may know both bodies and gaits, decides when a controller needs it
-and builds the calibration body through the catalog's factory.
+and hands the calibration the catalog's factory and the run's world.
 """
 from __future__ import annotations
 
 import dataclasses
-import functools
 from typing import Any
 
 from ..bodies.curvature_calibration import lateral_gain, plant_response
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
-from ..world.world import build_world, made_in
 
 
 def needs_curvature_gain(case) -> bool:
@@ -23,9 +21,12 @@ def needs_curvature_gain(case) -> bool:
     return case.gait.commands_curvature()
 
 
-def calibrated_body_info(body, case) -> dict[str, Any]:
+def calibrated_body_info(body, case, world) -> dict[str, Any]:
     """``body_info`` plus ``strain_per_curvature`` [-] and the body's ``shape_gain_p`` and
-    ``shape_harmonic_gain_per_cycle`` [-] (``BodySpec``) when the gait commands a curvature."""
+    ``shape_harmonic_gain_per_cycle`` [-] (``BodySpec``) when the gait commands a curvature.
+
+    ``world``: the run's (``world.world.World``); a calibration measures its body in that world less its
+    ground (``World.without_ground``, in ``bodies.curvature_calibration``), so it builds no world of its own."""
     info = body_info(body, case.dt)
     if needs_curvature_gain(case) and MUSCLES in body.capabilities:
         registry.load_all()
@@ -34,11 +35,11 @@ def calibrated_body_info(body, case) -> dict[str, Any]:
         # case run at a deliberately unstable dt (stable-dt searches, blow-up tests) still gets its gain
         # and blows up in its own run, where that is recorded as ``unstable``
         cal_case = dataclasses.replace(case, dt=min(case.dt, spec.default_dt(case.body)))
-        info["strain_per_curvature"] = lateral_gain(functools.partial(_in_its_own_world, spec.factory), cal_case)
+        info["strain_per_curvature"] = lateral_gain(spec.factory, cal_case, world)
         info["shape_gain_p"] = float(spec.shape_gain_p)
         info["shape_harmonic_gain_per_cycle"] = float(spec.shape_harmonic_gain_per_cycle)
         if identifies_the_plant(case):
-            info["plant_response"] = identified_plant(spec, case, info)
+            info["plant_response"] = identified_plant(spec, case, info, world)
     return info
 
 
@@ -54,9 +55,10 @@ def identifies_the_plant(case) -> bool:
     return closes_the_shape_loop(case) and bool(getattr(case.gait, "shape_guard", False))
 
 
-def identified_plant(spec, case, info) -> dict[str, Any]:
+def identified_plant(spec, case, info, world) -> dict[str, Any]:
     """The open loop's measured response on the case's own ground (``bodies.curvature_calibration.plant_response``,
-    cached): the calibrated open-loop controller of the same gait drives a body of the same case."""
+    cached): the calibrated open-loop controller of the same gait drives a body of the same case, in the
+    run's ``world``."""
     from ..controllers.muscle_waves import LATERAL, wave_table  # noqa: PLC0415 (the gait's own open loop)
     from ..core.protocols import LATERAL_GROUND_SIGN  # noqa: PLC0415
 
@@ -67,13 +69,6 @@ def identified_plant(spec, case, info) -> dict[str, Any]:
     table = wave_table(g, L, strain_per_curvature=info["strain_per_curvature"])
     wave = (float(table[LATERAL, 1]), float(table[LATERAL, 2]), float(table[LATERAL, 3]),
             LATERAL_GROUND_SIGN * g.curvature_amplitude / L, float(g.ramp_s))
-    return plant_response(lambda c: made_in(spec.factory, c, build_world(c)), case, ctrl.fill, wave)
+    return plant_response(lambda c: spec.factory(c, world), case, ctrl.fill, wave)
 
 
-def _in_its_own_world(factory, cal_case):
-    """The calibration body, made by the catalog's ``factory`` in the calibration case's world.
-
-    That world is legitimately not the run's: the calibration case (``curvature_calibration._calibration_case``)
-    has its own scenario (no ground, no gravity), so its world is built here, once
-    per calibration, through ``build_world`` from that explicit scenario -- not rebuilt inside the factory."""
-    return made_in(factory, cal_case, build_world(cal_case))

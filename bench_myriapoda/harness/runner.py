@@ -1,8 +1,9 @@
 """Run one resolved case: compose a body, a controller and the world; step in chunks; sample; measure.
 
 The runner builds the world once (``world.world.build_world``: terrain, obstacles, food, the water's bed)
-and hands it to the body, the controller and the metrics (a factory or controller class that takes a
-``world`` keyword gets it; nothing else in a run builds the terrain from the scenario again), builds the
+and hands it to the body (every body factory takes it: ``factory(case, world)``), the controller (when its
+gait declares ``GaitSpec.takes_world``) and the metrics; nothing else in a run builds the terrain from the
+scenario again (``run_world`` is the one place outside ``world/`` that builds a world), builds the
 body (``catalog``: ``BODIES[case.body.name].factory``) and the gait's
 controller (``GAITS[case.gait.name].controller``, or one given by the caller), and passes data
 between them (``core.protocols``): the body fills an ``Observation``, the controller writes an
@@ -34,7 +35,7 @@ from ..metrics.legless import legless_metrics
 from ..metrics.locomotion import blank_too_short, energy_metrics, locomotion_metrics, too_short_reason
 from ..metrics.shape_tracking import shape_flag_reason
 from ..world.water_coupling import WaterCoupling, has_water
-from ..world.world import World, build_world, made_in, takes_world  # noqa: F401 (takes_world: its old home)
+from ..world.world import World, build_world
 from ..fused import legged_walk
 from .calibration import calibrated_body_info
 from .legged import LeggedMonitor, LeggedView
@@ -88,7 +89,8 @@ class UnsupportedCombination(ValueError):
 
 def run_world(case: Case, controller=None, world: World | None = None) -> World:
     """The one world of a run: ``world`` when given, else the world a controller passed in already built
-    holds (its ``world`` attribute), else ``case``'s, built here."""
+    holds (its ``world`` attribute), else ``case``'s, built here: the one place outside ``world/`` where a
+    world is built from a scenario (``tests/test_world_built_once.py`` checks it statically)."""
     if world is None and isinstance(getattr(controller, "world", None), World):
         world = controller.world
     return build_world(case) if world is None else world
@@ -100,9 +102,10 @@ def compose(case: Case, controller=None, world: World | None = None):
     when None).  Raises UnsupportedCombination when the body cannot honour it."""
     registry.load_all()
     world = run_world(case, controller, world)
-    body = made_in(registry.BODIES[case.body.name].factory, case, world)
+    body = build_body(case, world)
     if controller is None:
-        controller = made_in(registry.GAITS[case.gait.name].controller, case, world)
+        gait = registry.GAITS[case.gait.name]
+        controller = gait.controller(case, world=world) if gait.takes_world else gait.controller(case)
     elif getattr(controller, "world", False) is None:
         # a controller built without a world (it would build its own at reset) is handed the run's one
         controller.world = world
@@ -111,8 +114,15 @@ def compose(case: Case, controller=None, world: World | None = None):
     if missing:
         raise UnsupportedCombination(f"body {case.body.name!r} cannot honour this controller: it lacks "
                                      f"{', '.join(sorted(missing))}")
-    controller.reset(case, calibrated_body_info(body, case), np.random.default_rng(case.seed))
+    controller.reset(case, calibrated_body_info(body, case, world), np.random.default_rng(case.seed))
     return body, controller
+
+
+def build_body(case: Case, world: World | None = None):
+    """The catalog's body of ``case`` (``BodySpec.factory``) in ``world`` (``run_world``: built here when
+    None), for a body used outside a run (validation, benchmarks) as inside one."""
+    registry.load_all()
+    return registry.BODIES[case.body.name].factory(case, run_world(case, None, world))
 
 
 class Stepper:

@@ -45,33 +45,34 @@ from typing import Any, Iterable, Mapping, Sequence
 
 from .store import StoreReadError, read_case_costs, read_latest_regress_rates, read_matrix_case_walls
 
-# Per-step wall time [s] per unit of size (size_of: segments x FEM nodes per link) of each body model with warm
-# kernels, for a kind of case neither the store nor the throughput suite knows.  From the quick matrix on the
-# development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs): the median over
-# its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's summed case times
-# (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker).  Keys: (body model, legged).  Only the
-# ORDER of the cases depends on these: a factor of two off changes which case starts first, never a result.
-DEFAULT_STEP_S: dict[tuple[str, bool], float] = {
-    ("massspring", False): 1.0e-6,
-    ("massspring", True): 2.2e-5,
-    ("fem", False): 2.3e-7,
-    ("fem", True): 4.0e-7,
-    ("hybrid", False): 5.0e-7,
-    ("hybrid", True): 3.2e-7,
-}
+# What a case costs when neither the store nor the throughput suite knows its kind: each body model declares
+# its per-step cost per size unit (``BodySpec.step_cost_s``) and the suite's scenes of it with their sizes
+# (``BodySpec.suite_scenes``), so this module names no body.  Only the ORDER of the cases depends on these: a
+# factor of two off changes which case starts first, never a result.
 DEFAULT_FIXED_S = 0.05  # per case with warm kernels: kernel lookup, body build, metrics [s]
-UNKNOWN_STEP_S = 1.0e-6  # a body model not in DEFAULT_STEP_S [s per step per size unit]
+UNKNOWN_STEP_S = 1.0e-6  # a body model that declares no step cost [s per step per size unit]
 
-# The throughput suite's entries (harness/throughput_suite.py) by (body model, creature) with the size of
-# their scene (size_of's units: segments x FEM nodes per link), so a figure scales to other sizes.
-SUITE_SCENES: dict[tuple[str, str], tuple[str, float]] = {
-    ("massspring", "snake"): ("massspring-snake", 50.0),  # Miller's 50-segment snake
-    ("fem", "worm"): ("fem-worm", 20.0 * 27.0),  # the default 20-segment worm, resolution 3
-    ("hybrid", "chain"): ("hybrid-chain", 18.0 * 27.0),  # 18 boxes, 17 links at resolution 3
-    ("hybrid", "centipede"): ("hybrid-centipede", 18.0 * 27.0),
-    ("massspring", "centipede"): ("massspring-centipede", 18.0),
-    ("fem", "centipede"): ("fem-centipede", 18.0 * 27.0),
-}
+
+def _body_spec(name: str):
+    """The catalog's ``BodySpec`` of body model ``name`` (None for one no table holds)."""
+    from ..core import registry
+
+    registry.load_all()
+    return registry.BODIES.get(name)
+
+
+def default_step_s(body: str, legged: bool) -> float:
+    """Per-step wall [s] per size unit of ``body`` (``BodySpec.step_cost_s``; ``UNKNOWN_STEP_S`` when undeclared)."""
+    spec = _body_spec(body)
+    return float(spec.step_cost_s.get(legged, UNKNOWN_STEP_S)) if spec is not None else UNKNOWN_STEP_S
+
+
+def suite_scene(body: str, creature: str) -> tuple[str, float] | None:
+    """(throughput-suite entry, its scene's size) of ``body`` with ``creature`` (``BodySpec.suite_scenes``)."""
+    spec = _body_spec(body)
+    return None if spec is None else spec.suite_scenes.get(creature)
+
+
 OK_STATUSES = ("ok", "unstable", "controller_unstable")
 
 
@@ -182,12 +183,11 @@ class CostModel:
         if same_kind:  # the nearest size of the same body and creature, scaled
             near = min(same_kind, key=lambda k: abs(math.log(size_of(k) / size_of(key))))
             return self._p(steps, self.step_s[near] * size_of(key) / size_of(near), self.fixed, "store-scaled")
-        scene = SUITE_SCENES.get(key[:2])
+        scene = suite_scene(key[0], key[1])
         if scene and scene[0] in self.suite and self.suite[scene[0]] > 0:
             per_step = 1.0 / self.suite[scene[0]] * size_of(key) / scene[1]
             return self._p(steps, per_step, self.fixed, "suite")
-        return self._p(steps, DEFAULT_STEP_S.get((key[0], key[4]), UNKNOWN_STEP_S) * size_of(key), self.fixed,
-                       "default")
+        return self._p(steps, default_step_s(key[0], key[4]) * size_of(key), self.fixed, "default")
 
     @staticmethod
     def _p(steps: int, per_step: float, fixed: float, source: str) -> Prediction:

@@ -15,8 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..core.config import Case
-from ..world.world import build_world
-from .runner import run_case
+from .runner import run_case, run_world
 
 
 @dataclass
@@ -32,9 +31,9 @@ def find_stable_dt(case: Case, rel_tol: float = 0.05, max_runs: int = 24, dt_flo
                    progress: Callable[[float, str], None] | None = None, world=None,
                    known: dict | None = None) -> StableDtResult:
     """Bisect dt for ``case`` (its duration and everything else fixed).  ``world``: the case's
-    ``world.world.World`` (it does not depend on dt), built once here when None and shared by every trial.
-    ``known``: dt -> a ``RunResult`` of this case already run at that dt (its trial is not run again)."""
-    world = build_world(case) if world is None else world
+    ``world.world.World`` (it does not depend on dt), built once (``runner.run_world``) when None and shared by
+    every trial.  ``known``: dt -> a ``RunResult`` of this case already run at that dt (its trial is not run again)."""
+    world = run_world(case, None, world)
     ceiling = dt_ceiling if dt_ceiling is not None else case.duration / 20.0
     trials: list[tuple[float, str, float]] = []
 
@@ -145,7 +144,7 @@ def _bracket_entry(case: Case) -> dict:
 
     trial = bracket_case(case)
     t0 = time.process_time()
-    world = build_world(trial)
+    world = run_world(trial)  # built once, shared by the timed repeats and the bisection
     repeats = [run_case(trial, world=world) for _ in range(TIMED_REPEATS)]
     res = find_stable_dt(trial, rel_tol=BRACKET_REL_TOL, max_runs=BRACKET_MAX_RUNS, world=world,
                          known={trial.dt: repeats[0]})

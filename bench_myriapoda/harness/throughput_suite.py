@@ -92,12 +92,12 @@ HYBRID_SPIN = np.array([0.0, 0.2, 0.0])  # [rad/s] about the vertical through th
 def hybrid_chain():
     """``models/chain.toml`` lengthened to 18 boxes (density 1) and 17 FEM links, 1 cm above the plane,
     turning at 0.2 rad/s (not compiled)."""
-    from ..bodies.hybrid.body import BodyHybrid
     from ..core.config import resolve_case
+    from .runner import build_body
 
     case = resolve_case("chain", "hybrid", "flat", overrides=[
         f"creature.segments={HYBRID_RIGID}", "body.rigid_density_kg_m3=1.0", "scenario.start_height_m=0.01"])
-    body = BodyHybrid(case)
+    body = build_body(case)
     com = body.observe(0.0).com
     body.rigid.v[:] = np.cross(HYBRID_SPIN, body.rigid.c - com)
     body.rigid.w[:] = HYBRID_SPIN

@@ -84,16 +84,14 @@ def path_length(points: np.ndarray) -> float:
     return float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum())
 
 
-def series_behaviour_metrics(series, case, world=None) -> dict[str, float]:
+def series_behaviour_metrics(series, case, world) -> dict[str, float]:
     """``path_length_m`` (the head end's path) and ``terrain_clearance_min_m`` of a recorded run (world: the
-    run's ``world.world.World``, whose terrain the clearance is measured to; built from the case when None)."""
-    from ..world.world import world_of
-
+    run's ``world.world.World``, whose terrain the clearance is measured to)."""
     out = {"path_length_m": path_length(series.head)}
     if case.scenario.terrain == "none":
         out["terrain_clearance_min_m"] = float("nan")
     else:
-        kind, f = world_of(case, world).terrain
+        kind, f = world.terrain
         pts = np.ascontiguousarray(np.asarray(series.segment_centers, dtype=float).reshape(-1, 3))
         out["terrain_clearance_min_m"] = float(min_signed_distance(kind, f, pts))
     return out

@@ -9,13 +9,13 @@ from .shape_tracking import shape_tracking_metrics
 from .spline_departure import spline_departure_metrics
 
 
-def legless_metrics(series: Series, case, body_length_m: float, world=None) -> dict[str, float]:
+def legless_metrics(series: Series, case, body_length_m: float, world) -> dict[str, float]:
     """curvature_amplitude, body_wavelength_bl, heading_drift_deg_per_cycle (steady window),
     roll_max_deg, segment_contact_fraction, lift_max_m, airborne_max_s, posture_fault, and for a gait that
     commands its shape shape_tracking_error and shape_not_achieved, and for a bending gait tail_swing_ratio and
     sideways_slip_ratio (``metrics.body_shape``, ``metrics.posture``, ``metrics.shape_tracking``,
-    ``metrics.spline_departure``).  body_length_m: rest length head to tail [m]; world: the
-    run's ``world.world.World`` (built from the scenario where needed when None)."""
+    ``metrics.spline_departure``).  body_length_m: rest length head to tail [m]; world: the run's
+    ``world.world.World``."""
     if len(series.t) < 3:
         return {}
     period = case.gait.period_s

@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from ..core.series import Series
-from ..world.terrain import base_height, terrain_from_scenario
+from ..world.terrain import base_height
 
 ROLL_FAULT_DEG = 90.0  # a cross-section turned beyond 90 degrees lies on its side or back
 AIRBORNE_FAULT_S = 0.3  # longer than a free fall of 0.44 m or a hop of 0.11 m
@@ -88,19 +88,16 @@ def longest_run_s(t: np.ndarray, mask: np.ndarray) -> float:
     return float(best)
 
 
-def ground_clearance(series: Series, scenario, world=None) -> np.ndarray:
+def ground_clearance(series: Series, scenario, world) -> np.ndarray:
     """Height [m] (T,) of the lowest segment centre above the scenario's base surface beneath it (world: the
-    run's ``world.world.World``, its terrain; built from the scenario here when None)."""
+    run's ``world.world.World``, its terrain)."""
     c = series.segment_centers
-    if world is not None:
-        kind, f = world.terrain
-    else:
-        kind, f = (None, None) if scenario.terrain == "mesh" else terrain_from_scenario(scenario)
+    kind, f = world.terrain
     h = base_height(scenario, kind, f, c[..., 0], c[..., 2])
     return (c[..., 1] - h).min(axis=1)
 
 
-def posture_metrics(series: Series, scenario, i0: int, i1: int, world=None) -> dict[str, float]:
+def posture_metrics(series: Series, scenario, i0: int, i1: int, world) -> dict[str, float]:
     """roll_max_deg, segment_contact_fraction, lift_max_m, airborne_max_s, posture_fault (world: as
     ``ground_clearance``)."""
     nan = float("nan")

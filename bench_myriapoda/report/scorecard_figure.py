@@ -17,8 +17,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .figure_files import LABEL_PT, WIDE_IN, save_figure  # noqa: E402
 
-MARKERS = {"massspring": "s", "fem": "^", "hybrid": "o"}
+MARKER_CYCLE = ("^", "o", "s", "D", "v", "P", "X")  # body models in name order (fem, hybrid, massspring, ...)
 ERROR_FLOOR = 1e-3  # errors below this (0.1 %) are drawn at it: a log axis has no zero
+
+
+def body_markers(bodies) -> dict[str, str]:
+    """One marker per body model: the catalog's body models (and ``bodies``) in name order take ``MARKER_CYCLE``
+    in turn, so a body keeps its marker whichever bodies a figure shows, no body is named here, and the
+    shipped three keep the markers they always had (fem ^, hybrid o, massspring s)."""
+    from ..core import registry
+
+    registry.load_all()
+    names = sorted(set(registry.BODIES) | set(bodies))
+    return {b: MARKER_CYCLE[i % len(MARKER_CYCLE)] for i, b in enumerate(names)}
 
 
 def plot_error_vs_cost(points: list[tuple[str, str, float | None, float, str]], path: Path | str) -> Path:
@@ -34,8 +45,9 @@ def draw_error_vs_cost(points: list[tuple[str, str, float | None, float, str]]):
     colors = {c: plt.get_cmap("tab10")(i % 10) for i, c in enumerate(creatures)}
     kinds = sorted({p[4] for p in points if p[2] is not None})
     labelled = []  # (axes, x, y, text)
+    markers = body_markers({p[1] for p in points})
     for creature, body, err, cost, _kind in points:
-        m = MARKERS.get(body, "D")
+        m = markers[body]
         if err is None:
             strip.scatter([cost], [0], marker=m, s=70, color=colors[creature], edgecolor="k")
             labelled.append((strip, cost, 0.0, f"{creature}/{body}"))
@@ -49,7 +61,7 @@ def draw_error_vs_cost(points: list[tuple[str, str, float | None, float, str]]):
     ax.grid(True, which="both", alpha=0.3)
     ax.set_title("Scorecard: error against cost per creature (colour) and body model (marker); "
                  "lower left is better")
-    handles = [plt.Line2D([], [], marker=MARKERS.get(b, "D"), ls="", color="grey", markeredgecolor="k", label=b)
+    handles = [plt.Line2D([], [], marker=markers[b], ls="", color="grey", markeredgecolor="k", label=b)
                for b in sorted({p[1] for p in points})]
     handles += [plt.Line2D([], [], marker="o", ls="", color=colors[c], label=c) for c in creatures]
     legend = ax.legend(handles=handles, loc="best", ncols=2)

@@ -23,7 +23,6 @@ import numpy as np  # noqa: E402
 
 from ..core.schema import ScenarioConfig  # noqa: E402
 from ..harness.recorder import Series  # noqa: E402
-from ..world.terrain import terrain_from_scenario  # noqa: E402
 from ..world.terrain_kernels import terrain_phi_numpy  # noqa: E402
 from .figure_files import LABEL_PT, WIDE_IN, save_figure  # noqa: E402
 
@@ -71,7 +70,7 @@ def motion_spaced_frames(centers: np.ndarray, frames: int) -> np.ndarray:
     return np.unique(np.clip(idx, 0, T - 1))
 
 
-def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: int = 6, world=None) -> Path:
+def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: int = 6, *, world) -> Path:
     """The body from the side at ``frames`` times spaced by its motion, over the terrain profile.
 
     Coloured by ``viridis`` in time order: dark purple first, yellow last; the legend gives the times.
@@ -92,8 +91,7 @@ def plot_side_strip(title: str, s: Series, scenario: dict, path: Path, frames: i
     ys_all = s.segment_centers[..., 1]
     y_lo, y_hi = float(ys_all.min()), float(ys_all.max())
     if scenario.get("terrain", "plane") != "none":
-        # the case's world when the caller built it (``MatrixResults.world``), else its terrain built here
-        kind, f = terrain_from_scenario(scenario_config(scenario)) if world is None else world.terrain
+        kind, f = world.terrain  # the case's world, built once by the caller (``MatrixResults.world``)
         # terrain profile in the x-y plane: the highest y with phi <= 0 below each x, by bisection on a grid
         ygrid = np.linspace(min(y_lo, scenario.get("ground_height_m", 0.0)) - 0.5 * (y_hi - y_lo + 0.1), y_hi, 600)
         P = np.stack(np.broadcast_arrays(xs[:, None], ygrid[None, :], 0.0 * xs[:, None]), axis=-1).reshape(-1, 3)

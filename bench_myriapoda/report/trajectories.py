@@ -19,20 +19,18 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 from .figure_files import WIDE_IN, save_figure  # noqa: E402
 
 
-def draw_terrain_top(ax, scenario: dict, food: dict | None = None, world=None) -> None:
+def draw_terrain_top(ax, scenario: dict, food: dict | None, world) -> None:
     """The scenario's world seen from above (x right, z down): slab edge, slope direction, height-field
     contours, mesh silhouette, obstacles (cylinders as discs, boxes as rectangles) and food (green dots).
 
     scenario, food: the stored case's sections (``Case.to_dict()["scenario"]``, ``["food"]``); world: the
-    case's ``world.world.World`` when the caller built it (``MatrixResults.world``: its terrain and food are
-    drawn), else they are built here from the sections.
+    case's ``world.world.World``, built once by the caller (``MatrixResults.world``): its terrain and food
+    are drawn (``food`` only says whether to draw the food).
     """
     from matplotlib.patches import Circle, Polygon
 
-    from ..core.schema import FoodConfig
-    from ..world.food import food_sources
     from ..world.terrain import terrain_description
-    from .series_plots import scenario_config, stored_section
+    from .series_plots import scenario_config
     from .terrain_drawing import draw_terrain_shape
 
     kind = scenario.get("terrain", "plane")
@@ -48,7 +46,7 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None, world=None) -
         ax.text(0.02, 0.02, f"slope {scenario['slope_deg']:g} deg, rising toward +x", transform=ax.transAxes,
                 fontsize=9, color="saddlebrown")
     sc = scenario_config(scenario)
-    desc = terrain_description(sc, None if world is None else world.terrain)
+    desc = terrain_description(sc, world.terrain)
     draw_terrain_shape(ax, None, desc.kind, desc.f, xlim, None, ylim)  # height field / mesh as they are
     for c in desc.cylinders:
         ax.add_patch(Circle((c["x"], c["z"]), c["radius"], color="dimgray", alpha=0.8, zorder=1))
@@ -58,7 +56,7 @@ def draw_terrain_top(ax, scenario: dict, food: dict | None = None, world=None) -
         rot = np.array([[np.cos(yaw), np.sin(yaw)], [-np.sin(yaw), np.cos(yaw)]])
         ax.add_patch(Polygon(corners @ rot.T + [cx, cz], color="dimgray", alpha=0.8, zorder=1))
     if food:
-        src = food_sources(sc, stored_section(FoodConfig, food)) if world is None else world.food
+        src = world.food
         if len(src):
             ax.plot(src[:, 0], src[:, 2], "o", color="limegreen", mec="darkgreen", ms=5, zorder=4, label="food")
 
@@ -114,7 +112,7 @@ def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: in
     walks 1 m shows its path here.  Everything is coloured by time with ``viridis``, dark
     purple at t = 0 to yellow at the end, as the colour bar shows.  Both panels have equal scales in x
     and z.  ``scenarios``, ``foods``: each run's scenario and food sections (``Case.to_dict()``); ``worlds``:
-    each run's built ``world.world.World`` (``draw_terrain_top``), or None to build them from the sections.
+    each run's built ``world.world.World`` (``draw_terrain_top``; required with ``scenarios``).
     """
     n = len(runs)
     body_lim = [body_limits(s) for _, s in runs]
@@ -156,8 +154,7 @@ def plot_top_views(runs: Sequence[tuple[str, Series]], path: Path, snapshots: in
             a.set_xlabel("x [m]")
             a.set_ylabel("z [m]")
         if scenarios is not None:
-            draw_terrain_top(ax, scenarios[r], foods[r] if foods is not None else None,
-                             worlds[r] if worlds is not None else None)
+            draw_terrain_top(ax, scenarios[r], foods[r] if foods is not None else None, worlds[r])
     axes[0].legend(loc="best")
     bar = fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), ax=axes, orientation="horizontal", shrink=0.5,
                        aspect=40, pad=0.02)

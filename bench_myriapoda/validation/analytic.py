@@ -73,9 +73,9 @@ def rigid_rotation(ctx: Context, body: str) -> Outcome:
                 worst = max(worst, np.abs(s.elastic_forces()).max() / scale)
     elif body == "massspring":
         from ..bodies.massspring import kernels as K
-        from ..bodies.massspring.body import BodyMassSpring
         from ..core.config import resolve_case
-        b = BodyMassSpring(resolve_case("worm", "massspring", "flat", overrides=["creature.segments=4"]))
+        from ..harness.runner import build_body
+        b = build_body(resolve_case("worm", "massspring", "flat", overrides=["creature.segments=4"]))
         lat = b.lattice
         x0 = lat.rest_nodes
         scale = float(np.max(b.stiffness)) * float(np.max(lat.rest_length))
@@ -139,15 +139,16 @@ def free_fall_momentum(ctx: Context, body: str) -> Outcome:
 
 def stable_dt(ctx: Context, body: str) -> Outcome:
     """``stable-dt`` on an undamped 3-segment lattice against symplectic Euler's limit 2 / omega_max."""
-    from ..bodies.massspring.body import BodyMassSpring
     from ..core.config import resolve_case
+    from ..harness.runner import build_body, run_world
     from ..harness.stable_dt import find_stable_dt
 
     case = resolve_case("worm", "massspring", "drop", duration=1.0 if ctx.quick else 2.0, overrides=[
         "creature.segments=3", "scenario.passive=true", "scenario.gravity_m_s2=0", "scenario.start_height_m=1",
         "body.damping=0", "scenario.perturbation_m=1e-6"])
-    expected = R.symplectic_euler_dt_limit(R.lattice_omega_max(BodyMassSpring(case)))
-    res = find_stable_dt(case, rel_tol=0.02)
+    world = run_world(case)  # one world for the body measured here and every trial run
+    expected = R.symplectic_euler_dt_limit(R.lattice_omega_max(build_body(case, world)))
+    res = find_stable_dt(case, rel_tol=0.02, world=world)
     return relative(res.stable_dt_max_s, expected, STABLE_DT_REL_TOL, "s",
                     detail=f"bracket [{res.stable_dt_max_s:.4g}, {res.unstable_dt_min_s:.4g}] s",
                     unstable_dt_min_s=res.unstable_dt_min_s)

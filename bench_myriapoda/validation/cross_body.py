@@ -60,7 +60,6 @@ def centipede_phase_lag(ctx: Context, body: str) -> Outcome:
 
 HANG_SETTLE_S = 0.5  # the static elongation: the time mean after the first quarter-oscillation
 HANG_RESOLUTION = 5  # nodes per link edge for the hang comparison (hang_elongation_difference says why)
-HANG_DT_S = {"fem": 1.0 / 6000.0}  # the fem chain at 5 nodes per edge blows up at 1/3000 s within 1 s
 HANG_AGREEMENT = 0.10  # |(fem / its bar value) / (hybrid / its bar value) - 1|
 
 
@@ -106,7 +105,8 @@ def bar_elongation(s_mass, mass, bounds, ea, s_top: float, s_bottom: float, g: f
 
 
 def hanging_bar_reference(case) -> tuple[float, float]:
-    """(bar value [m], Young's modulus / oedometric modulus) of a hanging chain body (fem or hybrid).
+    """(bar value [m], Young's modulus / oedometric modulus) of a hanging chain body (one whose ``BodySpec``
+    declares its ``hanging_bar``: fem and hybrid).
 
     The bar value is ``bar_elongation`` of the body's own simulated masses (the hybrid: its boxes
     and its links' free nodes, whose share of a link's mass is (n - 2) / (n - 1) at n nodes per
@@ -122,23 +122,17 @@ def hanging_bar_reference(case) -> tuple[float, float]:
     import numpy as np
 
     from ..core import registry
+    from ..harness.runner import build_body
 
-    body = registry.BODIES[case.body.name].factory(case)
-    cfg, cre, g = case.body, case.creature, case.scenario.gravity_m_s2
+    registry.load_all()
+    spec = registry.BODIES[case.body.name]
+    if spec.hanging_bar is None:
+        raise ValueError(f"no hanging bar reference for body {case.body.name!r}: its BodySpec declares none")
+    cfg = case.body
+    g = case.scenario.gravity_m_s2
     E, nu = cfg.youngs_modulus_pa, cfg.poisson_ratio
-    if case.body.name == "hybrid":
-        lay = body.layout
-        n, P, l_head = lay.n_rigid, lay.pitch, lay.rigid_length
-        s_mass = np.concatenate([np.arange(n) * P + 0.5 * lay.rigid_length, -body.mesh.nodes[body.free, 0]])
-        mass = np.concatenate([body.rigid.mass, body.fem.mass[body.free]])
-        piece_ea = (math.inf, E * lay.link_height * lay.link_width)
-    elif case.body.name == "fem":
-        n, P, l_head = body.n_blocks, body.pitch, body.block_length
-        s_mass, mass = -body.rest[:, 0], body.fem.mass
-        a = cre.height_m * cre.width_m
-        piece_ea = (cfg.rigid_stiffness_factor * E * a, E * a)
-    else:
-        raise ValueError(f"no hanging bar reference for body {case.body.name!r} (fem and hybrid only)")
+    hb = spec.hanging_bar(build_body(case), case)  # the body's own geometry and masses
+    s_mass, mass, n, P, l_head, piece_ea = hb.s_mass, hb.mass, hb.n_segments, hb.pitch, hb.head_length, hb.piece_ea
     bounds = np.sort(np.concatenate([np.arange(n) * P, np.arange(n) * P + l_head, [n * P]]))[:2 * n]
     ea = np.array([piece_ea[k % 2] for k in range(2 * n - 1)])
     bar = bar_elongation(s_mass, mass, bounds, ea, 0.5 * l_head, (n - 1) * P + 0.5 * l_head, g)
@@ -165,10 +159,14 @@ def hang_elongation_difference(ctx: Context, body: str) -> Outcome:
     (fem 21.8 cm, hybrid 14.1 cm: 1.55x), a mesh artefact; at 5 and 7 nodes the two bodies' q
     agree within 3 % (issue 11; README, validate).
     """
-    if not {"fem", "hybrid"} <= set(ctx.bodies):
-        return not_applicable("compares the fem and hybrid bodies; select both (--body)")
+    pair = hanging_pair()
+    if len(pair) < 2:
+        return not_applicable("needs two body models that declare a hanging bar (BodySpec.hanging_bar)")
+    a, b2 = pair
+    if not {a, b2} <= set(ctx.bodies):
+        return not_applicable(f"compares the {a} and {b2} bodies; select both (--body)")
     res = (f"body.resolution={HANG_RESOLUTION}", "body.resolution_unit=nodes")
-    runs = {b: ctx.run("centipede", b, "hang", duration=3.0, overrides=res, dt=HANG_DT_S.get(b)) for b in ("fem", "hybrid")}
+    runs = {b: ctx.run("centipede", b, "hang", duration=3.0, overrides=res, dt=_spec(b).hang_dt_s) for b in pair}
     for r in runs.values():
         if r.status != "ok":
             return failed_run(r)
@@ -177,17 +175,30 @@ def hang_elongation_difference(ctx: Context, body: str) -> Outcome:
         bar, lo[b] = hanging_bar_reference(r.case)
         e[b] = static_elongation(r)
         q[b] = e[b] / bar
-    agree = q["fem"] / q["hybrid"] - 1.0
+    agree = q[a] / q[b2] - 1.0
     bounded = all(lo[b] <= q[b] <= 1.0 for b in q)
     ok = bounded and abs(agree) <= HANG_AGREEMENT
-    ratio = e["fem"] / e["hybrid"]
-    bar_ratio = (e["fem"] / q["fem"]) / (e["hybrid"] / q["hybrid"])
+    ratio = e[a] / e[b2]
+    bar_ratio = (e[a] / q[a]) / (e[b2] / q[b2])
     return holds(ok, round(ratio, 3), round(bar_ratio, 3),
-                 f"fem / hybrid within {100 * HANG_AGREEMENT:g} % of the bar values' ratio; each body within "
+                 f"{a} / {b2} within {100 * HANG_AGREEMENT:g} % of the bar values' ratio; each body within "
                  f"[E/M, 1] of its bar value",
-                 f"{HANG_RESOLUTION} nodes per edge; static elongation fem {e['fem'] * 100:.2f} cm "
-                 f"({q['fem']:.3f} of its bar value {e['fem'] / q['fem'] * 100:.2f} cm), hybrid "
-                 f"{e['hybrid'] * 100:.2f} cm ({q['hybrid']:.3f} of {e['hybrid'] / q['hybrid'] * 100:.2f} cm); "
-                 f"E/M = {lo['fem']:.3f}",
-                 fem_m=e["fem"], hybrid_m=e["hybrid"], fem_of_bar=q["fem"], hybrid_of_bar=q["hybrid"],
+                 f"{HANG_RESOLUTION} nodes per edge; static elongation {a} {e[a] * 100:.2f} cm "
+                 f"({q[a]:.3f} of its bar value {e[a] / q[a] * 100:.2f} cm), {b2} "
+                 f"{e[b2] * 100:.2f} cm ({q[b2]:.3f} of {e[b2] / q[b2] * 100:.2f} cm); "
+                 f"E/M = {lo[a]:.3f}",
+                 **{f"{a}_m": e[a], f"{b2}_m": e[b2], f"{a}_of_bar": q[a], f"{b2}_of_bar": q[b2]},
                  agreement=agree)
+
+
+def _spec(name: str):
+    from ..core import registry
+
+    registry.load_all()
+    return registry.BODIES[name]
+
+
+def hanging_pair() -> tuple[str, ...]:
+    """The first two body models, in the catalog's order, that declare a hanging bar (``BodySpec.hanging_bar``):
+    the pair the hanging comparison compares (fem and hybrid)."""
+    return tuple(b for b in all_bodies() if _spec(b).hanging_bar is not None)[:2]

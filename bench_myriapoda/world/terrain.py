@@ -75,6 +75,13 @@ def _mesh_params_cached(mesh: str, subdivisions: int, scale: float, translate: t
     return f
 
 
+def no_ground_terrain() -> tuple[int, np.ndarray]:
+    """(kind, f) of no ground at all: the plane far below (``NO_GROUND_HEIGHT_M``) that ``terrain = "none"`` builds."""
+    f = np.zeros(N_TERRAIN_PARAMS)
+    f[0] = NO_GROUND_HEIGHT_M
+    return TERRAIN_KINDS["none"], f
+
+
 def _base_terrain(sc) -> tuple[int, np.ndarray]:
     kind = TERRAIN_KINDS[sc.terrain]
     if kind == HEIGHTFIELD:

@@ -1,17 +1,19 @@
 """The world of one run, built once from the scenario: terrain with its obstacles, food sources, the water's bed.
 
-``build_world(case)`` (or ``World.from_case``) builds it; the runner does so once per run and hands the same
-``World`` to the body (its factory's ``world`` argument), the controller (its constructor's) and the metrics
-(their ``world`` argument), so no part of a run rebuilds the terrain from the scenario (issue 30 item 1: the
-terrain used to be rebuilt in about 13 places, a 10^5-triangle mesh terrain each time from its cache, random
-cylinders and food sources redrawn each time).  Each of those keeps a fallback that builds its own world when
-it is given none (a body or controller built alone, by a test or a script).  The curvature calibration
-(``harness.calibration``, on a cache miss) measures a short copy of the body in a world of its own (no ground,
-no gravity: ``bodies.curvature_calibration._calibration_case``): a different world, which
-``harness.calibration`` builds through ``build_world`` from that case's own scenario.  Outside a run the same
-rule holds: the CLI builds a case's world once in its pre-run placement check (``world.buildable``) and hands
-it to the run and to the animation; the report builds one world per stored case
-(``report.matrix_data.MatrixResults.world``) and hands it to every plot of that case.
+``build_world(case)`` (or ``World.from_case``) builds it; the runner does so once per run
+(``harness.runner.run_world``) and hands the same ``World`` to the body (every body factory is called
+``factory(case, world)``), the controller (``controller(case, world=world)`` when its ``GaitSpec`` says
+``takes_world``) and the metrics (their ``world`` argument), so no part of a run rebuilds the terrain from
+the scenario (issue 30 item 1: the terrain used to be rebuilt in about 13 places, a 10^5-triangle mesh
+terrain each time from its cache, random cylinders and food sources redrawn each time; issue 42: bodies,
+metrics and plots have no fallback that builds one, and only ``world/`` builds a world from a scenario, a
+static test in ``tests/test_world_built_once.py`` names the few owners outside it).  The curvature
+calibration (``bodies.curvature_calibration``, on a cache miss) measures a short copy of the body off the
+ground: in the run's world less its ground, obstacles and food (``World.without_ground``), derived, not
+built.  Outside a run the same rule holds: the CLI builds a case's world once in its pre-run placement check
+(``world.buildable``) and hands it to the run and to the animation; the report builds one world per stored
+case (``report.matrix_data.MatrixResults.world``) and hands it to every plot of that case.  Only the leg
+controller set up alone (a script, a test) still builds its own (``world_of``).
 
 What the world holds does not change during a run (Newton's "model", as against the body's state): the
 terrain vector ``terr`` (``terrain_kernels`` layout, obstacles and their grid included) is shared by
@@ -22,7 +24,6 @@ the world holds its bed (the terrain) and whether there is water at all.
 """
 from __future__ import annotations
 
-import inspect
 from dataclasses import dataclass
 from typing import Any
 
@@ -64,6 +65,17 @@ class World:
     def has_water(self) -> bool:
         return self.scenario.water_depth_m > 0.0
 
+    def without_ground(self, scenario) -> World:
+        """The world of a body measured apart from the run (``harness.calibration``: the curvature calibration):
+        no ground, no obstacles, no food; ``scenario`` (``terrain = "none"``) gives its placement rules.
+
+        Derived here, not built from ``scenario``: what that measurement sees cannot depend on the run's
+        terrain (its cache key, ``curvature_calibration.calibration_key``, holds none of the scenario)."""
+        if scenario.terrain != "none":
+            raise ValueError(f"without_ground: the scenario's terrain is {scenario.terrain!r}; must be 'none'")
+        kind, f = _terrain.no_ground_terrain()
+        return World(scenario, kind, f, self.food[:0])
+
     def placement_terrain(self) -> tuple[int, np.ndarray]:
         """The surface a body is placed above at t = 0 (``terrain.placement_terrain``'s rule, from this world)."""
         return _terrain.placement_from(self.scenario, self.terr_kind, self.terr)
@@ -86,22 +98,8 @@ def world_from_sections(sc, food) -> World:
     return World(sc, kind, f, sources)
 
 
-def takes_world(make) -> bool:
-    """True when ``make`` (a body factory, a controller class) accepts a ``world`` keyword: it is then given
-    the run's ``World``; one that does not (a user's, written before the world existed) gets the case alone."""
-    try:
-        params = inspect.signature(make).parameters.values()
-    except (TypeError, ValueError):  # a callable without a signature Python can read
-        return False
-    return any(p.name == "world" or p.kind is inspect.Parameter.VAR_KEYWORD for p in params)
-
-
-def made_in(make, case, world: World):
-    """``make(case)`` in ``world``: passed as its ``world`` keyword when it takes one (``takes_world``)."""
-    return make(case, world=world) if takes_world(make) else make(case)
-
-
 def world_of(case, world: World | None) -> World:
-    """``world`` when given, else ``case``'s built here: for a body, a controller or a metric used without a
-    runner (the runner always passes its one world)."""
+    """``world`` when given, else ``case``'s built here: for the leg controller built alone, by a script or a
+    test (the runner always hands its one world to the controller it composes; bodies, metrics and plots take
+    the world they are given and build none: ``tests/test_world_built_once.py``)."""
     return build_world(case) if world is None else world

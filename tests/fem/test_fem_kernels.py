@@ -278,15 +278,15 @@ def test_predicted_rotation_follows_a_steady_spin(spin):
     nt = s.n_tets
     angle_k = 0.0
     for k in range(8):
-        q0 = _tet_rows(s._q_ws, 0, 4, nt)
-        pred = _quat_mul(q0, np.column_stack([np.ones(nt), _tet_rows(s._q_ws, K.Q_D, 3, nt)]))
+        q0 = _tet_rows(s.q_ws, 0, 4, nt)
+        pred = _quat_mul(q0, np.column_stack([np.ones(nt), _tet_rows(s.q_ws, K.Q_D, 3, nt)]))
         angle_k += 0.0 if k == 0 else (spin if k < 6 else 1.02 * spin)
         s.x[:] = base @ _rodrigues(axis, angle_k).T
         f = np.zeros_like(s.x)
-        n_slow = K.elastic_forces(s.x, s.tets, s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, f)
+        n_slow = K.elastic_forces(s.x, s.tets, s.Dm_inv_eff, s.coef, s.q_ws, s.F_work, s.H_work, f)
         ref = forces_np(s.x, s.tets, s.Dm_inv, s.vol, s.mu, s.lam)
         assert np.abs(f - ref).max() < FORCE_REF_TOL * np.abs(ref).max()
-        q = _tet_rows(s._q_ws, 0, 4, nt)
+        q = _tet_rows(s.q_ws, 0, 4, nt)
         for e, t in enumerate(s.tets):
             Ds = np.stack([s.x[t[1]] - s.x[t[0]], s.x[t[2]] - s.x[t[0]], s.x[t[3]] - s.x[t[0]]], axis=1)
             U, _s, V = signed_svd_np(Ds @ s.Dm_inv[e])
@@ -294,10 +294,10 @@ def test_predicted_rotation_follows_a_steady_spin(spin):
             assert np.abs(R - U @ V.T).max() < NEWTON_ROT_TOL
         if 2 <= k < 6:
             assert n_slow == 0
-            rel = _quat_mul(pred * np.array([1.0, -1.0, -1.0, -1.0]), _tet_rows(s._q_ws, 0, 4, nt))
+            rel = _quat_mul(pred * np.array([1.0, -1.0, -1.0, -1.0]), _tet_rows(s.q_ws, 0, 4, nt))
             angle = 2.0 * np.arctan2(np.linalg.norm(rel[:, 1:], axis=1), np.abs(rel[:, 0]))
             assert angle.max() < K.NEWTON_TOL
-            d = _tet_rows(s._q_ws, K.Q_D, 3, nt)
+            d = _tet_rows(s.q_ws, K.Q_D, 3, nt)
             np.testing.assert_allclose(np.linalg.norm(d, axis=1), np.tan(spin / 2), rtol=1e-6)
 
 

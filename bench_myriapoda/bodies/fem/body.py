@@ -29,8 +29,7 @@ from ...core.errors import InputError
 from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
-from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
+from ...core.specs import BodySpec, Footprint, HangingBar
 from ..case_scalars import contact_scalars
 from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
@@ -175,7 +174,7 @@ class BodyFEM(NodeSegments):
     name = "fem"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: FEMConfig = case.body
         self.case = case
@@ -221,8 +220,8 @@ class BodyFEM(NodeSegments):
         self.head_nodes = np.flatnonzero(nodes[:, 0] >= nodes[:, 0].max() - end_band)
         self.tail_nodes = np.flatnonzero(nodes[:, 0] <= nodes[:, 0].min() + end_band)
 
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(BK.N_PHYS)
@@ -262,13 +261,13 @@ class BodyFEM(NodeSegments):
                           (so.perm, so.sky_first, so.sky_ptr, so.sky_L, so.fp_ptr, so.fp_col, so.fp_val),
                           (self.node_seg, self.node_seg_b, self.node_w, self.seg_ptr, self.seg_nodes),
                           self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                          (s.Dm_inv_eff, s.coef, s._q_ws, s._F_work, s._H_work, s._inc_ptr, s._inc_off,
+                          (s.Dm_inv_eff, s.coef, s.q_ws, s.F_work, s.H_work, s.inc_ptr, s.inc_off,
                            self._force, self._b_work, self._centers, self._spine),
                           self._act, self.acc)
 
     def compile(self) -> None:
         x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
-        q = self.system._q_ws.copy()
+        q = self.system.q_ws.copy()
         Dm, coef = self.system.Dm_inv_eff.copy(), self.system.coef.copy()
         act = Actuation.for_body(self)
         act.muscles_on = True  # compile the active-strain path too
@@ -277,7 +276,7 @@ class BodyFEM(NodeSegments):
         self._sample_invariants()
         self.sense(Observation(), 0.0)
         self.x[:], self.v[:], self.acc[:] = x, v, acc
-        self.system._q_ws[:] = q
+        self.system.q_ws[:] = q
         self.system.Dm_inv_eff[:], self.system.coef[:] = Dm, coef
         self.quality.reset()
 
@@ -331,7 +330,7 @@ class BodyFEM(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_fem(case, world=None):
+def make_fem(case, world):
     """The FEM body; a creature with legs is built as one mesh of stiff segment blocks and soft links
     (``fem.myriapod``): legs attach to rigid segments (the creature's morphology; the leg controller
     itself is composed by the runner); world: the run's ``world.world.World``."""
@@ -378,6 +377,16 @@ def check_buildable(case, source: str) -> None:
 
 
 # check name -> run by ``validate --quick`` (validation.registry)
+def hanging_bar(body, case) -> HangingBar:
+    """The legged fem chain (``BodyFEMChain``) as a hanging bar (``core.specs.HangingBar``): every node's mass at
+    its rest position along the axis; the blocks ``rigid_stiffness_factor`` E A, the links E A."""
+    cfg, cre = case.body, case.creature
+    E = cfg.youngs_modulus_pa
+    a = cre.height_m * cre.width_m
+    return HangingBar(-body.rest[:, 0], body.fem.mass, body.n_blocks, body.pitch, body.block_length,
+                      (cfg.rigid_stiffness_factor * E * a, E * a))
+
+
 CHECKS = {"analytic.worm-eps-lambda": True, "analytic.hanging-bar": True, "analytic.cantilever": True,
           "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True, "analytic.damping-pure-mode": True,
           "analytic.damping-oscillating-mode": True, "analytic.slithering": False,
@@ -401,4 +410,15 @@ BACKEND = BodySpec(
     shape_gain_p=0.5,
     # its third-harmonic correction at gain 1 per cycle: without it the snake ran 30 % short of the reference at
     # mu_t / mu_f = 1.5 (docs/explanation/shape-tracking.md)
-    shape_harmonic_gain_per_cycle=1.0)
+    shape_harmonic_gain_per_cycle=1.0,
+    # per-step wall [s] per size unit with warm kernels, unlegged / legged (harness.schedule): from the quick
+    # matrix on the development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs):
+    # the median over its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's
+    # summed case times (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker)
+    step_cost_s={False: 2.3e-7, True: 4.0e-7},
+    # what validation.cross_body's hanging-bar reference reads of a built chain
+    hanging_bar=hanging_bar,
+    hang_dt_s=1.0 / 6000.0,  # the chain at 5 nodes per edge blows up at 1/3000 s within 1 s
+    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
+    suite_scenes={"worm": ("fem-worm", 20.0 * 27.0),  # the default 20-segment worm, resolution 3
+                  "centipede": ("fem-centipede", 18.0 * 27.0)})

@@ -65,7 +65,6 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from ...world.world import world_of
 from ..case_scalars import contact_scalars
 from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
@@ -322,7 +321,7 @@ class BodyFEMChain(LeggedSegments):
     """
 
     name = "fem"
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -367,8 +366,8 @@ class BodyFEMChain(LeggedSegments):
         self.att_nodes = np.flatnonzero(side).astype(np.int64)
         self.att_block = node_block[self.att_nodes].astype(np.int64)
         self.gravity = np.array([0.0, -sc.gravity_m_s2, 0.0])
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(N_PHYS)
@@ -400,8 +399,8 @@ class BodyFEMChain(LeggedSegments):
     def _chain_args(self) -> tuple:
         """``advance_chain``'s packs (the chain's arrays, the world)."""
         f, s = self.fem, self.solver
-        chain = (self.x, self.v, f.mass, f.tets, f._inc_ptr, f._inc_off, f.coef, f._q_ws, f._F_work,
-                           f._H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
+        chain = (self.x, self.v, f.mass, f.tets, f.inc_ptr, f.inc_off, f.coef, f.q_ws, f.F_work,
+                           f.H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
                            self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
                            self.support, self._f_work, self._b_work, self._cent, self._spine)
         return chain, (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
@@ -414,10 +413,10 @@ class BodyFEMChain(LeggedSegments):
         return BlockChainLegs(blocks, self._chain_args() + (self.acc,))
 
     def _state(self):
-        return [a.copy() for a in (self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc)]
+        return [a.copy() for a in (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc)]
 
     def _restore(self, saved) -> None:
-        for dst, src in zip((self.x, self.v, self.fem._q_ws, self.support, self.att_target, self.acc), saved):
+        for dst, src in zip((self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc), saved):
             dst[...] = src
 
     def compile(self) -> None:

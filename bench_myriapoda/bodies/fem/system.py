@@ -159,11 +159,14 @@ class FEMSystem:
 
         self.x = self.X.copy()
         self.v = np.zeros((n, 3))
-        # Per-tet rotations (quaternions) that warm-start the corotational Newton
-        # solve, and the blocked scratch of the element pass.
-        self._q_ws, self._F_work, self._H_work = K.new_tet_workspace(m)
-        # each node's entries of H_work, for the node-by-node force sums of the step
-        self._inc_ptr, self._inc_off = K.node_incidence(self.tets, n)
+        # Public, for the bodies that step this system inside their own kernels (the fem chain, the hybrid's
+        # links).  q_ws (n_tet_blocks, N_Q LANES): the per-tet rotations (quaternions) that warm-start the
+        # corotational Newton solve: part of the dynamic state, since each step's solve starts from the last
+        # one's, so whoever saves and restores the state (a benchmark repeating a run) saves and restores it
+        # too (in place).  F_work, H_work: the blocked scratch of the element pass (``kernels.new_tet_workspace``).
+        self.q_ws, self.F_work, self.H_work = K.new_tet_workspace(m)
+        # inc_ptr, inc_off: each node's entries of H_work, for the node-by-node force sums of the step
+        self.inc_ptr, self.inc_off = K.node_incidence(self.tets, n)
         self._f_work = np.zeros((n, 3))
         self._f_ext_zero = np.zeros((n, 3))
         self._solvers: dict[tuple[bytes, float], _Solver] = {}
@@ -173,13 +176,6 @@ class FEMSystem:
     @property
     def n_nodes(self) -> int:
         return len(self.X)
-
-    @property
-    def q_ws(self) -> np.ndarray:
-        """(n_tet_blocks, N_Q LANES) the per-tet rotations (``kernels.new_tet_workspace``): part of the dynamic
-        state, since each step's corotational solve starts from the last one's, so whoever saves and restores
-        the state (a benchmark repeating a run) saves and restores this array too (in place)."""
-        return self._q_ws
 
     @property
     def n_tets(self) -> int:
@@ -243,19 +239,19 @@ class FEMSystem:
         else:
             contact, kind, params = True, int(terrain[0]), np.ascontiguousarray(terrain[1], dtype=np.float64)
         steps, status = K.advance(
-            self.x, self.v, (self.tets, self._inc_ptr, self._inc_off, self.coef, self.mass),
+            self.x, self.v, (self.tets, self.inc_ptr, self.inc_off, self.coef, self.mass),
             g, fe, float(dt), int(n_steps),
             (s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
              s.fixed, s.pf_ptr, s.pf_col, s.pf_val),
             (contact, kind, params, float(friction), float(v_limit)),
-            (self._q_ws, self._f_fixed, self._f_work, self._b_work, self._F_work, self._H_work))
+            (self.q_ws, self._f_fixed, self._f_work, self._b_work, self.F_work, self.H_work))
         return AdvanceResult(int(steps), int(status))
 
     def elastic_forces(self):
         """Elastic nodal forces at the current x, (n_nodes, 3) [N] (eqs. 7-11)."""
         f = np.zeros((self.n_nodes, 3))
-        K.elastic_forces(self.x, self.tets, self.Dm_inv_eff, self.coef, self._q_ws,
-                         self._F_work, self._H_work, f)
+        K.elastic_forces(self.x, self.tets, self.Dm_inv_eff, self.coef, self.q_ws,
+                         self.F_work, self.H_work, f)
         return f
 
     def fixed_node_forces(self):

@@ -67,6 +67,7 @@ the rigid boxes and the free FEM nodes (attached nodes are part of the boxes).
 """
 from __future__ import annotations
 
+import math
 from collections import namedtuple
 from dataclasses import dataclass
 from functools import cached_property
@@ -77,8 +78,7 @@ from ...core.errors import InputError
 from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
-from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
+from ...core.specs import BodySpec, Footprint, HangingBar
 from .. import rigid_kernels as rk
 from ..fem.element_quality import ElementQuality
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
@@ -236,7 +236,7 @@ class BodyHybrid(SupportedSegments):
 
     name = "hybrid"
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: HybridConfig = case.body
         sc = case.scenario
@@ -286,8 +286,8 @@ class BodyHybrid(SupportedSegments):
         self.total_mass = m_rigid * lay.n_rigid + free_mass
 
         # ---- world placement, terrain, attached nodes on the boxes
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         place_box_chain(case, self.world, mesh.nodes, mesh.attached, mesh.rigid_centres, half, self.rigid, self.x,
@@ -359,8 +359,8 @@ class BodyHybrid(SupportedSegments):
         with muscle_buf (rows, n_links, 3) the links' active strain."""
         fem, s, rb, sc = self.fem, self.solver, self.rigid, self.scratch
         links = (fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
-                           self._muscle_static + (muscle_buf,), fem.mass, fem._q_ws, fem._F_work, fem._H_work,
-                           fem._inc_ptr, fem._inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
+                           self._muscle_static + (muscle_buf,), fem.mass, fem.q_ws, fem.F_work, fem.H_work,
+                           fem.inc_ptr, fem.inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
                            s.fp_val, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self._f_work, self._b_work)
         return (links, (s.fixed, self.att_body, self.att_local), rb.pack(),
                 (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), sc.coupling())
@@ -379,7 +379,7 @@ class BodyHybrid(SupportedSegments):
 
     def _state_arrays(self):
         rb = self.rigid
-        return (self.x, self.v, self.fem._q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc,
+        return (self.x, self.v, self.fem.q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc,
                 self.fem.Dm_inv_eff, self.fem.coef)
 
     def _state(self):
@@ -537,7 +537,7 @@ class BodyHybrid(SupportedSegments):
         return float(self.acc[K.ACC_MAX_PEN])
 
 
-def make_hybrid(case, world=None):
+def make_hybrid(case, world):
     """The hybrid body, for every creature (legged or not: the runner composes the controller), in the run's
     world (``world.world.World``)."""
     return BodyHybrid(case, world)
@@ -610,6 +610,18 @@ register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.
+def hanging_bar(body, case) -> HangingBar:
+    """The hybrid chain as a hanging bar (``core.specs.HangingBar``): its boxes' masses at their centres and its
+    links' free nodes' at their rest positions (the attached nodes' share of a link's mass belongs to no one);
+    the boxes rigid, the links E A."""
+    lay = body.layout
+    n, P = lay.n_rigid, lay.pitch
+    s_mass = np.concatenate([np.arange(n) * P + 0.5 * lay.rigid_length, -body.mesh.nodes[body.free, 0]])
+    mass = np.concatenate([body.rigid.mass, body.fem.mass[body.free]])
+    return HangingBar(s_mass, mass, n, P, lay.rigid_length,
+                      (math.inf, case.body.youngs_modulus_pa * lay.link_height * lay.link_width))
+
+
 BACKEND = BodySpec(
     name="hybrid",
     description="Fang et al. 2013 Sec. 3: rigid box segments joined by fixed-corotational FEM links, staggered "
@@ -622,4 +634,14 @@ BACKEND = BodySpec(
     shape_gain_p=0.25,
     # its third-harmonic correction at half the others' gain: at 1 per cycle the snake missed its shape at
     # mu_t / mu_f = 1 (error 0.153, the harmonic still settling after 11 cycles; docs/explanation/shape-tracking.md)
-    shape_harmonic_gain_per_cycle=0.5)
+    shape_harmonic_gain_per_cycle=0.5,
+    # per-step wall [s] per size unit with warm kernels, unlegged / legged (harness.schedule): from the quick
+    # matrix on the development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs):
+    # the median over its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's
+    # summed case times (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker)
+    step_cost_s={False: 5.0e-7, True: 3.2e-7},
+    # what validation.cross_body's hanging-bar reference reads of a built chain
+    hanging_bar=hanging_bar,
+    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
+    suite_scenes={"chain": ("hybrid-chain", 18.0 * 27.0),  # 18 boxes, 17 links at resolution 3
+                  "centipede": ("hybrid-centipede", 18.0 * 27.0)})

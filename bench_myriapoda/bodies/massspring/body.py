@@ -20,11 +20,11 @@ from ...core.feasibility import lattice_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodySpec, Footprint
-from ...world.world import world_of
 from ..case_scalars import contact_scalars
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
-from ..scene import LATTICE_SURFACE, Scene, lattice_surface_faces
+from ..scene import LATTICE_SURFACE, Scene
+from .lattice import lattice_surface_faces
 from .. import step_status as S
 from ..segment_chain import chain_sizes, check_chain_segments, check_legged_gait, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
@@ -96,7 +96,7 @@ class BodyMassSpring(NodeSegments):
     name = "massspring"
     capabilities = frozenset({MUSCLES})
 
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg: MassSpringConfig = case.body
         self.case = case
@@ -119,8 +119,8 @@ class BodyMassSpring(NodeSegments):
         self.seg_ptr = np.arange(cre.segments + 1, dtype=np.int64) * 8
         self.seg_nodes = np.concatenate([np.arange(4 * i, 4 * i + 8) for i in range(cre.segments)]).astype(np.int64)
         self.seg_rest_offsets = csr_rest_offsets(lat.rest_nodes, self.seg_ptr, self.seg_nodes)
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(K.N_PHYS)
@@ -221,7 +221,7 @@ class BodyMassSpring(NodeSegments):
         return float(self.acc[S.ACC_MAX_PEN])
 
 
-def make_massspring(case, world=None):
+def make_massspring(case, world):
     """Miller's lattice; a creature with legs is built as rigid boxes joined by spring-cube links
     (``massspring.myriapod``): legs attach to rigid segments (the creature's morphology; the leg
     controller itself is composed by the runner); world: the run's ``world.world.World``."""
@@ -284,4 +284,12 @@ BACKEND = BodySpec(
     shape_gain_p=2.0,
     # its third-harmonic correction at gain 1 per cycle: the grid of issue 27 at 78.5 s passes on every ratio
     # (shape error 0.016-0.058; docs/explanation/shape-tracking.md)
-    shape_harmonic_gain_per_cycle=1.0)
+    shape_harmonic_gain_per_cycle=1.0,
+    # per-step wall [s] per size unit with warm kernels, unlegged / legged (harness.schedule): from the quick
+    # matrix on the development machine (2-core x86-64, 2026-11-27, 2 workers, heavily shared with other jobs):
+    # the median over its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's
+    # summed case times (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker)
+    step_cost_s={False: 1.0e-6, True: 2.2e-5},
+    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
+    suite_scenes={"snake": ("massspring-snake", 50.0),  # Miller's 50-segment snake
+                  "centipede": ("massspring-centipede", 18.0)})

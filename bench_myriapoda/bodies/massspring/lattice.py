@@ -24,6 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..scene import orient_outward, static_topology
+
 AXIAL, CROSS, SIDE_DIAG = 0, 1, 2
 
 # The four side faces of a segment, each spanned by two axial fibres (corners).
@@ -205,3 +207,27 @@ CUBE_PLAN = (
     ((3, 1, 0), (4, 1, 1), (8, 1, 0), (11, -1, 0), (12, -1, 0), (12, 1, 1), (13, -1, 0), (14, -1, 0), (16, 1, 1)),
     ((5, 1, 0), (9, 1, 0), (10, 1, 1), (13, 1, 0), (14, 1, 1), (15, -1, 0), (16, -1, 0), (17, -1, 0), (17, 1, 1)),
 )
+
+
+def lattice_surface_faces(n_cells: int) -> np.ndarray:
+    """(8 n_cells + 4, 3) outward triangles of a Miller cube lattice of n_cells cubes (``build_lattice``).
+
+    Node 4 j + c is corner c of cross-section face j; the four side faces of
+    every cube and the two end faces are quads, each split into two triangles.
+    The winding is fixed once on the lattice's rest shape: a body's placement is
+    a proper rotation, which keeps it outward.
+    """
+    rest = build_lattice(n_cells, 1.0, 1.0, 1.0).rest_nodes
+    tris, inside = [], []
+    for i in range(n_cells):
+        centre = rest[4 * i:4 * i + 8].mean(axis=0)
+        for a, b in SIDE_FACES:
+            q = (4 * i + a, 4 * i + b, 4 * (i + 1) + b, 4 * (i + 1) + a)
+            tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+            inside += [centre, centre]
+    for j, cell in ((0, 0), (n_cells, n_cells - 1)):  # the end caps; corners 0, 1, 3, 2 go around a face
+        centre = rest[4 * cell:4 * cell + 8].mean(axis=0)
+        q = (4 * j + 0, 4 * j + 1, 4 * j + 3, 4 * j + 2)
+        tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+        inside += [centre, centre]
+    return static_topology(orient_outward(rest, np.array(tris, dtype=np.int64), np.array(inside)))

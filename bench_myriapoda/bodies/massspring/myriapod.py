@@ -45,7 +45,6 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from ...world.world import world_of
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
@@ -57,7 +56,8 @@ from ..legged_chunk import register
 from ...core.protocols import Actuation, Observation
 from ..placement import place_box_chain
 from ..rigid import ContactSettings, RigidBoxes
-from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles, lattice_surface_faces
+from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles
+from .lattice import lattice_surface_faces
 from ..segment_chain import CouplingScratch, LeggedSegments, SegmentChainLayout, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
@@ -202,7 +202,7 @@ class BodyRigidSpringChain(LeggedSegments):
     """
 
     name = "massspring"
-    def __init__(self, case, world=None):
+    def __init__(self, case, world):
         cre = case.creature
         cfg = case.body
         sc = case.scenario
@@ -231,8 +231,8 @@ class BodyRigidSpringChain(LeggedSegments):
         self.segment_pitch_m = lay.pitch
         self.segment_half_extents = np.tile(half, (lay.n_rigid, 1))
 
-        # the run's world (``world.world``: built once by the runner; here when the body is built alone)
-        self.world = world_of(case, world)
+        # the run's world (``world.world``: built once by the runner; a body builds none of its own)
+        self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         self.x = np.zeros_like(mesh.nodes)
