@@ -59,7 +59,7 @@ def one_segment(mu, omega=2 * math.pi * 10.0, zeta=1.0, max_force=-1.0):
     """A 1 kg box at rest at height 1 m with one STANCE foot below its left root, on flat ground."""
     kind, terr = flat_terrain()
     S = DS.stance_arrays(DS.StanceParams(1.0, omega, zeta, mu, max_force), np.array([1.0]),
-                         np.array([[0.1, 0.1, 0.1]]), G, kind, terr)
+                         np.array([[0.1, 0.1, 0.1]]), G, np.zeros((1, 3)), np.zeros((1, 3)), kind, terr)
     c = np.array([[0.0, 1.0, 0.0]])
     R = np.eye(3)[None].copy()
     v, w = np.zeros((1, 3)), np.zeros((1, 3))

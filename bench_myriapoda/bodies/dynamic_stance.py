@@ -3,10 +3,12 @@ through friction-limited feet instead of carrying them kinematically (paper Sec.
 
 Per supported segment, per step (``push_segments``):
 
-1. the spring-damper toward the Targeter's pose, integrated implicitly over the step, gives the
-   velocities v' = (v + a v_T) / (1 + a), w' = (w + a w_T) / (1 + a), a = omega^2 dt^2 + 2 zeta omega dt,
-   with v_T = (c_T - c) / dt and w_T = log(R_T R^T) / dt the kinematic stance's; the legs ask for
-   F_d = m (v' - v) / dt - m g [N] and tau_d = I_w (w' - w) / dt [N m];
+1. the spring-damper toward the Targeter's pose, integrated implicitly over the step with the links' force
+   F_o and moment tau_o on the segment in its last step, gives the velocities
+   v' = (v + a v_T + dt F_o / m) / (1 + a), w' = (w + a w_T + dt I_w^-1 tau_o) / (1 + a),
+   a = omega^2 dt^2 + 2 zeta omega dt, with v_T = (c_T - c) / dt and w_T = log(R_T R^T) / dt the kinematic
+   stance's; the legs, which also carry the weight, ask for F_d = m (v' - v) / dt - F_o - m g [N] and
+   tau_d = I_w (w' - w) / dt - tau_o [N m];
 2. ``foot_forces``: that wrench shared by the STANCE feet, each foot's force cut to its friction
    cone (Coulomb, coefficient mu) and to the leg's maximum force; what the feet transmit acts on the
    segment as an impulse (v += dt F / m, w += dt I_w^-1 tau);
@@ -34,10 +36,12 @@ STANCES = ("kinematic", "dynamic")
 StanceParams = namedtuple("StanceParams", "dynamic omega zeta mu max_force")
 
 # What a body with rigid segments keeps for the dynamic stance: params a ``StanceParams``; mass (n_seg,) [kg],
-# inertia_body (n_seg, 3) [kg m^2] of the segments; gravity (3,) [m/s^2]; terr_kind, terr the terrain
-# (``terrain_kernels``, for the normal under a foot); acc (N_STANCE_ACC,) ACCUMULATES the statistics below;
-# feet scratch: r, nrm, f (2, 3), slide (2,)
-StanceArrays = namedtuple("StanceArrays", "params mass inertia_body gravity terr_kind terr acc r nrm f slide")
+# inertia_body (n_seg, 3) [kg m^2] of the segments; gravity (3,) [m/s^2]; force, torque (n_seg, 3) [N], [N m]: the
+# other forces on each segment in its last step (the links', about its centre; the body's own accumulators, read
+# only); terr_kind, terr the terrain (``terrain_kernels``, for the normal under a foot); acc (N_STANCE_ACC,)
+# ACCUMULATES the statistics below; feet scratch: r, nrm, f (2, 3), slide (2,)
+StanceArrays = namedtuple("StanceArrays", "params mass inertia_body gravity force torque terr_kind terr acc r nrm f "
+                                          "slide")
 
 # statistics (``acc``): foot-steps in STANCE that pushed, those that slid, summed sliding distance [m], summed and
 # largest foot force [N], positive mechanical work of the legs on the segments [J], sum of foot force^2 [N^2]
@@ -59,11 +63,12 @@ def stance_params(legs, friction) -> StanceParams:
                         float(legs.stance_damping_ratio), mu, float(legs.max_leg_force_n))
 
 
-def stance_arrays(params: StanceParams, mass, inertia_body, gravity, terr_kind, terr) -> StanceArrays:
-    """A body's ``StanceArrays`` (fresh statistics and scratch)."""
+def stance_arrays(params: StanceParams, mass, inertia_body, gravity, force, torque, terr_kind, terr) -> StanceArrays:
+    """A body's ``StanceArrays`` (fresh statistics and scratch; force and torque are the body's own arrays)."""
     return StanceArrays(params, np.ascontiguousarray(mass, dtype=np.float64),
                         np.ascontiguousarray(inertia_body, dtype=np.float64),
-                        np.ascontiguousarray(gravity, dtype=np.float64), terr_kind, terr, np.zeros(N_STANCE_ACC),
+                        np.ascontiguousarray(gravity, dtype=np.float64), force, torque, terr_kind, terr,
+                        np.zeros(N_STANCE_ACC),
                         np.zeros((2, 3)), np.zeros((2, 3)), np.zeros((2, 3)), np.zeros(2))
 
 
@@ -210,6 +215,17 @@ def _world_inertia_times(R, i, I, x, y, z):
             R[i, 2, 0] * b0 + R[i, 2, 1] * b1 + R[i, 2, 2] * b2)
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _world_inertia_inverse_times(R, i, I, x, y, z):
+    """R[i] diag(1 / I[i]) R[i]^T (x, y, z)."""
+    b0 = (R[i, 0, 0] * x + R[i, 1, 0] * y + R[i, 2, 0] * z) / I[i, 0]
+    b1 = (R[i, 0, 1] * x + R[i, 1, 1] * y + R[i, 2, 1] * z) / I[i, 1]
+    b2 = (R[i, 0, 2] * x + R[i, 1, 2] * y + R[i, 2, 2] * z) / I[i, 2]
+    return (R[i, 0, 0] * b0 + R[i, 0, 1] * b1 + R[i, 0, 2] * b2,
+            R[i, 1, 0] * b0 + R[i, 1, 1] * b1 + R[i, 1, 2] * b2,
+            R[i, 2, 0] * b0 + R[i, 2, 1] * b1 + R[i, 2, 2] * b2)
+
+
 @njit(cache=True, error_model="numpy")
 def push_segments(c, v, w, R, supported, held, c_T, R_T, states, tips, S, dt):
     """Steps 1-3 of the module docstring for every segment that is ``supported`` (n_seg,) bool and not
@@ -221,7 +237,6 @@ def push_segments(c, v, w, R, supported, held, c_T, R_T, states, tips, S, dt):
     """
     P = S.params
     a = P.omega * P.omega * dt * dt + 2.0 * P.zeta * P.omega * dt
-    blend = a / (1.0 + a)
     gx, gy, gz = S.gravity[0], S.gravity[1], S.gravity[2]
     acc, r, nrm, f, slide = S.acc, S.r, S.nrm, S.f, S.slide
     I = S.inertia_body
@@ -240,25 +255,32 @@ def push_segments(c, v, w, R, supported, held, c_T, R_T, states, tips, S, dt):
         if n_feet == 0:
             continue
         m = S.mass[i]
-        # 1. the kinematic stance's velocities and the implicit spring-damper's pull toward them
+        # 1. the kinematic stance's velocities; the implicit spring-damper's pull toward them, solved with the
+        # links' force of the segment's last step (staggered as the body's coupling), while the legs carry its
+        # weight: m (v' - v) / dt = F_spring-damper + F_links, F_legs = F_spring-damper - m g; so the stiff limit
+        # holds the segment against both
         vTx, vTy, vTz = (c_T[i, 0] - c[i, 0]) / dt, (c_T[i, 1] - c[i, 1]) / dt, (c_T[i, 2] - c[i, 2]) / dt
         wTx, wTy, wTz = _rotation_rate(R, R_T, i, dt)
-        dvx, dvy, dvz = blend * (vTx - v[i, 0]), blend * (vTy - v[i, 1]), blend * (vTz - v[i, 2])
-        dwx, dwy, dwz = blend * (wTx - w[i, 0]), blend * (wTy - w[i, 1]), blend * (wTz - w[i, 2])
-        Fx, Fy, Fz = m * dvx / dt - m * gx, m * dvy / dt - m * gy, m * dvz / dt - m * gz
+        Ox, Oy, Oz = S.force[i, 0], S.force[i, 1], S.force[i, 2]
+        ax_, ay_, az_ = _world_inertia_inverse_times(R, i, I, S.torque[i, 0], S.torque[i, 1], S.torque[i, 2])
+        dvx = (a * (vTx - v[i, 0]) + dt * Ox / m) / (1.0 + a)
+        dvy = (a * (vTy - v[i, 1]) + dt * Oy / m) / (1.0 + a)
+        dvz = (a * (vTz - v[i, 2]) + dt * Oz / m) / (1.0 + a)
+        dwx = (a * (wTx - w[i, 0]) + dt * ax_) / (1.0 + a)
+        dwy = (a * (wTy - w[i, 1]) + dt * ay_) / (1.0 + a)
+        dwz = (a * (wTz - w[i, 2]) + dt * az_) / (1.0 + a)
+        Fx, Fy, Fz = m * dvx / dt - Ox - m * gx, m * dvy / dt - Oy - m * gy, m * dvz / dt - Oz - m * gz
         tx, ty, tz = _world_inertia_times(R, i, I, dwx / dt, dwy / dt, dwz / dt)
+        tx, ty, tz = tx - S.torque[i, 0], ty - S.torque[i, 1], tz - S.torque[i, 2]
         # 2. what the feet transmit, as an impulse
         Sx, Sy, Sz, Tx, Ty, Tz = foot_forces(Fx, Fy, Fz, tx, ty, tz, r, nrm, n_feet, P.mu, P.max_force, f, slide)
         v[i, 0] += dt * Sx / m
         v[i, 1] += dt * Sy / m
         v[i, 2] += dt * Sz / m
-        # I_w^-1 tau = R diag(1/I) R^T tau
-        b0 = (R[i, 0, 0] * Tx + R[i, 1, 0] * Ty + R[i, 2, 0] * Tz) / I[i, 0]
-        b1 = (R[i, 0, 1] * Tx + R[i, 1, 1] * Ty + R[i, 2, 1] * Tz) / I[i, 1]
-        b2 = (R[i, 0, 2] * Tx + R[i, 1, 2] * Ty + R[i, 2, 2] * Tz) / I[i, 2]
-        w[i, 0] += dt * (R[i, 0, 0] * b0 + R[i, 0, 1] * b1 + R[i, 0, 2] * b2)
-        w[i, 1] += dt * (R[i, 1, 0] * b0 + R[i, 1, 1] * b1 + R[i, 1, 2] * b2)
-        w[i, 2] += dt * (R[i, 2, 0] * b0 + R[i, 2, 1] * b1 + R[i, 2, 2] * b2)
+        ax_, ay_, az_ = _world_inertia_inverse_times(R, i, I, Tx, Ty, Tz)
+        w[i, 0] += dt * ax_
+        w[i, 1] += dt * ay_
+        w[i, 2] += dt * az_
         # the legs' power on the segment (velocities after the impulse and gravity's kick)
         ux, uy, uz = v[i, 0] + dt * gx, v[i, 1] + dt * gy, v[i, 2] + dt * gz
         power = Sx * ux + Sy * uy + Sz * uz + Tx * w[i, 0] + Ty * w[i, 1] + Tz * w[i, 2]

@@ -8,8 +8,10 @@ sample -> ``body.advance(t, 1)``):
 1. ``poses(P) -> (c, R)``: the segments' current poses, c (n_seg, 3) [m] and R (n_seg, 3, 3),
    as the body's ``segment_poses`` gives them (arrays of P, read by the controller's step);
 2. the controller's step (not the body's business);
-3. ``carry(P, kinematic, c_T, R_T)``: the body's ``set_support`` on the controller's support,
-   kinematic (n_seg,) bool, c_T (n_seg, 3) [m], R_T (n_seg, 3, 3);
+3. ``carry(P, kinematic, c_T, R_T, states, tips) -> bool``: the body's ``set_support`` on the controller's
+   support, kinematic (n_seg,) bool, c_T (n_seg, 3) [m], R_T (n_seg, 3, 3) (in dynamic stance its
+   ``push_support``, which also reads the leg states (n_legs,) and moves the STANCE feet tips (n_legs, 3) [m]
+   that slide); returns whether it may have moved a foot;
 4. ``sample(P, c_out, R_out, links_out)``: on a step the timeline records, the poses after the
    support into c_out (n_seg, 3) [m] and R_out (n_seg, 3, 3), and the links' centres (what the
    body's ``segment_centers`` gives at odd rows) into links_out (n_seg - 1, 3) [m];
@@ -47,7 +49,7 @@ def poses(P):
     raise NotImplementedError("legged_chunk.poses runs in compiled code, on a registered pack")
 
 
-def carry(P, kinematic, c_T, R_T):
+def carry(P, kinematic, c_T, R_T, states, tips):
     """Step 3 (module docstring); compiled code only."""
     raise NotImplementedError("legged_chunk.carry runs in compiled code, on a registered pack")
 
@@ -97,7 +99,7 @@ def _poses(P):
 
 
 @overload(carry, inline="always")
-def _carry(P, kinematic, c_T, R_T):
+def _carry(P, kinematic, c_T, R_T, states, tips):
     return _impl(P, 1)
 
 
