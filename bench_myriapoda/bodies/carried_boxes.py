@@ -63,19 +63,27 @@ def box_poses(P):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def carry_boxes(P, kinematic, c_T, R_T, states, tips):
+def carry_boxes(P, kinematic, c_T, R_T):
     """``legged_chunk.carry`` (module docstring) of P.boxes, after ``box_poses`` (B.Rseg holds the rotations:
-    q has not changed since); returns whether feet may have moved (dynamic stance)."""
+    q has not changed since)."""
     B = P.boxes
-    if B.stance.params.dynamic != 0.0:
-        carry_dynamic(B, kinematic, c_T, R_T, states, tips)
-        return True
     for i in range(B.c.shape[0]):
         B.kinematic[i] = kinematic[i] or B.held[i]
     drive_to_targets(B.c, B.q, B.vr, B.w, B.Rseg, B.kinematic, c_T, R_T, B.dt, B.qtmp)
     rk.quat_to_matrix(B.q, B.Rb)
     for a in range(B.fixed.shape[0]):
         place_on_box(a, B.att_body[a], B.fixed[a], B.att_local, B.c, B.vr, B.w, B.Rb, B.x, B.v)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def carry_boxes_feet(P, kinematic, c_T, R_T, states, tips):
+    """``legged_chunk.carry_feet`` of P.boxes: ``carry_dynamic`` in dynamic stance (returns True: feet may have
+    moved), else ``carry_boxes`` (False)."""
+    B = P.boxes
+    if B.stance.params.dynamic != 0.0:
+        carry_dynamic(B, kinematic, c_T, R_T, states, tips)
+        return True
+    carry_boxes(P, kinematic, c_T, R_T)
     return False
 
 

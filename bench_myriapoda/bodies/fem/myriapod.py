@@ -289,12 +289,11 @@ def _block_poses(P):
     return c, R
 
 
-def _carry_blocks(P, kinematic, c_T, R_T, states, tips):
+def _carry_blocks(P, kinematic, c_T, R_T):
     """``legged_chunk.carry`` after ``_block_poses``: ``set_support`` on the poses it left (the nodes have not
-    moved since).  Kinematic stance only (no dynamic stance on this body yet): the feet never move."""
+    moved since)."""
     x, _, _, att_nodes, att_block, held, att_target, support, c, _, R = P.blocks
     carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_target, support)
-    return False
 
 
 def _sample_blocks(P, c_out, R_out, links_out):

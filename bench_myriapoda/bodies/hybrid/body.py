@@ -84,7 +84,8 @@ from ..fem.element_quality import ElementQuality
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
-from ..carried_boxes import PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
+                             carry_boxes_feet, sample_boxes)
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
 from ..placement import place_box_chain
@@ -616,7 +617,7 @@ def _hybrid_legged_step(P):
                            K.Coupling(*coupling), acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
-register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
+register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step, carry_boxes_feet)
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.

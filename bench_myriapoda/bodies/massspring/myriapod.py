@@ -51,7 +51,8 @@ from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
 from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, Attachment, Boxes, Coupling, World,
                            advance_chain, chain_phys, chain_scalars, link_spines, place_attached_nodes, register_link)
-from ..carried_boxes import PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
+                             carry_boxes_feet, sample_boxes)
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
 from ...core.protocols import Actuation, Observation
@@ -418,4 +419,5 @@ def _spring_chain_legged_step(P):
                          acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
-register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step,
+         carry_boxes_feet)
