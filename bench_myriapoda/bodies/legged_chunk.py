@@ -9,7 +9,10 @@ sample -> ``body.advance(t, 1)``):
    as the body's ``segment_poses`` gives them (arrays of P, read by the controller's step);
 2. the controller's step (not the body's business);
 3. ``carry(P, kinematic, c_T, R_T)``: the body's ``set_support`` on the controller's support,
-   kinematic (n_seg,) bool, c_T (n_seg, 3) [m], R_T (n_seg, 3, 3);
+   kinematic (n_seg,) bool, c_T (n_seg, 3) [m], R_T (n_seg, 3, 3); the fused walk calls it through
+   ``carry_feet(P, kinematic, c_T, R_T, states, tips) -> bool``, which a body with a dynamic stance
+   (``bodies.dynamic_stance``) registers to read the leg states (n_legs,) and move the STANCE feet tips
+   (n_legs, 3) [m] that slide, returning whether it may have moved one (any other body: ``carry``, False);
 4. ``sample(P, c_out, R_out, links_out)``: on a step the timeline records, the poses after the
    support into c_out (n_seg, 3) [m] and R_out (n_seg, 3, 3), and the links' centres (what the
    body's ``segment_centers`` gives at odd rows) into links_out (n_seg - 1, 3) [m];
@@ -52,6 +55,11 @@ def carry(P, kinematic, c_T, R_T):
     raise NotImplementedError("legged_chunk.carry runs in compiled code, on a registered pack")
 
 
+def carry_feet(P, kinematic, c_T, R_T, states, tips):
+    """Step 3 with the feet (module docstring); compiled code only."""
+    raise NotImplementedError("legged_chunk.carry_feet runs in compiled code, on a registered pack")
+
+
 def sample(P, c_out, R_out, links_out):
     """Step 4 (module docstring); compiled code only."""
     raise NotImplementedError("legged_chunk.sample runs in compiled code, on a registered pack")
@@ -62,8 +70,10 @@ def step(P):
     raise NotImplementedError("legged_chunk.step runs in compiled code, on a registered pack")
 
 
-# The pack's class -> its four implementations (poses, carry, sample, step), filled by ``register``.
+# The pack's class -> its four implementations (poses, carry, sample, step), filled by ``register``; and its
+# ``carry_feet`` where it has one.
 _IMPLS: dict[type, tuple] = {}
+_FEET: dict[type, object] = {}
 
 
 def _impl(P, which: int):
@@ -75,7 +85,7 @@ def _impl(P, which: int):
     return None
 
 
-def register(cls, poses_impl, carry_impl, sample_impl, step_impl) -> None:
+def register(cls, poses_impl, carry_impl, sample_impl, step_impl, carry_feet_impl=None) -> None:
     """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample``, ``step``)
     the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
     inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function.
@@ -89,6 +99,8 @@ def register(cls, poses_impl, carry_impl, sample_impl, step_impl) -> None:
     compile's refresh then gave ``legged_chunk`` two types for ``LC.poses``: "Cannot unify
     Function(<function poses>) and Function(<function poses>)" (tests/test_legged_chunk_registration.py)."""
     _IMPLS[cls] = tuple(getattr(f, "py_func", f) for f in (poses_impl, carry_impl, sample_impl, step_impl))
+    if carry_feet_impl is not None:  # the parameters of ``carry_feet`` (a body with a dynamic stance)
+        _FEET[cls] = getattr(carry_feet_impl, "py_func", carry_feet_impl)
 
 
 @overload(poses, inline="always")
@@ -99,6 +111,22 @@ def _poses(P):
 @overload(carry, inline="always")
 def _carry(P, kinematic, c_T, R_T):
     return _impl(P, 1)
+
+
+def _carry_without_feet(P, kinematic, c_T, R_T, states, tips):
+    """``carry_feet`` of a body that registered none: its ``carry``; no foot moved."""
+    carry(P, kinematic, c_T, R_T)
+    return False
+
+
+@overload(carry_feet, inline="always")
+def _carry_feet(P, kinematic, c_T, R_T, states, tips):
+    if isinstance(P, types.BaseNamedTuple):
+        if P.instance_class in _FEET:
+            return _FEET[P.instance_class]
+        if P.instance_class in _IMPLS:
+            return _carry_without_feet
+    return None
 
 
 @overload(sample, inline="always")

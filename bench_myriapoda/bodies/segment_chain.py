@@ -150,7 +150,11 @@ class SupportedSegments:
     def apply_support(self, act) -> None:
         """Carry the supported segments of ``act`` (support_kinematic, support_c, support_R) this step."""
         if act.support_new:
-            self.set_support(act.support_kinematic, act.support_c, act.support_R, self.dt)
+            if getattr(self, "dynamic_stance", False):  # the legs push (bodies.dynamic_stance)
+                self.push_support(act.support_kinematic, act.support_c, act.support_R, act.support_states,
+                                  act.support_tips)
+            else:
+                self.set_support(act.support_kinematic, act.support_c, act.support_R, self.dt)
             act.support_new = False
 
     def sense(self, obs, t: float) -> None:

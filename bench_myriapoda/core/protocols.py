@@ -59,6 +59,10 @@ class Actuation:
         body carries them to ``support_c`` (n_seg, 3) [m] and ``support_R`` (n_seg, 3, 3) over one
         step and lets the others follow the dynamics.  Only read by bodies with ``SEGMENTS``.
     support_new: True when the controller wrote new support targets since the body last read them.
+    support_states: (n_legs,) int64 leg states (``core.leg_timeline`` codes) and support_tips (n_legs, 3) [m]
+        the feet: the controller's own arrays, for a body in dynamic stance (``legs.stance = "dynamic"``,
+        ``bodies.dynamic_stance``), which moves the STANCE feet that slide (support_tips UPDATED).  None
+        from a controller without legs.
     """
 
     muscle: np.ndarray
@@ -68,6 +72,8 @@ class Actuation:
     support_c: np.ndarray | None = None
     support_R: np.ndarray | None = None
     support_new: bool = False
+    support_states: np.ndarray | None = None
+    support_tips: np.ndarray | None = None
 
     @classmethod
     def for_body(cls, body: "Body", rows: int = 1) -> "Actuation":

@@ -139,6 +139,14 @@ class GaitConfig:
         return False
 
 
+def _minus_one_or_non_negative(v) -> str | None:
+    return None if v == -1.0 or v >= 0.0 else "expected -1 (derived) or a value >= 0"
+
+
+def _minus_one_or_positive(v) -> str | None:
+    return None if v == -1.0 or v > 0.0 else "expected -1 (unbounded) or a value > 0"
+
+
 @dataclass(frozen=True)
 class LegsConfig:
     """Kinematic legs of a myriapod (paper Sec. 3, 4.2, Fig. 9): massless, one pair per rigid segment.
@@ -157,6 +165,18 @@ class LegsConfig:
     collide: bool = rng(True, doc="a swinging leg's tip or knee stops at the terrain and obstacle surfaces, a "
                                   "STANCE leg whose knee enters one lifts (issue 16); false: the paper's legs, "
                                   "which pass through obstacles")
+    # the dynamic stance (issue 43, docs/explanation/dynamic-stance.md)
+    stance: str = rng("kinematic", choices=("kinematic", "dynamic"),
+                      doc="'kinematic': supported segments carried to their targets (the paper, Sec. 3); 'dynamic': "
+                          "STANCE legs push their segments through friction-limited feet (hybrid, massspring)")
+    stance_frequency_hz: float = rng(10.0, gt=0.0, le=1.0e6,
+                                     doc="dynamic stance: natural frequency of a segment on its legs' spring-damper "
+                                         "toward the Targeter's pose [Hz] (stiffness m (2 pi f)^2)")
+    stance_damping_ratio: float = rng(1.0, ge=0.0, le=1.0e3,
+                                      doc="dynamic stance: damping ratio of that spring-damper [-] (1: critical)")
+    foot_mu: float = rng(-1.0, ge=-1.0, check=_minus_one_or_non_negative, doc="dynamic stance: Coulomb coefficient of a STANCE foot on the ground [-]; "
+                                            "-1: friction.mu_transverse (no sliding for the 'stick' model)")
+    max_leg_force_n: float = rng(-1.0, ge=-1.0, check=_minus_one_or_positive, doc="dynamic stance: largest force of one leg [N]; -1: unbounded")
 
 
 @dataclass(frozen=True)

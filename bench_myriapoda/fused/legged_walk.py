@@ -9,7 +9,8 @@ own (``bodies.legged_chunk``: a body offers it through ``legged_pack``, and this
 
 1. sense: the segments' poses (``legged_chunk.poses``);
 2. the controller's step (``controllers.myriapod.compiled.controller_step``);
-3. the support, the body's ``set_support`` (``legged_chunk.carry``);
+3. the support, the body's ``set_support`` (``legged_chunk.carry_feet``: ``carry``, or in dynamic stance its
+   ``push_support``, which may move the STANCE feet);
 4. a timeline sample every ``record_every`` steps: the controller's record (states, tips,
    brain mode, antenna contact, segment centres before the support) and the monitor's
    (segment poses and link centres after the support, ``legged_chunk.sample``), into buffers;
@@ -105,7 +106,9 @@ def legged_chunk(t0, dt, n_steps, C, P, REC):
     for k in range(n_steps):
         c, R = LC.poses(P)                                     # 1. sense
         recorded = _control(t0 + k * dt, C, c, R, REC, n_rec)  # 2. controller (and its timeline row)
-        LC.carry(P, seg_kin, c_T, R_T)                         # 3. support
+        if LC.carry_feet(P, seg_kin, c_T, R_T, A[CC.A_STATES], A[CC.A_TIPS]):  # 3. support
+            # feet slid (dynamic stance): the tips' distances the controller keeps are no longer theirs
+            C[1][CC.I_TIP_PHI_OK] = 0
         if recorded:                                           # 4. the monitor's sample
             LC.sample(P, rec_c[n_rec], rec_R[n_rec], rec_links[n_rec])
             n_rec += 1

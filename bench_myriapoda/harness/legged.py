@@ -20,7 +20,10 @@ import numpy as np
 from ..bodies.scene import Scene, legs_scene
 from ..core.leg_timeline import LeggedController
 from ..metrics.behaviour import BehaviourSampler
+from ..bodies.dynamic_stance import per_stride_and_cost
+from ..core.leg_timeline import STANCE
 from ..metrics.gait import body_undulation, gait_metrics
+from ..metrics.undulation import undulation_metrics
 
 BOX_SIGNS = np.array([[(k & 1) * 2 - 1, (k >> 1 & 1) * 2 - 1, (k >> 2 & 1) * 2 - 1] for k in range(8)], float)
 
@@ -130,6 +133,8 @@ class LeggedMonitor:
             out["heading_error_deg"] = run.heading_error_deg
         if len(self.timeline) > 2:
             out["body_undulation_amp_bl"] = body_undulation(self.timeline.centre_array()) / length
+        if len(t) > 2:
+            out.update(self._emergent(t, states, length, out.get("stride_frequency_hz", float("nan"))))
         out["time_to_walk_s"] = run.t_walk_s
         out["touch_fraction_at_walk"] = run.touch_fraction_at_walk
         out["tracking_error_mean_m"] = run.tracking_error_mean_m
@@ -138,6 +143,26 @@ class LeggedMonitor:
         out.update(run.metrics)
         for name, fraction in run.mode_fractions.items():
             out[f"brain_{name}_fraction"] = fraction
+        return out
+
+    def _emergent(self, t: np.ndarray, states: np.ndarray, length: float, stride_hz: float) -> dict[str, float]:
+        """The body's lateral undulation over the gait window (``metrics.undulation``; the head's left leg's
+        stance onsets for its phase), and in dynamic stance the feet's slip per stride and the legs' cost of
+        transport (``bodies.dynamic_stance.per_stride_and_cost``)."""
+        i0 = int(np.searchsorted(t, self.gait_window_start(t[0])))
+        out: dict[str, float] = {}
+        if len(t) - i0 >= 8:
+            leg0 = states[i0:, 0] == STANCE
+            onsets = t[i0:][1:][leg0[1:] & ~leg0[:-1]]
+            out.update(undulation_metrics(t[i0:], self.timeline.centre_array()[i0:], length, onsets))
+        stats = getattr(self.body, "stance_statistics", lambda: {})()
+        if stats:
+            com = np.array(self._com[:len(t)])
+            dist = float(np.linalg.norm((com[-1] - com[0])[[0, 2]]))
+            duration = float(t[-1] - t[0])
+            strides = stride_hz * duration * states.shape[1] if np.isfinite(stride_hz) else 0.0
+            weight = float(getattr(self.body, "total_mass", 0.0)) * float(self.case.scenario.gravity_m_s2)
+            out.update(per_stride_and_cost(stats, weight, dist, strides))
         return out
 
     def labels_dict(self) -> dict[str, str]:

@@ -116,15 +116,16 @@ CENTIPEDE_WALK_IN_STEPS = 4500  # 1.5 s: ADJUSTMENT is over and the leg wave has
 
 
 def walking_centipede(segments: int = 18, body: str = "hybrid", walk_in_steps: int = CENTIPEDE_WALK_IN_STEPS,
-                      fused: bool = True):
+                      fused: bool = True, sets: tuple[str, ...] = ()):
     """A centipede on the ``walk`` scenario, compiled and walked in; returns (case, creature).
 
     ``fused``: the runner's default, one compiled call per chunk where the body has a fused legged
-    path (``fused.legged_walk``); False keeps the Python path (controller sequenced every step)."""
+    path (``fused.legged_walk``); False keeps the Python path (controller sequenced every step).
+    ``sets``: more ``--set`` overrides (``legs.stance=dynamic``: tests/benchmarks/test_bench_dynamic_stance.py)."""
     from ..core.config import resolve_case
     from .runner import Creature
 
-    case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}"])
+    case = resolve_case("centipede", body, "walk", overrides=[f"creature.segments={segments}", *sets])
     b = Creature(case, fused=fused)
     b.compile()
     done, status = b.advance(0.0, walk_in_steps)

@@ -137,6 +137,34 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("food_reached", "count", "food sources eaten", "legged creatures"),
     ("time_to_first_food_s", "s", "when the first food source was eaten (NaN if none)", "legged creatures"),
     ("food_sources", "count", "food sources in the scenario", "legged creatures"),
+    # ---- the body's lateral undulation over the gait window (metrics/undulation.py, harness/legged.py)
+    ("undulation_amplitude_bl", "BL", "mean over segments of sqrt(2) x the RMS sideways position across the "
+     "window's travel direction, less each segment's linear trend in time", "legged creatures"),
+    ("undulation_frequency_hz", "Hz", "peak frequency of the segments' sideways positions' summed power spectrum",
+     "legged creatures"),
+    ("undulation_wavelength_bl", "BL", "2 pi / |k| of the linear fit phi = phi_0 - k s of the segments' phases "
+     "at the undulation frequency against their distance s from the head (NaN for a standing sway)",
+     "legged creatures"),
+    ("undulation_direction", "-", "+1 when the undulation travels head to tail (k > 0), -1 tail to head",
+     "legged creatures"),
+    ("undulation_leg_phase_rad", "rad", "circular mean of the head's undulation phase theta (y = A sin theta) at "
+     "the stance onsets of the head's left leg, in [0, 2 pi)", "legged creatures"),
+    ("head_yaw_osc_deg", "deg", "sqrt(2) x the RMS of the head's heading (segment 1 to head) less its linear "
+     "trend over the gait window", "legged creatures"),
+    # ---- the dynamic stance (legs.stance = "dynamic"; bodies/dynamic_stance.py, harness/legged.py)
+    ("stance_foot_slip_m", "m", "distance the STANCE feet slid, summed over feet and steps of the run",
+     "dynamic stance (hybrid, massspring)"),
+    ("stance_slide_fraction", "-", "share of STANCE foot-steps in which the foot slid (its friction cone did "
+     "not hold)", "dynamic stance (hybrid, massspring)"),
+    ("stance_slip_per_stride_m", "m", "`stance_foot_slip_m` / the strides of all legs over the run (stride "
+     "frequency x duration x legs)", "dynamic stance (hybrid, massspring)"),
+    ("leg_force_mean_n", "N", "mean magnitude of a STANCE foot's force over foot-steps", "dynamic stance (hybrid, "
+     "massspring)"),
+    ("leg_force_max_n", "N", "largest magnitude of a STANCE foot's force", "dynamic stance (hybrid, massspring)"),
+    ("leg_work_positive_j", "J", "positive mechanical work of the legs' force and moment on the segments over "
+     "the run", "dynamic stance (hybrid, massspring)"),
+    ("cost_of_transport", "-", "`leg_work_positive_j` / (creature weight x net distance of the segments' mean "
+     "centre over the run): the legs' mechanical cost of transport", "dynamic stance (hybrid, massspring)"),
     # ---- the commanded shape, achieved or not (metrics/shape_tracking.py, controllers/shape_tracking.py)
     ("shape_tracking_error", "-", "RMS over the steady window and the interior centre-line points of (measured - "
      "commanded ground curvature) x body length / commanded amplitude (`gait.curvature_amplitude`); 0.71 for a "

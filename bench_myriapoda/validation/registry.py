@@ -12,6 +12,7 @@ from . import analytic as A
 from . import cross_body as X
 from . import miller as M
 from . import paper as P
+from . import shortcut as SC
 from . import throughput as T
 from .core import Check
 
@@ -67,6 +68,12 @@ CHECKS: tuple[Check, ...] = (
           "Fang et al. 2013 Sec. 4.3, 6.2", P.foraging),
     Check("paper.avoidance", "paper", "AVOIDANCE: body penetration into cylinders [m]",
           "Fang et al. 2013 Sec. 4.3, 6.2", P.avoidance),
+    Check("paper.kinematic-shortcut-centipede", "paper",
+          "head path deviation of the kinematic from the dynamic stance [BL] (INFO)",
+          "the same walk in dynamic stance (issue 43; Fang et al. 2013 Sec. 3's shortcut)", SC.centipede_shortcut),
+    Check("paper.kinematic-shortcut-millipede", "paper",
+          "head path deviation of the kinematic from the dynamic stance [BL] (INFO)",
+          "the same walk in dynamic stance (issue 43; Fang et al. 2013 Sec. 3's shortcut)", SC.millipede_shortcut),
     # ---- throughput
     Check("throughput.sec6-headline", "throughput", "steps/s, 18-segment centipede, dt = 1/3000 s",
           "Fang et al. 2013 Sec. 6: 1.7e4 steps/s on 6 cores", T.sec6_headline),

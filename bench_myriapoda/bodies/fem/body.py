@@ -366,6 +366,9 @@ def check_buildable(case, source: str) -> None:
         return
     check_chain_segments(case, source, "a legged fem chain")
     check_legged_gait(case, source, "a legged fem chain")
+    if case.legs.stance == "dynamic":  # docs/explanation/dynamic-stance.md: hybrid and massspring only
+        raise InputError(source, "legs.stance", "'dynamic' is not implemented on the fem body (hybrid and "
+                                                "massspring have it); use 'kinematic'")
     if not body.block_density_kg_m3 > 0:
         ll = body.link_length_m if body.link_length_m > 0 else 0.5 * cre.segment_length_m
         rho = body.density_kg_m3 if body.density_kg_m3 > 0 else 1.0

@@ -84,7 +84,8 @@ from ..fem.element_quality import ElementQuality
 from ..fem.mesh import RESOLUTION_UNITS, box_grid, cells_per_segment, segment_cells, signed_volumes
 from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FEMSystem
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
-from ..carried_boxes import box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
+                             carry_boxes_feet, sample_boxes)
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
 from ..placement import place_box_chain
@@ -225,7 +226,7 @@ def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6, mirror: bool = F
                       np.stack(link_nodes), np.concatenate(attached), np.concatenate(att_body), centres)
 
 
-class BodyHybrid(SupportedSegments):
+class BodyHybrid(PushedBoxes, SupportedSegments):
     """Rigid boxes (``self.rigid``) joined by FEM links (``self.fem``) on a terrain.
 
     State: ``self.x``, ``self.v`` (n_nodes, 3) [m], [m/s] are the FEM's arrays
@@ -323,6 +324,7 @@ class BodyHybrid(SupportedSegments):
         self.acc = np.zeros(K.N_ACC)
         self.quality = ElementQuality(fem.n_tets)
         self.sync_attached()
+        self._setup_stance(case)  # the dynamic stance (legs.stance, bodies.dynamic_stance)
 
     # ------------------------------------------------------------------ state
     @property
@@ -369,9 +371,12 @@ class BodyHybrid(SupportedSegments):
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
         without muscles (the fused path does not actuate the links)."""
         self.phys[K.MUSCLES_ON] = 0.0
-        boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
-                              self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[K.DT])
-        return HybridLegs(boxes, self._chain_args(self._no_muscle) + (self.acc,))
+        return HybridLegs(self._carried(), self._chain_args(self._no_muscle) + (self.acc,))
+
+    def _carried(self):
+        """The boxes' ``carried_boxes.CarriedBoxes`` (legged_pack, push_support)."""
+        return carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
+                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[K.DT], self.stance)
 
     @cached_property
     def _no_muscle(self) -> np.ndarray:
@@ -397,6 +402,11 @@ class BodyHybrid(SupportedSegments):
         self.advance(0.0, 1, act)
         self.observe(0.0)
         self.set_support(np.zeros(self.n_segments, bool), *self.segment_poses(), self.dt)
+        if self.dynamic_stance:
+            stance_acc = self.stance.acc.copy()
+            self.push_support(np.zeros(self.n_segments, bool), *self.segment_poses(),
+                              np.zeros(2 * self.n_segments, np.int64), np.zeros((2 * self.n_segments, 3)))
+            self.stance.acc[:] = stance_acc
         self.energy(0.0)
         self.momenta()
         self.tet_quality()
@@ -526,7 +536,7 @@ class BodyHybrid(SupportedSegments):
         q = self.quality
         return {"min_J": q.min_J, "inverted_elements_max": float(q.inverted_max),
                 "inverted_elements_final": float(q.inverted_last), "max_strain": q.max_strain,
-                "coupling_residual_max_m": res_max, "coupling_residual_mean_m": res_mean}
+                "coupling_residual_max_m": res_max, "coupling_residual_mean_m": res_mean, **self.stance_statistics()}
 
     def contact_fraction_mean(self) -> float:
         """Mean fraction of contact points (free nodes and box corners) within the contact distance."""
@@ -588,6 +598,7 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
           "miller.image4-caterpillar-down": False, "paper.fig4-drop": True, "paper.fig10a-hang": True,
           "paper.fig10d-walk": True, "paper.wave-centipede": True, "paper.wave-millipede": False,
           "paper.control-turn": False, "paper.foraging": False, "paper.avoidance": False,
+          "paper.kinematic-shortcut-centipede": False, "paper.kinematic-shortcut-millipede": False,
           "throughput.sec6-headline": True}
 
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
@@ -606,7 +617,7 @@ def _hybrid_legged_step(P):
                            K.Coupling(*coupling), acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
-register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step)
+register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step, carry_boxes_feet)
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.

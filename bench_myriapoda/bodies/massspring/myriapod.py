@@ -50,7 +50,8 @@ from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
 from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, Attachment, Boxes, Coupling, World,
                            advance_chain, chain_phys, chain_scalars, link_spines, place_attached_nodes, register_link)
-from ..carried_boxes import box_chain_centers, box_poses, carried_boxes, carry_boxes, sample_boxes
+from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
+                             carry_boxes_feet, sample_boxes)
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
 from ...core.protocols import Actuation, Observation
@@ -194,7 +195,7 @@ def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
                          acc, n_steps)
 
 
-class BodyRigidSpringChain(LeggedSegments):
+class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
     """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] of the link nodes (attached
@@ -253,6 +254,7 @@ class BodyRigidSpringChain(LeggedSegments):
         self.scratch = CouplingScratch.new(n_fixed, n_rigid, rk.N_CORNERS)
         self.acc = np.zeros(N_ACC)
         self.sync_attached()
+        self._setup_stance(case)  # the dynamic stance (legs.stance, bodies.dynamic_stance)
 
     def sync_attached(self) -> None:
         """Put the attached nodes on the boxes' current state."""
@@ -275,9 +277,12 @@ class BodyRigidSpringChain(LeggedSegments):
 
     def legged_pack(self) -> "SpringChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
-        boxes = carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
-                              self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[DT])
-        return SpringChainLegs(boxes, self._chain_args() + (self.acc,))
+        return SpringChainLegs(self._carried(), self._chain_args() + (self.acc,))
+
+    def _carried(self):
+        """The boxes' ``carried_boxes.CarriedBoxes`` (legged_pack, push_support)."""
+        return carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
+                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[DT], self.stance)
 
     def _state(self):
         rb = self.rigid
@@ -293,6 +298,11 @@ class BodyRigidSpringChain(LeggedSegments):
         saved = self._state()
         self.advance(0.0, 1)
         self.set_support(np.zeros(self.layout.n_rigid, bool), *self.segment_poses(), self.dt)
+        if self.dynamic_stance:
+            stance_acc = self.stance.acc.copy()
+            n = self.layout.n_rigid
+            self.push_support(np.zeros(n, bool), *self.segment_poses(), np.zeros(2 * n, np.int64), np.zeros((2 * n, 3)))
+            self.stance.acc[:] = stance_acc
         self.observe(0.0)
         self._restore(saved)
 
@@ -383,7 +393,8 @@ class BodyRigidSpringChain(LeggedSegments):
         """Coupling residual |x_p + dt v_p - x_p(box, n+1)| over all steps and attached nodes [m]."""
         acc = self.acc
         mean = acc[ACC_RES_SUM] / acc[ACC_RES_COUNT] if acc[ACC_RES_COUNT] > 0 else 0.0
-        return {"coupling_residual_max_m": float(acc[ACC_RES_MAX]), "coupling_residual_mean_m": float(mean)}
+        return {"coupling_residual_max_m": float(acc[ACC_RES_MAX]), "coupling_residual_mean_m": float(mean),
+                **self.stance_statistics()}
 
     def contact_fraction_mean(self) -> float:
         return float(self.acc[ACC_CONTACT_SUM] / max(self.acc[ACC_STEPS], 1.0))
@@ -408,4 +419,5 @@ def _spring_chain_legged_step(P):
                          acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
 
 
-register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step)
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step,
+         carry_boxes_feet)

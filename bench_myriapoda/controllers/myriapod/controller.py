@@ -413,6 +413,10 @@ class MyriapodController:
         act.support_c[:] = self.c_T
         act.support_R[:] = self.R_T
         act.support_new = True
+        # the feet, for a body in dynamic stance (bodies.dynamic_stance): it reads the STANCE legs' tips after
+        # this step and moves those that slide, so it is handed the arrays themselves
+        act.support_states = self.states
+        act.support_tips = self.tips
         # 4. legs: Switcher, then IK (STANCE) or FK (the others) against the target poses
         if self.collide:
             self._prev_angles[:] = self.angles
