@@ -418,7 +418,10 @@ def run_matrix(file_or_name: str | os.PathLike, out: str | os.PathLike | None = 
         except ImportError:
             raise InputError("executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
     exp = expand_matrix(locate_matrix(file_or_name))
-    out = check_matrix_outputs(out if out is not None else Path("reports") / "matrix" / exp.name, "out", report)
+    out = check_matrix_outputs(out if out is not None else Path("reports") / "matrix" / exp.name, "out")
+    if report:
+        from .report.build import check_report_outputs
+        check_report_outputs(out)
     if not exp.cases:
         raise InputError(str(exp.path), None, "no case left to run after exclusions and unsupported combinations")
     for m in exp.cases:  # the command line's budget, each case (its body's own limits make an error row, as there)

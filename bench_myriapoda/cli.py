@@ -593,7 +593,7 @@ def cmd_stable_dt(args) -> int:
 
 def cmd_quick(args) -> int:
     """The main job: the quick matrix on a local process pool, the stable-dt bracket of every headline pair and
-    the validate --quick checks that apply to its pairs (``harness.main_job``), then its report.  A rerun of
+    the validate --quick checks that apply to its pairs (``report.main_job``), then its report.  A rerun of
     the same code keeps the cases, brackets and verdicts of the last complete run in DIR (``main_job=True``)."""
     ns = argparse.Namespace(file=QUICK_MATRIX, executor="local", workers=args.workers, scheduler=None, resume=False,
                             schedule="cost",
@@ -704,7 +704,7 @@ def cmd_matrix(args) -> int:
     main_job = bool(getattr(args, "main_job", False))
     reuse = False
     if main_job and not args.resume:  # the main job again on the same code: its stored cases are its results
-        from .harness.main_job import same_code_rerun
+        from .report.main_job import same_code_rerun
         reuse = same_code_rerun(out, exp.name)
         if reuse:
             print(f"the cases this code ran into {out} before are kept (a rerun of the same code gives the same "
@@ -769,7 +769,7 @@ def cmd_matrix(args) -> int:
     if ran:
         print(sched["line"])
     if main_job:
-        from .harness.main_job import fidelity_phase, write_marker
+        from .report.main_job import fidelity_phase, write_marker
         done = fidelity_phase(exp, out, args.workers, progress=(lambda m: print(f"main job: {m}", file=sys.stderr))
                               if sys.stderr.isatty() else None)
         print(f"stable dt of {done['brackets']} pairs (bisection, {out / 'stable_dt.json'}); {done['checks']} "
@@ -985,7 +985,10 @@ def _check_matrix_outputs(args, out: Path, store: Path) -> None:
     (``harness.matrix.check_matrix_outputs``, which the API's ``run_matrix`` uses too)."""
     from .harness.matrix import check_matrix_outputs
 
-    check_matrix_outputs(out, "--out", report=args.report)
+    check_matrix_outputs(out, "--out")
+    if args.report:
+        from .report.build import check_report_outputs
+        check_report_outputs(out)
 def cmd_peers(args) -> int:
     """Time the peers (MuJoCo flex, PyElastica's snake) and ours in one sitting; store and print the ratios.
 

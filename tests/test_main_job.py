@@ -1,4 +1,4 @@
-"""The main job's second half (issue 40, ``harness/main_job.py``): which pairs and checks it covers, and what a
+"""The main job's second half (issue 40, ``report/main_job.py``): which pairs and checks it covers, and what a
 rerun of the same code keeps.  No simulation: the bisection is replaced by a counter where it would run."""
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from bench_myriapoda.harness import main_job
+from bench_myriapoda.report import main_job
 from bench_myriapoda.harness import stable_dt as S
 from bench_myriapoda.harness.matrix import expand_matrix, locate_matrix
 from bench_myriapoda.report.scorecard import BODY_CHECKS, check_creature

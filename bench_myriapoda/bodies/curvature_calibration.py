@@ -207,7 +207,7 @@ def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable
     ``fill(t0, dt, n_rows, act)`` (the calibrated open loop's actuation).  wave: (wavenumber [rad/m], omega [rad/s],
     phase [rad], commanded ground curvature coefficient [1/m], ramp [s]).  Returns {"s": (n,) [m], "gain": (n,)
     |G|, "lag_deg": (n,) -arg G [deg], "status": "ok" or why not}."""
-    from ..metrics.body_shape import ground_curvature  # noqa: PLC0415 (the metric's own curvature, no cycle)
+    from ..kinematics.centre_lines import ground_curvature  # noqa: PLC0415 (the metrics' own curvature)
 
     k, om, ph, kappa_cmd, ramp = wave
     body = make_body(case)

@@ -258,6 +258,18 @@ class MuscleWaveController:
             if self.tracker is not None:
                 self.tracker.reset(body_info, float(gain))
 
+    def plant_wave(self, case) -> tuple[float, float, float, float, float]:
+        """The wave ``bodies.curvature_calibration.plant_response`` drives to identify the open loop's response
+        (``harness.calibration.identified_plant``): the lateral row's columns 1-3 of this controller's wave
+        table after ``reset`` (the calibrated open loop), the commanded ground curvature [1/m] and the ramp
+        [s]. Here, so that the harness reads the gait's wave without importing the controller's module."""
+        from ..core.protocols import LATERAL_GROUND_SIGN
+
+        g, L = case.gait, float(case.creature.body_length_m)
+        row = self.waves[LATERAL]
+        return (float(row[1]), float(row[2]), float(row[3]), LATERAL_GROUND_SIGN * g.curvature_amplitude / L,
+                float(g.ramp_s))
+
     def metrics(self) -> dict[str, float]:
         """The closed loop's muscle figures (``shape_tracking.ShapeTracker.metrics``); none in open loop."""
         return self.tracker.metrics() if self.tracker is not None and self.tracker.ready else {}

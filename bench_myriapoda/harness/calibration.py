@@ -59,16 +59,10 @@ def identified_plant(spec, case, info, world) -> dict[str, Any]:
     """The open loop's measured response on the case's own ground (``bodies.curvature_calibration.plant_response``,
     cached): the calibrated open-loop controller of the same gait drives a body of the same case, in the
     run's ``world``."""
-    from ..controllers.muscle_waves import LATERAL, wave_table  # noqa: PLC0415 (the gait's own open loop)
-    from ..core.protocols import LATERAL_GROUND_SIGN  # noqa: PLC0415
-
     open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
     ctrl = registry.GAITS[case.gait.name].controller(open_case)
     ctrl.reset(open_case, info)
-    g, L = case.gait, float(case.creature.body_length_m)
-    table = wave_table(g, L, strain_per_curvature=info["strain_per_curvature"])
-    wave = (float(table[LATERAL, 1]), float(table[LATERAL, 2]), float(table[LATERAL, 3]),
-            LATERAL_GROUND_SIGN * g.curvature_amplitude / L, float(g.ramp_s))
+    wave = ctrl.plant_wave(open_case)
     return plant_response(lambda c: spec.factory(c, world), case, ctrl.fill, wave)
 
 

@@ -168,10 +168,12 @@ def check_timeout_per_case(timeout: Any, flag: str) -> float | None:
     return value
 
 
-def check_matrix_outputs(out: Path | str, flag: str, report: bool = False) -> Path:
+def check_matrix_outputs(out: Path | str, flag: str) -> Path:
     """A matrix output folder that can take ``results.sqlite``, ``matrix.json``, ``results.csv`` and
-    ``series/`` (and with ``report`` the report's files): not the file-system root, not an empty path,
-    writable, its store absent or this suite's (``check_store``), each file a file.  Nothing is written."""
+    ``series/``: not the file-system root, not an empty path,
+    writable, its store absent or this suite's (``check_store``), each file a file.  Nothing is written.
+    A caller that also writes the report checks its files too (``report.build.check_report_outputs``: the
+    report sits above the harness)."""
     from .store import check_store, check_writable_dir
 
     out = check_path_text(out, flag)
@@ -184,9 +186,6 @@ def check_matrix_outputs(out: Path | str, flag: str, report: bool = False) -> Pa
             raise InputError(flag, None, f"{out / name} exists and is not a file")
     if (out / "series").exists() and not (out / "series").is_dir():
         raise InputError(flag, None, f"{out / 'series'} exists and is not a directory")
-    if report:
-        from ..report.build import check_report_outputs
-        check_report_outputs(out)
     return out
 
 

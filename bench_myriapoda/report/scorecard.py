@@ -42,17 +42,9 @@ from ..harness.store import StoreReadError, read_latest_stable_dt
 from ..metrics.shape_tracking import SHAPE_ERROR_THRESHOLD as SHAPE_THRESHOLD
 from ..metrics.shape_tracking import shape_control_mode
 from ..metrics.walk import EMERGENT_WALK_METRICS, commanded_metric
+from .scorecard_verdicts import BODY_CHECKS, CHECK_CREATURE, check_creature, row_labels  # noqa: F401 (re-exported)
 from .sweeps import sweep_mask
 
-# validate checks that concern one creature (by name prefix); the others test a body model as such
-CHECK_CREATURE = (("analytic.worm", "worm"), ("miller.image1", "worm"), ("cross_body.worm", "worm"),
-                  ("analytic.slithering", "snake"), ("miller.image2", "snake"), ("miller.image3", "snake"),
-                  ("miller.image4", "caterpillar"), ("paper.fig4", "chain"), ("paper.wave-millipede", "millipede"),
-                  ("paper.", "centipede"), ("cross_body.centipede", "centipede"), ("cross_body.hang", "centipede"),
-                  ("throughput.", "centipede"))
-BODY_CHECKS = ("analytic.hanging-bar", "analytic.cantilever", "analytic.rigid-rotation",
-               "analytic.free-fall-momentum", "analytic.stable-dt", "analytic.damping-pure-mode",
-               "analytic.damping-oscillating-mode")
 SHAPE_METRIC, SHAPE_FLAG = "metric.shape_tracking_error", "metric.shape_not_achieved"
 DT_RISK_MARGIN = 1.2   # a default dt whose stable end is less than this many times above it is a risk
 MIN_REPEATS = 3        # timed repeats a cost needs before it is ranked
@@ -151,10 +143,7 @@ def _case(row) -> dict:
 
 
 def _labels(row) -> dict:
-    try:
-        return json.loads(row.get("labels_json") or "{}")
-    except (TypeError, ValueError):
-        return {}
+    return row_labels(row)
 
 
 def _legged(row) -> bool:
@@ -277,16 +266,6 @@ def _stable_dt_from_store(store: Path | None, creature: str, body: str):
 
 
 # --------------------------------------------------------------------------- fidelity
-
-def check_creature(check: str) -> str | None:
-    """The creature a validate check concerns (None: a check of the body model itself)."""
-    if check in BODY_CHECKS:
-        return None
-    for prefix, creature in CHECK_CREATURE:
-        if check.startswith(prefix):
-            return creature
-    return None
-
 
 def deviation(measured, reference) -> float | None:
     """|measured - reference| / |reference| for numbers (|measured| against a zero reference), else None."""

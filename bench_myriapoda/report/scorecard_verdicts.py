@@ -17,6 +17,7 @@ Plain Python; :func:`pair_verdicts` builds the table once per report (it reads r
 """
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import dataclass
 
@@ -52,6 +53,35 @@ class PairVerdicts:
         return None if m.empty else m.iloc[0]
 
 
+# validate checks that concern one creature (by name prefix); the others test a body model as such
+CHECK_CREATURE = (("analytic.worm", "worm"), ("miller.image1", "worm"), ("cross_body.worm", "worm"),
+                  ("analytic.slithering", "snake"), ("miller.image2", "snake"), ("miller.image3", "snake"),
+                  ("miller.image4", "caterpillar"), ("paper.fig4", "chain"), ("paper.wave-millipede", "millipede"),
+                  ("paper.", "centipede"), ("cross_body.centipede", "centipede"), ("cross_body.hang", "centipede"),
+                  ("throughput.", "centipede"))
+BODY_CHECKS = ("analytic.hanging-bar", "analytic.cantilever", "analytic.rigid-rotation",
+               "analytic.free-fall-momentum", "analytic.stable-dt", "analytic.damping-pure-mode",
+               "analytic.damping-oscillating-mode")
+
+
+def check_creature(check: str) -> str | None:
+    """The creature a validate check concerns (None: a check of the body model itself)."""
+    if check in BODY_CHECKS:
+        return None
+    for prefix, creature in CHECK_CREATURE:
+        if check.startswith(prefix):
+            return creature
+    return None
+
+
+def row_labels(row) -> dict:
+    """A stored row's coded labels (``labels_json``), {} when absent or unreadable."""
+    try:
+        return json.loads(row.get("labels_json") or "{}")
+    except (TypeError, ValueError):
+        return {}
+
+
 def _empty() -> pd.DataFrame:
     return pd.DataFrame({c: pd.Series(dtype=object) for c in COLUMNS})
 
@@ -59,7 +89,6 @@ def _empty() -> pd.DataFrame:
 def validate_rows(vdata, creatures_on: dict[str, set[str]] | None = None) -> pd.DataFrame:
     """The validate rows of ``vdata`` as pair rows.  ``creatures_on``: body -> the creatures a body check is
     a row of (None: the creature column of a body check is None, matched by every creature)."""
-    from .scorecard import check_creature
 
     if vdata is None or vdata.rows.empty:
         return _empty()
@@ -87,7 +116,6 @@ def case_rows(res) -> pd.DataFrame:
     """The verdicts judged on the matrix's headline cases (module docstring)."""
     from ..validation.core import Outcome
     from .paper_figures import figure_for
-    from .scorecard import _labels
     from .sweeps import sweep_mask
     from .validation import case_outcome
 
@@ -112,7 +140,7 @@ def case_rows(res) -> pd.DataFrame:
                 if o is None:
                     o, check = Outcome(NOT_VALIDATED, None, None, "-", check), "-"
                 out.append(_outcome_row(creature, body, check, o, origin, "figure", r.case_hash))
-        for check, o in _extra_outcomes(r, _labels(r), creature):
+        for check, o in _extra_outcomes(r, row_labels(r), creature):
             out.append(_outcome_row(creature, body, check, o, origin, "case", r.case_hash))
     return pd.DataFrame(out, columns=list(COLUMNS)) if out else _empty()
 
@@ -145,9 +173,7 @@ def _extra_outcomes(row, labels: dict, creature: str):
     if creature == "worm" and gait == "rectilinear" and scenario == "flat":
         from ..validation.analytic import WORM_REL_TOL
         from ..validation.references import worm_displacement_per_cycle
-        from .scorecard import _case
-
-        case = _case(row)
+        case = json.loads(row["case_json"]) if isinstance(row.get("case_json"), str) else {}
         g, c = case.get("gait", {}), case.get("creature", {})
         try:
             ref = worm_displacement_per_cycle(float(g["amplitude"]), float(g["wavelength_bl"]) * int(c["segments"])

@@ -46,7 +46,7 @@ def main_job_checks(creatures: set[str], bodies: tuple[str, ...]) -> list[tuple[
     """(check name, body) of the ``validate --quick`` set that apply to pairs of ``creatures`` on ``bodies``:
     a body's own checks (``report.scorecard.BODY_CHECKS``) and the checks of one of ``creatures``, less
     ``ANSWERED_BY_MATRIX``; cross-body rows are no pair's."""
-    from ..report.scorecard import check_creature
+    from .scorecard import check_creature
     from ..validation.core import CROSS
     from ..validation.run import select
 
@@ -101,8 +101,8 @@ def fidelity_phase(exp, out: Path, workers: int | None,
     from ..validation.registry import CHECKS
     from ..validation.run import JSON_NAME, summary, write_json
     from ..validation.core import Row
-    from .stable_dt import brackets_for_cases, source_hash
-    from .worker_start import worker_context
+    from ..harness.stable_dt import brackets_for_cases, source_hash
+    from ..harness.worker_start import worker_context
 
     t0 = time.perf_counter()
     code = source_hash()
@@ -140,7 +140,7 @@ def fidelity_phase(exp, out: Path, workers: int | None,
 
 def same_code_rerun(out: Path, matrix: str) -> bool:
     """True when ``out`` holds a complete run of ``matrix`` by this very code (``MARKER_NAME``)."""
-    from .stable_dt import source_hash
+    from ..harness.stable_dt import source_hash
 
     doc = _read_json(out / MARKER_NAME)
     return bool(doc) and doc.get("code") == source_hash() and doc.get("matrix") == matrix \
@@ -149,7 +149,7 @@ def same_code_rerun(out: Path, matrix: str) -> bool:
 
 def write_marker(out: Path, matrix: str) -> None:
     """Mark ``out`` as a complete run of ``matrix`` by this code (see ``same_code_rerun``)."""
-    from .stable_dt import source_hash
+    from ..harness.stable_dt import source_hash
 
     path = out / MARKER_NAME
     tmp = path.with_suffix(".json.tmp")
