@@ -335,7 +335,7 @@ def test_a_store_with_damaged_pages_fails_check_store_and_every_writer_refuses_i
     before = store.read_bytes()
     refused(lambda: bm.run(*CASE, duration=0.05, store=store), "store")
     one_error_line(cli([*RUN, "--store", str(store)], fresh), 2, "--store")
-    one_error_line(cli(["validate", "--quick", "--check", "analytic.hanging-bar", "--body", "massspring", "--store",
+    one_error_line(cli(["validate", "--quick", "--check", "analytic.rigid-rotation", "--body", "massspring", "--store",
                         str(store), "--out", str(fresh / "v")], fresh), 2, "--store")
     one_error_line(cli(["regress", "--store", str(store)], fresh), 2, "--store")
     assert store.read_bytes() == before and not (fresh / "v").exists()

@@ -168,7 +168,7 @@ def test_the_sidewinder_and_the_worm_run_as_before_the_guard(creature, gait):
 
     c = Creature(case(True))
     assert c.controller.open_loop and c.controller.tracker is None
-    assert "plant_response" not in calibrated_body_info(c.body, c.case)
+    assert "plant_response" not in calibrated_body_info(c.body, c.case, c.world)
     on, off = run_case(case(True)), run_case(case(False))
     assert on.status == off.status == "ok"
     np.testing.assert_array_equal(on.series.segment_centers, off.series.segment_centers)

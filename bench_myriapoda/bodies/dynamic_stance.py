@@ -273,7 +273,10 @@ def push_segments(c, v, w, R, supported, held, c_T, R_T, states, tips, S, dt):
         tx, ty, tz = _world_inertia_times(R, i, I, dwx / dt, dwy / dt, dwz / dt)
         tx, ty, tz = tx - S.torque[i, 0], ty - S.torque[i, 1], tz - S.torque[i, 2]
         # 2. what the feet transmit, as an impulse
-        Sx, Sy, Sz, Tx, Ty, Tz = foot_forces(Fx, Fy, Fz, tx, ty, tz, r, nrm, n_feet, P.mu, P.max_force, f, slide)
+        # np.int64: numba types a count that no loop of a group's typing increments as Literal[int](0), which
+        # would give foot_forces a second signature (tests/test_compiled_signatures.py: one signature per kernel)
+        Sx, Sy, Sz, Tx, Ty, Tz = foot_forces(Fx, Fy, Fz, tx, ty, tz, r, nrm, np.int64(n_feet), P.mu, P.max_force,
+                                             f, slide)
         v[i, 0] += dt * Sx / m
         v[i, 1] += dt * Sy / m
         v[i, 2] += dt * Sz / m

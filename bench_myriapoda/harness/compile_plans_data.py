@@ -2322,7 +2322,7 @@ PLANS = {'fem-legged-dry': {'args': 'eNrtGl1v21Q0TZNsAzTQxlhJtyoyEgqTSbTWQssbWQU
                                   ('bench_myriapoda.bodies.dynamic_stance.foot_forces',
                                    'bench_myriapoda.bodies.dynamic_stance.foot_forces(float64, float64, float64, '
                                    'float64, float64, float64, array(float64, 2d, C), array(float64, 2d, C), '
-                                   'Literal[int](0), float64, float64, array(float64, 2d, C), array(float64, 1d, C))',
+                                   'int64, float64, float64, array(float64, 2d, C), array(float64, 1d, C))',
                                    4,
                                    84,
                                    2.621,
@@ -4233,7 +4233,7 @@ PLANS = {'fem-legged-dry': {'args': 'eNrtGl1v21Q0TZNsAzTQxlhJtyoyEgqTSbTWQssbWQU
                                       ('bench_myriapoda.bodies.dynamic_stance.foot_forces',
                                        'bench_myriapoda.bodies.dynamic_stance.foot_forces(float64, float64, float64, '
                                        'float64, float64, float64, array(float64, 2d, C), array(float64, 2d, C), '
-                                       'Literal[int](0), float64, float64, array(float64, 2d, C), array(float64, 1d, '
+                                       'int64, float64, float64, array(float64, 2d, C), array(float64, 1d, '
                                        'C))',
                                        4,
                                        80,

@@ -181,6 +181,10 @@ def check_store(path: Path | str, flag: str, *, write: bool = True, need: tuple[
     # handles keep them).  Only a file SQLite cannot open as a database has its header read directly.
     facts = _page_facts(path) if size else None
     header = None
+    if isinstance(facts, tuple) and (size < 100 or facts[1] == 0):
+        # SQLite opens a file shorter than its 100-byte header as an empty database (page count 0): such a file is
+        # not empty, so it is not a store (nor SQLite's), and writing would overwrite what is in it
+        raise InputError(flag, None, f"{path} is not a SQLite database (a results store written by bench-myriapoda)")
     if isinstance(facts, sqlite3.Error):
         if _is_busy(facts):
             raise InputError(flag, None, _locked_message(path))
