@@ -277,11 +277,13 @@ def test_killed_matrix_resumes_with_every_case_stored_exactly_once(tmp_path):
         creatures = ["worm"]
         bodies = ["massspring"]
         scenarios = ["flat"]
-        duration = 1.5
+        duration = 100.0
         seeds = [0]
         [matrix.grid]
         "scenario.perturbation_m" = [0.0, 0.0001, 0.0002, 0.0003, 0.0004, 0.0005, 0.0006, 0.0007]
     """)
+    # each case must outlast the 50 ms poll by a wide margin on any machine: a warm 1.5 s worm case takes
+    # ~15 ms here, and CI (warm cache, faster CPU) once stored all 8 between two polls; 100 s takes ~1 s
     out = tmp_path / "out"
     db = out / "results.sqlite"
     cmd = [sys.executable, "-m", "bench_myriapoda.cli", "matrix", str(p), "--workers", "1", "--out", str(out)]
