@@ -260,20 +260,32 @@ def test_report_and_scorecard_check_the_default_history_store(M, tmp_path, fresh
     bad(capsys, [command, d], "--history-store (default reports/results.sqlite)", words, where=d)
 
 
-def test_a_missing_history_store_is_no_history_for_both(M, tmp_path, fresh, capsys):
+@pytest.mark.parametrize("command", ["report", "scorecard"])
+def test_a_named_history_store_that_is_missing_is_refused_by_both(M, tmp_path, fresh, capsys, command):
+    # a mistyped --history-store must not read as "no history"
     d = tmp_path / "d"
     shutil.copytree(M, d)
-    for command in ("scorecard", "report"):
-        assert main([command, str(d), "--history-store", str(tmp_path / "none.sqlite")]) == 0, command
+    bad(capsys, [command, d, "--history-store", tmp_path / "none.sqlite"], "--history-store", "does not exist",
+        where=d)
     assert not (tmp_path / "none.sqlite").exists()
 
 
-def test_one_history_store_check_for_both_commands():
+def test_a_missing_default_history_store_is_no_history_for_both(M, tmp_path, fresh, capsys):
+    d = tmp_path / "d"
+    shutil.copytree(M, d)
+    for command in ("scorecard", "report"):
+        assert main([command, str(d)]) == 0, command
+    assert not (fresh / "reports").exists()
+
+
+def test_one_history_store_check_for_both_commands(fresh):
     from bench_myriapoda.report.inputs import check_history_store
 
     with pytest.raises(InputError, match="--history-store"):
         check_history_store(Path(__file__))  # a Python file is not a store
-    assert check_history_store(Path("/nonexistent/h.sqlite")) is None
+    with pytest.raises(InputError, match="does not exist"):
+        check_history_store(Path("/nonexistent/h.sqlite"))
+    assert check_history_store(None) is None  # the default, not there: no history
 
 
 # --------------------------------------------------------------------------- plugins

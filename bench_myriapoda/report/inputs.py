@@ -268,8 +268,9 @@ def check_history_store(store: Path | str | None, flag: str = "--history-store")
     """The results store ``report`` and ``scorecard`` read history from (validate verdicts, stable-dt
     results, the regress history): ``store`` as given, or the default ``reports/results.sqlite``.
 
-    One check for both commands, before anything is read.  A store that is not there is no history
-    (None; the report says so); one that is there must be a non-empty results store of this suite --
+    One check for both commands, before anything is read.  The default store not being there is no
+    history (None; the report says so); a store named with the flag must exist (a mistyped path would
+    otherwise read as "no history"); one that is there must be a non-empty results store of this suite --
     a garbage file, another program's database, a foreign ``validation`` table, an empty file, a FIFO or
     a directory is refused, naming the flag (or the default path when none was given).
     """
@@ -279,6 +280,10 @@ def check_history_store(store: Path | str | None, flag: str = "--history-store")
     path = Path(store) if given else DEFAULT_STORE
     label = flag if given else f"{flag} (default {DEFAULT_STORE})"
     if not os.path.lexists(path):
+        if given:
+            raise InputError(label, None, f"{path} does not exist; give an existing results store "
+                                          f"(written by `bench-myriapoda validate`, `regress` or `run --store`) "
+                                          f"or leave the flag out")
         return None
     check_store(path, label, write=False)
     if check_regular_file(path, str(path)) and os.path.getsize(path) == 0:

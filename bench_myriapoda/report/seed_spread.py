@@ -70,6 +70,8 @@ def plot_seed_spread(df: pd.DataFrame, path: Path, title: str) -> Path:
         ax.set_ylabel(label)
         ax.grid(True, axis="y", alpha=0.3)
         ax.set_xlim(-0.6, len(stats) - 0.4)
-    axes[0][0].legend(loc="best")
+    labelled = [ax for ax in axes[0] if ax.get_legend_handles_labels()[1]]
+    if labelled:  # the first panel may say "no values": the legend goes on the first one with data
+        labelled[0].legend(loc="best")
     fig.suptitle(title)
     return save_figure(fig, path)
