@@ -1,12 +1,10 @@
 """Fixtures shared by test files: the quick matrix's output, run once per test session."""
 from __future__ import annotations
 
-import contextlib
 import fcntl
-import io
 import json
-import os
-from dataclasses import dataclass
+import subprocess
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
@@ -14,36 +12,42 @@ import pytest
 
 @dataclass
 class QuickRun:
-    """The main job's output directory, its exit code and what it printed on stdout."""
+    """The main job's output directory, its exit code, what it printed, the command and its working directory."""
 
     out: Path
     code: int
     stdout: str
+    stderr: str = ""
+    argv: list = field(default_factory=list)
+    work: Path | None = None
 
 
 @pytest.fixture(scope="session")
-def quick_run(tmp_path_factory) -> QuickRun:
-    """``bench-myriapoda quick --workers 2 --out DIR``: the main job (quick matrix and report), once per test run.
+def quick_run(tmp_path_factory, request) -> QuickRun:
+    """The main job as a newcomer runs it: the session venv's ``bench-myriapoda`` with no arguments, in an
+    empty working directory (tests/newcomer_venv.py); its report is ``WORK/reports/quick``.  Once per test run.
 
-    The most expensive fixture of the suite (about 1.5 minutes on 2 cores with warm JIT caches): every
-    test of the quick matrix's output shares it. Under pytest-xdist each worker has its own session, so the
-    first worker that asks runs the main job under a file lock in the directory all workers share, and
-    the others wait for it and read its output (the exit code and stdout are kept beside it as JSON).
+    The most expensive fixture of the suite (about 2 minutes on 2 cores with warm JIT caches): every test
+    of the main job's output shares it, and the main journey (tests/test_journeys.py) takes it as its first
+    step and goes on in a copy of its working directory.  Under pytest-xdist each worker has its own session,
+    so the first worker that asks runs the main job under a file lock in the directory all workers share,
+    and the others wait for it and read its record (exit code, stdout and stderr kept beside it as JSON).
     """
-    from bench_myriapoda.cli import main
+    from newcomer_venv import newcomer_env, session_venv, shared_tmp
 
-    base = tmp_path_factory.getbasetemp()
-    shared = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
-    out = shared / "quick-main-job" / "quick"
+    shared = shared_tmp(tmp_path_factory, request.config)
+    work = shared / "quick-main-job"
+    out = work / "reports" / "quick"
     record = shared / "quick-main-job.json"
     with open(shared / "quick-main-job.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)   # released when the file closes, also if the main job raises
-        if record.is_file():
-            doc = json.loads(record.read_text())
-            return QuickRun(out, doc["code"], doc["stdout"])
-        out.parent.mkdir(parents=True, exist_ok=True)
-        buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
-            code = main(["quick", "--workers", "2", "--out", str(out)])
-        record.write_text(json.dumps({"code": code, "stdout": buf.getvalue()}))
-    return QuickRun(out, code, buf.getvalue())
+        if not record.is_file():
+            bindir = session_venv(tmp_path_factory, request.config)
+            argv = [str(bindir / "bench-myriapoda")]
+            work.mkdir(parents=True, exist_ok=True)
+            proc = subprocess.run(argv, cwd=work, env=newcomer_env(bindir), capture_output=True, text=True,
+                                  timeout=3600)
+            record.write_text(json.dumps({"code": proc.returncode, "stdout": proc.stdout, "stderr": proc.stderr,
+                                          "argv": argv}))
+        doc = json.loads(record.read_text())
+    return QuickRun(out, doc["code"], doc["stdout"], doc["stderr"], doc["argv"], work)

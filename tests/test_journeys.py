@@ -18,7 +18,13 @@ environment runs pytest, a venv included; ``--system-site-packages`` itself woul
 interpreter's packages, not the test venv's).  The install is editable, so the kernels' numba cache is
 the checkout's (a non-editable copy would compile every kernel again: minutes of CPU per journey).  Under
 pytest-xdist the workers share the one venv: the first builds it under a lock in the session's shared
-temporary directory.  Every journey works in its own ``tmp_path``.
+temporary directory (tests/newcomer_venv.py).  Every journey works in its own ``tmp_path``.
+
+The main job from an empty directory, the first step of the main journey, is the test session's one run of
+the main job (``conftest.quick_run``: this venv's ``bench-myriapoda``, no arguments, in an empty working
+directory, its exit status, stdout and stderr kept), which the report and scorecard tests read too; the
+journey checks that step as it checks every other and goes on in a copy of its working directory, so the
+suite does not run the quick matrix twice (about 2 minutes of the test command's wall time on 2 cores).
 """
 from __future__ import annotations
 
@@ -26,6 +32,7 @@ import json
 import math
 import os
 import re
+import shutil
 import signal
 import sqlite3
 import subprocess
@@ -37,6 +44,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from newcomer_venv import newcomer_env, session_venv
 
 ROOT = Path(__file__).resolve().parents[1]
 TUTORIALS = sorted(p for p in (ROOT / "docs" / "tutorials").glob("*.md") if p.name != "index.md")
@@ -48,58 +56,10 @@ pytestmark = pytest.mark.slow  # whole sessions of the suite: several minutes of
 
 # --------------------------------------------------------------------------- the fresh environment
 
-def _lock(path: Path, timeout_s: float = 900.0):
-    """A lock shared by xdist workers: the directory ``path`` exists while one holds it."""
-    deadline = time.monotonic() + timeout_s
-    while True:
-        try:
-            path.mkdir()
-            return
-        except FileExistsError:
-            if time.monotonic() > deadline:
-                raise TimeoutError(f"{path} held for over {timeout_s:.0f} s") from None
-            time.sleep(0.5)
-
-
-def _build_venv(where: Path) -> Path:
-    """A venv at ``where`` with the checkout installed editable; returns its bin directory."""
-    import venv
-
-    venv.create(where, with_pip=False)  # this interpreter's pip installs into it (--python): no ensurepip
-    bindir = where / ("Scripts" if os.name == "nt" else "bin")
-    py = bindir / "python"
-    cmd = [sys.executable, "-m", "pip", "--python", str(py), "install", "--no-deps", "-q", "-e", str(ROOT)]
-    try:  # offline when the build backend is here; otherwise pip fetches setuptools and wheel to build with
-        import setuptools  # noqa: F401
-        import wheel  # noqa: F401
-        cmd.append("--no-build-isolation")
-    except ImportError:
-        pass
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    assert proc.returncode == 0, f"pip install -e failed:\n{proc.stdout[-2000:]}\n{proc.stderr[-4000:]}"
-    venv_site = Path(subprocess.run([str(py), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                                    capture_output=True, text=True, check=True).stdout.strip())
-    import site
-    borrowed = dict.fromkeys([*site.getsitepackages(), sysconfig.get_paths()["purelib"]])
-    (venv_site / "zz_borrowed_site_packages.pth").write_text("".join(f"{p}\n" for p in borrowed))
-    assert (bindir / "bench-myriapoda").is_file(), "pip did not install the console script"
-    return bindir
-
-
 @pytest.fixture(scope="session")
 def venv_bin(tmp_path_factory, request) -> Path:
-    """The bin directory of the session's fresh venv (module docstring), built once for all xdist workers."""
-    worker = getattr(request.config, "workerinput", {}).get("workerid", "master")  # pytest-xdist's, if any
-    shared = tmp_path_factory.getbasetemp() if worker == "master" else tmp_path_factory.getbasetemp().parent
-    where, lock, done = shared / "journey-venv", shared / "journey-venv.lock", shared / "journey-venv.done"
-    _lock(lock)
-    try:
-        if not done.exists():
-            _build_venv(where)
-            done.write_text("ok")
-    finally:
-        lock.rmdir()
-    return where / ("Scripts" if os.name == "nt" else "bin")
+    """The bin directory of the session's fresh venv (tests/newcomer_venv.py), built once for all xdist workers."""
+    return session_venv(tmp_path_factory, request.config)
 
 
 @dataclass
@@ -115,11 +75,7 @@ class Session:
 
     def __init__(self, bindir: Path, cwd: Path):
         self.bindir, self.cwd = bindir, cwd
-        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "BENCH_MYRIAPODA_ROOT", "PYTHONHOME")}
-        env["PATH"] = str(bindir) + os.pathsep + env.get("PATH", "")
-        env["VIRTUAL_ENV"] = str(bindir.parent)
-        env["MPLBACKEND"] = "Agg"
-        self.env = env
+        self.env = newcomer_env(bindir)
         self.steps: list[Step] = []
 
     def _check(self, step: Step, ok: tuple[int, ...]) -> Step:
@@ -171,10 +127,13 @@ def test_the_console_script_is_the_fresh_venvs(session):
 
 # --------------------------------------------------------------------------- the main job and what follows it
 
-def test_main_job_then_validate_then_main_job_again_then_report_scorecard_and_load_results(session):
+def test_main_job_then_validate_then_main_job_again_then_report_scorecard_and_load_results(session, quick_run):
     """The README's sequence; after it the scorecard's fidelity cells hold verdict counts."""
     s, d = session, session.cwd / "reports" / "quick"
-    s.bench()  # the main job: the quick matrix and its report
+    # the main job, from the empty directory: the session's quick_run (module docstring), checked as a step here
+    first = s._check(Step(quick_run.argv, quick_run.code, quick_run.stdout, quick_run.stderr), (0,))
+    assert first.argv == [str(s.bindir / "bench-myriapoda")]  # the console script, no arguments
+    shutil.copytree(quick_run.work, s.cwd, dirs_exist_ok=True, symlinks=True)
     for name in ("index.html", "summary.md", "results.sqlite", "results.csv", "matrix.json"):
         assert (d / name).is_file(), name
     # validate --quick (a subset: the one check every body model declares), recorded into reports/results.sqlite
