@@ -338,7 +338,7 @@ name = "journey"
 creatures = ["worm"]
 bodies = ["massspring"]
 scenarios = ["flat"]
-duration = 1.5
+duration = 150.0
 seeds = [0]
 set = { "creature.segments" = 5 }
 [matrix.grid]
@@ -347,7 +347,10 @@ set = { "creature.segments" = 5 }
 
 
 def test_a_matrix_interrupted_with_ctrl_c_resumes_and_reports(session):
-    """Ctrl-C reaches the whole foreground process group (the pool's workers too), as in a terminal."""
+    """Ctrl-C reaches the whole foreground process group (the pool's workers too), as in a terminal.
+
+    Each case must outlast the 50 ms poll on any machine: with 1.5 s cases (a few ms each with warm kernels)
+    a fast machine once finished all 8 between two polls; 150 s of the 5-segment worm take about 0.5 s."""
     s = session
     (s.cwd / "journey.toml").write_text(SMALL_MATRIX)
     out = s.cwd / "reports" / "matrix" / "journey"
