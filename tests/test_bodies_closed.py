@@ -55,26 +55,6 @@ KNOWN_NAMING: set[tuple[str, str]] = {
     ("harness/throughput_suite.py", ".system"),
     # issue 42: the worker-cost probe's case ("the cheapest kernels to load") should be declared by a body
     ("harness/worker_costs.py", "'massspring'"),
-    # issue 42: the analytic checks on one body's own systems (the FEM box, the lattice's springs and its
-    # omega_max) should be published by that body (its spec's analytic systems)
-    ("validation/analytic.py", "'fem'"),
-    ("validation/analytic.py", "'massspring'"),
-    ("validation/analytic.py", "import fem.mesh"),
-    ("validation/analytic.py", "import fem.system"),
-    ("validation/analytic.py", "import massspring"),
-    ("validation/analytic.py", ".lattice"),
-    ("validation/analytic.py", ".rigid"),
-    ("validation/analytic.py", ".stiffness"),
-    ("validation/analytic.py", ".system"),
-    ("validation/references.py", "import fem.mesh"),
-    ("validation/references.py", "import fem.system"),
-    ("validation/references.py", "import massspring"),
-    ("validation/references.py", ".lattice"),
-    ("validation/references.py", ".stiffness"),
-    # issue 42: the work-precision quantities per body (the fem hanging worm, the lattice's resolution) should
-    # be declared by the bodies
-    ("validation/work_precision.py", "'fem'"),
-    ("validation/work_precision.py", "'massspring'"),
 }
 
 
