@@ -120,7 +120,7 @@ class BodySpec:
     - ``hanging_bar``: ``hanging_bar(body, case) -> HangingBar``, the 1-D bar a built legged chain of this body
       is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
       ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
-    - ``probes``: what validation's analytic checks measure of the body's own systems (:class:`BodyProbes`).
+    - ``probes``: what validation's analytic checks measure of the body's own systems (``BodyProbes`` above).
     """
 
     name: str
