@@ -677,7 +677,7 @@ def cmd_matrix(args) -> int:
         except ImportError:
             raise InputError("--executor", None, "dask is not installed; pip install 'bench-myriapoda[dask]'") from None
     if args.executor == "local":  # the workers' fork server imports the package while the matrix expands
-        from .harness.worker_start import prestart
+        from .jit.worker_start import prestart
         prestart()
     exp = expand_matrix(locate_matrix(args.file))
     out = Path(args.out) if args.out else Path("reports") / "matrix" / exp.name

@@ -1,4 +1,4 @@
-"""Issue 31, item 3: kernels compiled ahead by idle workers (harness/compile_plan.py, the executor's kernel jobs)."""
+"""Issue 31, item 3: kernels compiled ahead by idle workers (jit/compile_plan.py, the executor's kernel jobs)."""
 from __future__ import annotations
 
 import multiprocessing as mp
@@ -8,7 +8,7 @@ import pytest
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness import cold_compile as CC
-from bench_myriapoda.harness import compile_plan as CP
+from bench_myriapoda.jit import compile_plan as CP
 from bench_myriapoda.harness.executors import CompileScheduler, compile_group
 
 # A caller with two cached callees, one of which calls a third: the shape of a fused chunk kernel and its
@@ -58,8 +58,8 @@ def _child(module_dir, cache_dir, what, out):
     from numba.core import event as ev
 
     numba.config.CACHE_DIR = cache_dir
-    from bench_myriapoda.harness import compile_lock
-    from bench_myriapoda.harness import compile_plan as cp
+    from bench_myriapoda.jit import compile_lock
+    from bench_myriapoda.jit import compile_plan as cp
 
     compile_lock.install()
     import planmod
@@ -156,7 +156,7 @@ def _run_ahead(ctx, module_dir, cache_dir, plan):
 
 
 def _ahead_child(module_dir, cache_dir, q_in, q_out):
-    from bench_myriapoda.harness import compile_plan as cp
+    from bench_myriapoda.jit import compile_plan as cp
 
     cp.MIN_TASK_S = 0.0
     plan = q_in.get()
@@ -240,7 +240,7 @@ def test_recorded_plans_load_and_name_kernels_that_exist():
     plans = CP.load_plans()
     import numba
 
-    from bench_myriapoda.harness import compile_plans_data as data
+    from bench_myriapoda.jit import compile_plans_data as data
 
     if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
         pytest.skip(f"plans recorded with numba {data.NUMBA_VERSION}")
@@ -282,7 +282,7 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
     them.  The shipped plans have none (tests/test_compiled_signatures.py also checks their argument types)."""
     from numba.core import types
 
-    from bench_myriapoda.harness import compile_plans_data as data
+    from bench_myriapoda.jit import compile_plans_data as data
 
     assert CP.stale_signatures() == []
     ok = "bench_myriapoda.bodies.fem.kernels.lumped_mass"
@@ -291,7 +291,7 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
     events = [("bench_myriapoda.fused.legged_walk.hybrid_chunk", "gone(a)", 0, None, 9.0, 1.0, False, True),
               (ok, f"{ok}(a, b)", 1, 0, 4.0, 4.0, False, True),  # two arguments recorded, four taken
               (ok, f"{ok}(a, b, c, d)", 1, 0, 4.0, 4.0, False, True),
-              ("bench_myriapoda.harness.compile_plan.stale_reason", "x(a, b)", 1, 0, 4.0, 4.0, False, True),
+              ("bench_myriapoda.jit.compile_plan.stale_reason", "x(a, b)", 1, 0, 4.0, 4.0, False, True),
               ("bench_myriapoda.bodies.fem.kernels.rest_shape", "r(a)", 0, None, 2.0, 2.0, False, True)]
     args = [("a",), ("a", "b"), ("a", "b", "c", "d"), ("a", "b"), ("a",)]
     plan = {"case": "x", "events": events, "args": CP._encode_args(args)}

@@ -41,7 +41,7 @@ def test_recorded_compile_plans_hold_only_signatures_the_quick_matrix_compiles(s
     quick --write``, docs/guide/scheduling.md)."""
     import numba
 
-    from bench_myriapoda.harness import compile_plans_data as data
+    from bench_myriapoda.jit import compile_plans_data as data
 
     if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
         pytest.skip(f"plans recorded with numba {data.NUMBA_VERSION}, not used with {numba.__version__}")

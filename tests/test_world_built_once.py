@@ -239,9 +239,9 @@ def test_a_world_is_built_from_a_scenario_only_inside_world():
 def test_every_body_factory_receives_the_world_no_signature_is_read():
     """No module reads a callable's signature to decide what to pass it (``inspect.signature``: the old
     ``takes_world``); a body factory is always called ``factory(case, world)``.  The one reader left records
-    numba kernels' argument names for the compile plans (``harness.compile_plan``)."""
+    numba kernels' argument names for the compile plans (``jit.compile_plan``)."""
     bad = {str(p.relative_to(PACKAGE)) for p in PACKAGE.rglob("*.py") if "inspect.signature(" in p.read_text(encoding="utf-8")}
-    assert bad == {"harness/compile_plan.py"}, f"signature sniffing in {sorted(bad)}"
+    assert bad == {"jit/compile_plan.py"}, f"signature sniffing in {sorted(bad)}"
 
 
 # --------------------------------------------------------------------------- the commands: one build per run (issue 42)

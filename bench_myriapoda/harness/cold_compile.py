@@ -14,7 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
-from .compile_plan import (PLAN_MODULE, CompileEvent, _encode_args, compact, critical_chain, group_name,
+from ..jit.compile_plan import (PLAN_MODULE, CompileEvent, _encode_args, compact, critical_chain, group_name,
                            group_tasks, kernel_graph, read_plan_module, recording, write_plan_module)
 
 def record_case(case) -> list[CompileEvent]:
@@ -103,7 +103,7 @@ def _simulate_main(args) -> int:
     import sys
 
     from ..core import registry
-    from . import compile_plans_data as data
+    from ..jit import compile_plans_data as data
     from .matrix import expand_matrix, locate_matrix
     from .store import read_matrix_case_walls
 

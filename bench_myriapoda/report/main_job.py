@@ -102,7 +102,7 @@ def fidelity_phase(exp, out: Path, workers: int | None,
     from ..validation.run import JSON_NAME, summary, write_json
     from ..validation.core import Row
     from ..harness.stable_dt import brackets_for_cases, source_hash
-    from ..harness.worker_start import worker_context
+    from ..jit.worker_start import worker_context
 
     t0 = time.perf_counter()
     code = source_hash()
