@@ -134,7 +134,7 @@ LAYERS = (
     ("validation",),
     ("report",),
     ("api",),
-    ("cli", "cli_help", "__init__"),
+    ("cli", "__init__"),
 )
 LAYER_OF = {name: level for level, names in enumerate(LAYERS) for name in names}
 

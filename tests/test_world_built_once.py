@@ -184,7 +184,7 @@ WORLD_OWNERS = {
     # ``find_stable_dt``): one per run
     ("bench_myriapoda.harness.runner", "build_world"),
     # the CLI's pre-run placement check builds the case's world and hands it to the run and its animation
-    ("bench_myriapoda.cli", "check_placements"),
+    ("bench_myriapoda.cli.case_flags", "check_placements"),
     # the report: one world per stored case (``MatrixResults.world``), handed to every plot of the case
     ("bench_myriapoda.report.matrix_data", "world_from_sections"),
     # the leg controller set up alone (a script, a test); the runner hands it the run's world before its reset.
