@@ -1,6 +1,6 @@
 """The main job's second half: the fidelity and stability of every creature x body pair of the quick matrix.
 
-After the matrix has run (``cli.cmd_matrix``), ``fidelity_phase`` writes two files into its output directory:
+After the matrix has run (``cli.matrix.cmd_matrix``), ``fidelity_phase`` writes two files into its output directory:
 
 ``stable_dt.json``   the [largest stable, smallest unstable] dt of every headline pair, bisected to 10 % on
                      1 s runs (``harness.stable_dt.brackets_for_cases``; kept by case and source hash, so a
