@@ -607,7 +607,7 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
           "miller.image4-caterpillar-down": False, "paper.fig4-drop": True, "paper.fig10a-hang": True,
           "paper.fig10d-walk": True, "paper.wave-centipede": True, "paper.wave-millipede": False,
           "paper.control-turn": False, "paper.foraging": False, "paper.avoidance": False,
-          "paper.kinematic-shortcut-centipede": False, "paper.kinematic-shortcut-millipede": False,
+          "paper.kinematic-shortcut-centipede": True, "paper.kinematic-shortcut-millipede": True,
           "throughput.sec6-headline": True}
 
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
