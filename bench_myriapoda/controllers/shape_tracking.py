@@ -310,15 +310,15 @@ class WaveformWatch:
     identification read it, times the calibrated gain; unsmoothed: the temporal harmonics of a short wave are
     spatially shorter still, and the smoothing along the body would hide them) goes into a ring of one period.
     The centre line, not the segment frames the loop reads: on the hybrid at 7.5 segments a wave the frames' turn
-    carried harmonic content 0.27 in the calibrated open loop, whose centre line carried 0.05.  A check projects the ring on the command's phase,
-    fits at every point, over the ring's times, the wave's temporal harmonics h = 1 .. H (sin and cos of h omega t),
-    the fundamental's amplitude drifting linearly over the period (t sin omega t, t cos omega t) and a drifting mean,
-    and returns sqrt(mean_i sum_{h=2..H} |c_h,i|^2) / A_s, c_h,i the fitted harmonics and A_s the commanded strain
-    amplitude.  Over a whole period a travelling sine reads 0 at any amplitude and phase with no ripple (a filter
-    over part of a period ripples at twice the wave frequency, and tripped on the default snake); the drift terms
-    keep a settling loop's growing amplitude out of the harmonics (without them the lattice at mu_t / mu_f = 5, on
-    the slithering grid, read 0.19 over the first period after the ramp while its loop brought the bend up from a
-    fifth of the command, and 0.06 after)."""
+    carried harmonic content 0.27 in the calibrated open loop, whose centre line carried 0.05.  A check projects the
+    ring on the command's phase, c_h,i = (2 / N) sum_t b_i(t) exp(-i h theta_i(t)), theta_i = k s_i - omega t + phi,
+    and returns sqrt(mean_i sum_{h=2..H} |c_h,i|^2) / A_s, A_s the commanded strain amplitude: over a whole period
+    the harmonics are orthogonal, so a travelling sine reads 0 at any amplitude and phase with no ripple (a filter
+    over part of a period ripples at twice the wave frequency, and tripped on the default snake).  A loop still
+    settling reads high too (its amplitude changes within the period): on the slithering grid the first checks
+    after the ramp read 0.15 to 0.22, so the guard asks that the content be growing as well (``growing``).  Fitting
+    the amplitude's drift over the period with the harmonics was tried and read higher (lattice, mu_t / mu_f = 5:
+    0.26 at the first check, 0.10 steady, against 0.19 and 0.06 here)."""
 
     def __init__(self, period_s: float, dt_tick: float):
         self.n = max(8, int(round(period_s / dt_tick)))

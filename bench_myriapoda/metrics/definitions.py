@@ -194,10 +194,10 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("shape_plant_lag_deg", "deg", "median over the interior segments of the open loop's curvature lag behind the "
      "commanded wave, from the same identification", "bending gaits"),
     ("shape_loop_margin_deg", "deg", "phase margin of the loop's amplitude-and-phase integral on the identified open "
-     "loop at the gains the run used: 90 - the largest |arg H| over the segments, H = rho G / (1 + K_p rho G) (G the "
-     "identified response, K_p the proportional gain used, rho the smoothing's response to the commanded wave; a "
-     "linear plant converges above 0); measured, not acted on: under Coulomb friction it does not predict the closed "
-     "loop (docs/explanation/shape-tracking.md)", "bending gaits"),
+     "loop at the gains the run started with (before any back-off): 90 - the largest |arg H| over the segments, "
+     "H = rho G / (1 + K_p rho G) (G the identified response, K_p the proportional gain used, rho the smoothing's "
+     "response to the commanded wave; a linear plant converges above 0); measured, not acted on: under Coulomb "
+     "friction it does not predict the closed loop (docs/explanation/shape-tracking.md)", "bending gaits"),
     ("shape_loop_rate_per_cycle", "-", "the same integral's convergence per gait cycle at the gains used: "
      "`gait.shape_gain_i_per_cycle` x Re H, the median over the segments (e-foldings of a linear plant's error per "
      "cycle; 0 or below: no convergence)", "bending gaits"),
