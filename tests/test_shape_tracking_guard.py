@@ -4,8 +4,9 @@ Issue 44's table: one key away from the slithering grid the closed loop ran away
 mu_f 0.1 / mu_b 0.3 / mu_t 0.5): the lattice coiled to four times the commanded curvature with half its muscles at
 their strength and ended ``ok``; the hybrid blew up.  ``controllers.shape_tracking.LoopGuard`` backs the loop off
 to the calibrated open loop when the body bends 20 % beyond the command or most muscles are held at their
-strength, resumes at half the gains, and after two back-offs stays open loop; a run where it acted in the measured
-window ends ``controller_unstable``.
+strength, resumes at half the gains, and after two back-offs stays open loop; when the waveform's harmonic content
+grows past 0.15 and the open loop's own (``WaveformWatch``) it switches the loop's integrals off.  A run where it
+acted in the measured window, or that ended in the open loop or without its integrals, ends ``controller_unstable``.
 
 The property test runs the lattice over the key space a user can reach (wavelength 0.3-1.5 body lengths, curvature
 amplitude 2-14, frequency 0.1-1 Hz, every friction model with mu_t / mu_f 1-10, 12-100 segments) with short runs:

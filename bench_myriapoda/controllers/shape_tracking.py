@@ -419,7 +419,6 @@ class LoopGuard:
         self.reasons: list[str] = []  # what each back-off saw
         self.integral_off = False  # the integrals switched off by a waveform back-off
         self.harmonic_limit = GUARD_HARMONIC  # the waveform test's threshold (``set_open_loop_harmonics``)
-        self.harmonic_peak = 0.0   # the largest harmonic content a check measured [-]
         self.waveform.clear()
 
     def set_open_loop_harmonics(self, content: float) -> None:
@@ -467,7 +466,6 @@ class LoopGuard:
             self.waveform.push(t, bend)
             if self.waveform.due(t):
                 harmonic = self.waveform.content(t, waves, s_bend)
-                self.harmonic_peak = max(self.harmonic_peak, harmonic)
         # the controller's doing: the body bends beyond the command while the loop commands more than the open
         # loop would (a body that overshoots in open loop, which the loop is pulling back, is the body's own)
         overshoot = self.p_meas > GUARD_AMPLITUDE_RATIO ** 2 * self.p_cmd and self.p_out > self.p_cmd
@@ -481,7 +479,8 @@ class LoopGuard:
         self.backoffs += 1
         self.times.append(float(t))
         self.reasons.append("bend over the command" if overshoot else "most muscles saturated" if saturated else
-                            f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}")
+                            f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
+                            ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
         self.sat = 0.0
         if distorted and not (overshoot or saturated) and not self.integral_off:
@@ -629,5 +628,5 @@ class ShapeTracker:
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
                 f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, or the waveform's "
-                f"harmonics beyond the open loop's) and backed off to the calibrated open loop at t = {when} s; "
-                f"it {end}")
+                f"harmonics beyond the open loop's) and was backed off (to the calibrated open loop for a period, or "
+                f"its integrals off) at t = {when} s; it {end}")
