@@ -392,10 +392,11 @@ class LoopGuard:
 
     The waveform is watched too (``WaveformWatch``): a loop can hold the bend's amplitude and still drive its shape
     away, into the wave's temporal harmonics.  On the hybrid snake at 0.3 BL, curvature 10, 0.5 Hz, Miller's friction
-    at mu_t / mu_f = 1 and 25 segments the harmonic content of the centre line grew from 0.05 (the open loop's) to
-    0.85 over 8 s, with the amplitude short of the command; that is the fundamental's amplitude-and-phase integral
-    (without it the loop tracked, shape error 0.06, harmonics 0.02).  When the harmonic content over the last period
-    passes ``GUARD_HARMONIC`` and the open loop's own by ``GUARD_HARMONIC_EXCESS``, the integrals (the fundamental's
+    at mu_t / mu_f = 1 and 25 segments the harmonic content of the centre line grew period by period 0.14, 0.27, 0.52,
+    0.67, 0.72, 0.85 (the open loop's: 0.05), with the amplitude short of the command; that is the fundamental's
+    amplitude-and-phase integral (without it the loop tracked, shape error 0.06, harmonics 0.02).  When the harmonic
+    content over the last period passes ``GUARD_HARMONIC``, and the open loop's own by ``GUARD_HARMONIC_EXCESS``, and
+    is growing (``WaveformWatch.growing``: a settling loop's transient decays), the integrals (the fundamental's
     and the harmonics') are dropped and switched off for the rest of the run, and the proportional loop goes on
     (gain scheduling: the part of the loop that lost its margin goes); a second trip of any test backs off as above.
     The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and

@@ -184,7 +184,8 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
      "0.05: the loop's integrals switched off the first time, backed off after) (`gait.shape_guard`, closed-loop "
      "shape control only)", "bending gaits"),
     ("shape_control_gain_scale", "-", "the closed loop's gains at the end of the run over its own: 1 when the guard "
-     "never acted, halved at each back-off, 0 when it stayed in the calibrated open loop", "bending gaits"),
+     "never acted, halved at each back-off, 0 when it stayed in the calibrated open loop (the proportional gain's: "
+     "after a waveform trip the integrals are off, which the run's message says)", "bending gaits"),
     ("shape_control_backoff_s", "s", "when the guard first backed the loop off (NaN when it never did)",
      "bending gaits"),
     ("shape_plant_gain", "-", "median over the interior segments of the curvature amplitude the calibrated open loop "
