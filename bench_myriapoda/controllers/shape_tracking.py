@@ -61,7 +61,7 @@ import numpy as np
 from numba import njit
 
 from ..core.protocols import LATERAL_GROUND_SIGN
-from ..kinematics.centre_lines import ground_curvature
+from ..kinematics.centre_lines import ground_bend
 
 # wave table columns (controllers.muscle_waves; repeated here to keep this module free of that import)
 _AMP, _WAVENUMBER, _OMEGA, _PHASE = 0, 1, 2, 3
@@ -557,6 +557,7 @@ class ShapeTracker:
         self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n),
                                       np.zeros((n_h, n)), np.zeros((n_h, n))))
         self.s_centre = None
+        self._bend = None  # the guard's bend buffer (n - 2,) [strain]
         self.full_gains, self.scale = self.gains, (1.0, 1.0)
         if self.guard is not None:
             self.guard.reset()
@@ -582,7 +583,11 @@ class ShapeTracker:
         bend = None
         if self.guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
-            bend = self.strain_per_kappa * ground_curvature(np.asarray(obs.seg_pos, float)[None])[0][0]
+            pos = np.asarray(obs.seg_pos, float)
+            if self._bend is None or self._bend.shape[0] != pos.shape[0] - 2:
+                self._bend = np.zeros(pos.shape[0] - 2)
+            ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
+            bend = self._bend
         if self.guard is not None and self.guard.watch(t, self.gains[0], waves, self.s_muscle, self.state, self.umax,
                                                        bend, self.s_centre[1:-1]):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
