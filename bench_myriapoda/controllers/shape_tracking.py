@@ -583,7 +583,7 @@ class ShapeTracker:
         bend = None
         if self.guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
-            pos = np.asarray(obs.seg_pos, float)
+            pos = np.ascontiguousarray(obs.seg_pos, dtype=np.float64)  # one compiled signature for every body
             if self._bend is None or self._bend.shape[0] != pos.shape[0] - 2:
                 self._bend = np.zeros(pos.shape[0] - 2)
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
