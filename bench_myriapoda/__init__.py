@@ -8,6 +8,19 @@ from pathlib import Path
 __version__ = "0.1.0"
 
 
+def _source_hash() -> str:
+    """The hash (16 hex digits) of every source file of this package, names and contents."""
+    h = hashlib.sha256()
+    root = Path(__file__).resolve().parent
+    for p in sorted(root.rglob("*.py")):
+        h.update(str(p.relative_to(root)).encode())
+        h.update(p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+SOURCE_HASH = _source_hash()  # keys what is built from the code and kept on disk: numba's cache, mesh terrains
+
+
 def _numba_cache_dir() -> str:
     """A numba cache directory keyed by the hash of every source file of this package.
 
@@ -17,13 +30,8 @@ def _numba_cache_dir() -> str:
     other modules running stale machine code.  Keying the whole cache on all
     sources makes any edit start from a clean cache.
     """
-    h = hashlib.sha256()
-    root = Path(__file__).resolve().parent
-    for p in sorted(root.rglob("*.py")):
-        h.update(str(p.relative_to(root)).encode())
-        h.update(p.read_bytes())
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return os.path.join(base, "bench-myriapoda", "numba", h.hexdigest()[:16])
+    return os.path.join(base, "bench-myriapoda", "numba", SOURCE_HASH)
 
 
 NUMBA_CACHE_DIR_GIVEN = "NUMBA_CACHE_DIR" in os.environ  # the user's own (checked by core.numba_env), not ours

@@ -33,6 +33,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..core.paths import cache_root
 from ..core.protocols import LATERAL, Actuation, Observation
 
 CAL_FORMAT = "curvature-cal-v1"
@@ -47,9 +48,8 @@ CAL_STEADY_CHECKS = 3    # consecutive steady checks that make rest
 
 
 def calibration_cache_dir() -> Path:
-    """$BENCH_MYRIAPODA_CACHE/calibration, or ~/.cache/bench-myriapoda/calibration."""
-    env = os.environ.get("BENCH_MYRIAPODA_CACHE")
-    return (Path(env) if env else Path.home() / ".cache" / "bench-myriapoda") / "calibration"
+    """``calibration/`` under ``core.paths.cache_root()``."""
+    return cache_root() / "calibration"
 
 
 def circle_curvature(points_xz: np.ndarray) -> float:

@@ -45,3 +45,15 @@ def models_dir() -> Path:
 
 def scenarios_dir() -> Path:
     return project_root() / "scenarios"
+
+
+def cache_root() -> Path:
+    """Where what the suite builds once per machine is kept (tetrahedral meshes, curvature calibrations, mesh
+    terrains): ``$BENCH_MYRIAPODA_CACHE``, else ``$XDG_CACHE_HOME/bench-myriapoda``, else
+    ``~/.cache/bench-myriapoda``.  numba's compiled kernels go to ``numba/`` under the XDG one
+    (``bench_myriapoda.__init__``)."""
+    env = os.environ.get("BENCH_MYRIAPODA_CACHE")
+    if env:
+        return Path(env)
+    base = os.environ.get("XDG_CACHE_HOME")
+    return (Path(base) if base else Path.home() / ".cache") / "bench-myriapoda"

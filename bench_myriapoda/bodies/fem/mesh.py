@@ -14,6 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ...core.paths import cache_root
+
 # Local corner index of a hexahedral cell: bit 0 -> +x, bit 1 -> +y, bit 2 -> +z.
 _CORNERS = np.array([[(c >> 0) & 1, (c >> 1) & 1, (c >> 2) & 1] for c in range(8)], dtype=np.int64)
 
@@ -207,9 +209,8 @@ _CACHE_FORMAT = "tetmesh-v1"
 
 
 def tetmesh_cache_dir():
-    """Cache directory: $BENCH_MYRIAPODA_CACHE or ~/.cache/bench-myriapoda/tetmesh."""
-    env = os.environ.get("BENCH_MYRIAPODA_CACHE")
-    return Path(env) if env else Path.home() / ".cache" / "bench-myriapoda" / "tetmesh"
+    """Cache directory: ``tetmesh/`` under ``core.paths.cache_root()``."""
+    return cache_root() / "tetmesh"
 
 
 def _load_surface(mesh_or_path):
