@@ -34,8 +34,8 @@ def test_each_sweep_matrix_runs_the_dynamic_stance_on_hybrid_and_massspring(name
     assert len(exp.cases) <= 30  # minutes on two cores: the docs state each sweep's size and runtime
 
 
-def _case_json(head=0.5, control=0.5):
-    return json.dumps({"controller": {"head_speed_m_s": head},
+def _case_json(head=0.5, control=0.5, wave="retrograde"):
+    return json.dumps({"controller": {"head_speed_m_s": head, "wave_direction": wave},
                        "scenario": {"brain": "control", "control_speed_m_s": [control]}})
 
 
@@ -45,10 +45,11 @@ def _frame(rows):
     for r in rows:
         key = S.STIFFNESS_KEYS[r["body"]]
         out.append({"creature": "centipede", "body": r["body"], "status": r.get("status", "ok"),
-                    f"grid.{key}": r["k"], "case_json": _case_json(control=r.get("v", 0.5)),
+                    f"grid.{key}": r["k"], "case_json": _case_json(control=r.get("v", 0.5), wave=r.get("wave", "retrograde")),
                     f"grid.{S.SWING_KEY}": r.get("swing", 4.0), f"grid.{S.SPEED_KEY}": [r.get("v", 0.5)],
                     "metric.body_speed_ratio": r.get("ratio", 1.0) * r.get("v", 0.5) / 0.5,
-                    "metric.walking_cycle_leg_fraction": r.get("legs", 1.0),
+                    "metric.stepping_leg_fraction": r.get("legs", 1.0),
+                    "metric.phase_lag_mean": r.get("lag", 0.1),
                     "metric.stance_slide_fraction": r.get("slide", 0.1),
                     "metric.undulation_amplitude_bl": r.get("und", 0.001),
                     "metric.head_yaw_osc_deg": r.get("yaw", 0.2),
@@ -62,14 +63,16 @@ def test_a_walk_is_coordinated_only_at_speed_with_its_legs_walking_and_its_feet_
     df = _frame([dict(body="hybrid", k=1000.0),                        # coordinated
                  dict(body="hybrid", k=1000.0, ratio=0.85),            # left behind
                  dict(body="hybrid", k=1000.0, ratio=1.15),            # overtaking its head
-                 dict(body="hybrid", k=1000.0, legs=0.7),              # legs off the walking cycle
-                 dict(body="hybrid", k=1000.0, slide=0.6),             # feet sliding
+                 dict(body="hybrid", k=1000.0, legs=0.8),              # some legs stopped stepping
+                 dict(body="hybrid", k=1000.0, lag=-0.1),              # the retrograde leg wave turned direct
+                 dict(body="hybrid", k=1000.0, lag=-0.1, wave="direct"),  # a direct wave, as commanded
+                 dict(body="hybrid", k=1000.0, slide=0.3),             # feet sliding
                  dict(body="hybrid", k=1000.0, status="unstable"),     # blew up
                  dict(body="hybrid", k=1000.0, v=2.0, ratio=0.95)])    # fast and on pace
-    assert S.coordinated(df).tolist() == [True, False, False, False, False, False, True]
+    assert S.coordinated(df).tolist() == [True, False, False, False, False, True, False, False, True]
     # body_speed_ratio divides by controller.head_speed_m_s; the sweep's speed is the CONTROL schedule's
     assert S.speed_ratio(df).iloc[-1] == pytest.approx(0.95)
-    assert S.commanded_speed(df).tolist() == [0.5] * 6 + [2.0]
+    assert S.commanded_speed(df).tolist() == [0.5] * 8 + [2.0]
 
 
 def test_the_critical_speed_is_the_lowest_at_which_straight_walking_is_lost():
