@@ -108,3 +108,11 @@ def test_the_sweep_script_refuses_a_directory_that_is_no_matrix_output(tmp_path,
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "nonesuch" in err
     assert not (tmp_path / "x.png").exists()
+
+
+def test_the_report_finds_sweeps_a_and_b_by_their_grid_keys():
+    df = _frame([dict(body="hybrid", k=1000.0), dict(body="massspring", k=600.0)])
+    assert S.sweeps_in(df, ["body.youngs_modulus_pa", S.SWING_KEY]) == ["stiffness"]
+    assert S.sweeps_in(df, ["body.link_stiffness_n_m", S.SPEED_KEY]) == ["speed"]
+    assert S.sweeps_in(df, [S.SWING_KEY, S.SPEED_KEY]) == []           # no stiffness axis: no sweep a or b
+    assert S.sweeps_in(df, ["body.youngs_modulus_pa", "dt"]) == []      # a stability sweep is not one of them

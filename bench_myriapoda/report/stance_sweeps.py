@@ -44,7 +44,7 @@ import pandas as pd  # noqa: E402
 
 from ..core.errors import InputError  # noqa: E402
 from .body_wave import plot_speed_per_stride_vs_offset  # noqa: E402
-from .figure_files import report_style, save_figure  # noqa: E402
+from .figure_files import figure_section, report_style, save_figure  # noqa: E402
 
 # the links' stiffness of each body model: the body's yaw (bending) stiffness in these sweeps
 STIFFNESS_KEYS = {"hybrid": "body.youngs_modulus_pa", "fem": "body.youngs_modulus_pa",
@@ -218,6 +218,32 @@ def plot_body_wave_sweep(df: pd.DataFrame, path: Path) -> Path:
     """Sweep (c): speed per stride against the body wave's phase offset, per body (``report.body_wave``)."""
     with report_style():
         return plot_speed_per_stride_vs_offset(df, path)
+
+
+def sweeps_in(df: pd.DataFrame, grid_keys) -> list[str]:
+    """The sweeps (``PLOTS``' names, a and b) a matrix holds: a link-stiffness grid key crossed with the swing
+    speed (stiffness) or with the CONTROL speed (speed).  (Sweep c is the report's body-wave section.)"""
+    keys = set(grid_keys)
+    if not keys & set(STIFFNESS_KEYS.values()) or not any(f"grid.{k}" in df for k in STIFFNESS_KEYS.values()):
+        return []
+    return [name for name, key in (("stiffness", SWING_KEY), ("speed", SPEED_KEY))
+            if key in keys and f"grid.{key}" in df]
+
+
+def report_sections(page, res) -> None:
+    """The matrix report's sections of sweeps a and b (``report.build``), when the matrix holds them."""
+    titles = {"stiffness": ("stance-stiffness", "Dynamic stance: body stiffness x stepping frequency",
+                            "Undulation, speed per stride and the legs' cost of transport against the stride "
+                            "frequency, one line per link stiffness; filled: coordinated walks (speed within "
+                            f"{SPEED_BAND:.0%}, at most {MAX_SLIDE:.0%} of STANCE foot-steps sliding, every leg "
+                            "stepping, the leg wave in its direction)."),
+              "speed": ("stance-speed", "Dynamic stance: undulation against walking speed",
+                        "Undulation, head yaw and body speed over commanded speed against the commanded speed, "
+                        "one line per link stiffness; filled: straight walking holds (coordinated, undulation "
+                        f"at most {UNDULATION_LOST_BL} BL).")}
+    for name in sweeps_in(res.df, res.grid_keys):
+        sid, title, caption = titles[name]
+        figure_section(page, sid, title, f"{sid}.png", PLOTS[name], res.df, caption)
 
 
 def table(df: pd.DataFrame, sweep: str) -> str:
