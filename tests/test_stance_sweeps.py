@@ -31,7 +31,7 @@ def test_each_sweep_matrix_runs_the_dynamic_stance_on_hybrid_and_massspring(name
     if name != "stance-body-wave":  # sweeps a and b cross the axis with each body's link stiffness
         for body, key in (("hybrid", "body.youngs_modulus_pa"), ("massspring", "body.link_stiffness_n_m")):
             assert len({c.axes.get(key) for c in exp.cases if c.case.body.name == body}) >= 3
-    assert len(exp.cases) <= 30  # minutes on two cores: the docs state each sweep's size and runtime
+    assert len(exp.cases) <= 32  # minutes on two cores: the docs state each sweep's size and runtime
 
 
 def _case_json(head=0.5, control=0.5, wave="retrograde"):
