@@ -59,21 +59,25 @@ def bending_amplitude_bl(t, centres, body_length_m):
 @pytest.mark.slow
 @pytest.mark.parametrize("body, key, soft, stiff", [
     # measured: undulation 0.00308 against 0.00057 BL, head yaw 0.92 against 0.15 deg, bending 0.00169 against
-    # 0.00022 BL
+    # 0.00022 BL (at dt / 2: 0.00188 / 0.00062, 0.32 / 0.17, 0.00168 / 0.00020)
     ("hybrid", "body.youngs_modulus_pa", 250.0, 4000.0),
-    # measured: undulation 0.00184 against 0.00045 BL, head yaw 0.62 against 0.067 deg
+    # measured: undulation 0.00184 against 0.00045 BL, head yaw 0.62 against 0.067 deg, bending 0.00092 against
+    # 0.00013 BL (at dt / 2: 0.00150 / 0.00027, 0.37 / 0.074, 0.00090 / 0.00015)
     ("massspring", "body.link_stiffness_n_m", 150.0, 2400.0),
 ])
 def test_a_softer_body_undulates_more_at_the_dynamic_stances_defaults(body, key, soft, stiff):
+    # The walk's sway is sensitive to round-off (halving dt moves these figures by up to 45 %), so the bounds
+    # hold at both time steps with room: the bending, which the links' stiffness sets, most firmly.
     a, b = undulation(body, key, soft), undulation(body, key, stiff)
-    assert a["undulation_amplitude_bl"] > 2.5 * b["undulation_amplitude_bl"]
-    assert a["head_yaw_osc_deg"] > 2.5 * b["head_yaw_osc_deg"]
-    assert a["bending_amplitude_bl"] > 2.5 * b["bending_amplitude_bl"]
+    assert a["bending_amplitude_bl"] > 3.0 * b["bending_amplitude_bl"]
+    assert a["undulation_amplitude_bl"] > 2.0 * b["undulation_amplitude_bl"]
+    assert a["head_yaw_osc_deg"] > 1.5 * b["head_yaw_osc_deg"]
 
 
 @pytest.mark.slow
 def test_stiffer_hybrid_links_bend_less_where_the_body_sways_more_as_one_piece():
     # measured (1000 against 16000 Pa): undulation 0.00126 against 0.00131 BL, bending 0.00056 against 0.00020 BL
+    # (at dt / 2: 0.00075 against 0.00067, bending 0.00046 against 0.00014: the totals' order is round-off's)
     soft, stiff = undulation("hybrid", "body.youngs_modulus_pa", 1000.0), \
         undulation("hybrid", "body.youngs_modulus_pa", 16000.0)
     assert soft["bending_amplitude_bl"] > 2.0 * stiff["bending_amplitude_bl"]
