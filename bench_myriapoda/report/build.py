@@ -43,7 +43,7 @@ import pandas as pd
 from ..core.cells import fmt
 from ..harness.recorder import series_from_recording
 from ..harness.store import StoreReadError
-from . import body_wave, friction_sweep, schedule_section, sweeps
+from . import body_wave, friction_sweep, schedule_section, stance_sweeps, sweeps
 from .baseline import compare_runs, format_change
 from .matrix_data import MatrixResults, load_matrix_dir
 from .paper_figures import PAPER_STEPS_PER_S, PAPER_THROUGHPUT_NOTE, figure_for
@@ -204,6 +204,8 @@ def _build(res: MatrixResults, base: MatrixResults | None, history_store, thresh
         body_wave.report_section(page, res)
     if not res.df.empty and friction_sweep.has_friction_sweep(res.df, res.grid_keys):
         friction_sweep.report_section(page, res)
+    if not res.df.empty:
+        stance_sweeps.report_sections(page, res)
     _energy(page, res, main)
     _paper(page, res, main, vdata, verdicts)
     validation_section(page, vdata, Path(history_store) if history_store else None, verdicts)
