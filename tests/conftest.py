@@ -10,6 +10,15 @@ from pathlib import Path
 import pytest
 
 
+def pytest_configure(config):
+    """Each kernel compiled once across the test processes (pytest-xdist's workers share numba's on-disk cache):
+    the matrix workers' compile lock (``jit.compile_lock``), so that the second worker needing a kernel the
+    first is compiling waits and loads it instead of compiling it again (a cold test run compiles every kernel)."""
+    from bench_myriapoda.jit import compile_lock
+
+    compile_lock.install()
+
+
 @dataclass
 class QuickRun:
     """The main job's output directory, its exit code, what it printed, the command and its working directory."""

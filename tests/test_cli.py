@@ -244,3 +244,24 @@ def test_a_store_from_before_later_columns_is_upgraded_on_open(tmp_path, capsys)
     assert main([*RUN, "--json", "--store", str(db)]) == 0
     cols = {r[1] for r in sq.connect(db).execute("PRAGMA table_info(runs)")}
     assert {"command", "labels_json", "matrix"} <= cols
+
+
+def test_the_command_line_package_imports_no_numba_before_main_checks_its_environment():
+    """``bench_myriapoda.cli`` is a package of one module per subcommand (issue 42); importing it (the console
+    script's entry point, ``cli:main``) must not import numba, which reads its NUMBA_* variables once, at import:
+    ``main`` checks them first (core.numba_env), then imports the subcommands.  Each subcommand is one module
+    with its parser and its command, and the table names every one ``--help`` lists."""
+    code = ("import sys, bench_myriapoda.cli as cli; assert 'numba' not in sys.modules, 'numba imported'; "
+            "from bench_myriapoda.cli import commands; assert 'numba' in sys.modules; "
+            "names = [m.__name__.rsplit('.', 1)[1] for m in commands.SUBCOMMANDS]; "
+            "assert all(callable(m.add_parser) for m in commands.SUBCOMMANDS); "
+            "print(' '.join(names)); print(cli.build_parser is commands.build_parser)")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    names, same = p.stdout.split("\n")[:2]
+    assert names.split() == ["catalogue", "run", "stable_dt", "quick", "matrix", "report", "regress", "scorecard",
+                             "keys", "peers", "validate"]
+    assert same == "True"
+    bad = subprocess.run([sys.executable, "-m", "bench_myriapoda.cli", "list"], capture_output=True, text=True,
+                         env={**os.environ, "NUMBA_OPT": "abc"})
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "NUMBA_OPT" in bad.stderr, bad.stderr

@@ -1,4 +1,4 @@
-"""Two processes that need the same cached kernel at the same moment compile it once (harness/compile_lock.py)."""
+"""Two processes that need the same cached kernel at the same moment compile it once (jit/compile_lock.py)."""
 from __future__ import annotations
 
 import multiprocessing as mp
@@ -37,7 +37,7 @@ def _compile_in_child(module_dir, cache_dir, use_lock, barrier, out):
 
     numba.config.CACHE_DIR = cache_dir
     if use_lock:
-        from bench_myriapoda.harness import compile_lock
+        from bench_myriapoda.jit import compile_lock
 
         compile_lock.install()
     import lockdemo

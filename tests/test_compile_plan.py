@@ -1,4 +1,4 @@
-"""Issue 31, item 3: kernels compiled ahead by idle workers (harness/compile_plan.py, the executor's kernel jobs)."""
+"""Issue 31, item 3: kernels compiled ahead by idle workers (jit/compile_plan.py, the executor's kernel jobs)."""
 from __future__ import annotations
 
 import multiprocessing as mp
@@ -8,7 +8,7 @@ import pytest
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness import cold_compile as CC
-from bench_myriapoda.harness import compile_plan as CP
+from bench_myriapoda.jit import compile_plan as CP
 from bench_myriapoda.harness.executors import CompileScheduler, compile_group
 
 # A caller with two cached callees, one of which calls a third: the shape of a fused chunk kernel and its
@@ -58,8 +58,8 @@ def _child(module_dir, cache_dir, what, out):
     from numba.core import event as ev
 
     numba.config.CACHE_DIR = cache_dir
-    from bench_myriapoda.harness import compile_lock
-    from bench_myriapoda.harness import compile_plan as cp
+    from bench_myriapoda.jit import compile_lock
+    from bench_myriapoda.jit import compile_plan as cp
 
     compile_lock.install()
     import planmod
@@ -156,7 +156,7 @@ def _run_ahead(ctx, module_dir, cache_dir, plan):
 
 
 def _ahead_child(module_dir, cache_dir, q_in, q_out):
-    from bench_myriapoda.harness import compile_plan as cp
+    from bench_myriapoda.jit import compile_plan as cp
 
     cp.MIN_TASK_S = 0.0
     plan = q_in.get()
@@ -236,15 +236,14 @@ def test_simulated_cold_matrix_compiles_a_groups_independent_kernels_side_by_sid
 
 
 def test_recorded_plans_load_and_name_kernels_that_exist():
-    """The shipped plans (compile_plans_data.py) decode with this numba and name importable dispatchers."""
+    """The shipped plans (jit/compile_plans.json) decode with this numba and name importable dispatchers."""
     plans = CP.load_plans()
     import numba
 
-    from bench_myriapoda.harness import compile_plans_data as data
-
-    if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
-        pytest.skip(f"plans recorded with numba {data.NUMBA_VERSION}")
-    assert set(plans) == set(data.PLANS)
+    data = CP.shipped_plans()
+    if numba.__version__.split(".")[:2] != data.numba_version.split(".")[:2]:
+        pytest.skip(f"plans recorded with numba {data.numba_version}")
+    assert set(plans) == set(data.plans)
     for name, tasks in plans.items():
         assert tasks, name
         for t in tasks:
@@ -282,8 +281,7 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
     them.  The shipped plans have none (tests/test_compiled_signatures.py also checks their argument types)."""
     from numba.core import types
 
-    from bench_myriapoda.harness import compile_plans_data as data
-
+    data = CP.shipped_plans()
     assert CP.stale_signatures() == []
     ok = "bench_myriapoda.bodies.fem.kernels.lumped_mass"
     f64 = types.float64[::1]
@@ -291,7 +289,7 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
     events = [("bench_myriapoda.fused.legged_walk.hybrid_chunk", "gone(a)", 0, None, 9.0, 1.0, False, True),
               (ok, f"{ok}(a, b)", 1, 0, 4.0, 4.0, False, True),  # two arguments recorded, four taken
               (ok, f"{ok}(a, b, c, d)", 1, 0, 4.0, 4.0, False, True),
-              ("bench_myriapoda.harness.compile_plan.stale_reason", "x(a, b)", 1, 0, 4.0, 4.0, False, True),
+              ("bench_myriapoda.jit.compile_plan.stale_reason", "x(a, b)", 1, 0, 4.0, 4.0, False, True),
               ("bench_myriapoda.bodies.fem.kernels.rest_shape", "r(a)", 0, None, 2.0, 2.0, False, True)]
     args = [("a",), ("a", "b"), ("a", "b", "c", "d"), ("a", "b"), ("a",)]
     plan = {"case": "x", "events": events, "args": CP._encode_args(args)}
@@ -301,7 +299,30 @@ def test_a_stale_plan_signature_is_skipped_not_compiled(monkeypatch):
     assert "recorded with 2 arguments, takes 4" in why[1]
     assert "not a numba dispatcher" in why[2]
     assert "recorded with 1 arguments, takes 4" in why[3]
-    monkeypatch.setattr(data, "PLANS", {"g": plan})
-    monkeypatch.setattr(data, "NUMBA_VERSION", __import__("numba").__version__)
+    monkeypatch.setattr(data, "plans", {"g": plan})
+    monkeypatch.setattr(data, "numba_version", __import__("numba").__version__)
     monkeypatch.setenv(CP.ENV_SWITCH, "on")
     assert [t.key for t in CP.load_plans()["g"]] == [f"{ok}(a, b, c, d)"]
+
+
+def test_the_plans_are_a_data_file_written_and_read_back_whole(tmp_path):
+    """The shipped plans are JSON (``jit/compile_plans.json``), read strictly by ``read_plans``; ``write_plans``
+    writes what it is given and reads back the same plans (events as lists); a file that is not one is a
+    ValueError naming it and the command that writes it, and the executor then uses no plans."""
+    shipped = CP.read_plans(CP.PLANS_FILE)
+    assert CP.PLANS_FILE.name == "compile_plans.json" and CP.PLANS_FILE.is_file()
+    assert shipped.numba_version and shipped.plans
+    assert CP.shipped_plans().plans.keys() == shipped.plans.keys()
+    out = tmp_path / "plans.json"
+    CP.write_plans(shipped.plans, "a note", out, numba_version="0.1.2")
+    back = CP.read_plans(out)
+    assert (back.numba_version, back.note) == ("0.1.2", "a note")
+    assert {n: [tuple(e) for e in p["events"]] for n, p in back.plans.items()} == \
+        {n: [tuple(e) for e in p["events"]] for n, p in shipped.plans.items()}
+    assert {n: (p["case"], p["args"]) for n, p in back.plans.items()} == \
+        {n: (p["case"], p["args"]) for n, p in shipped.plans.items()}
+    assert len(out.read_text().splitlines()) > sum(len(p["events"]) for p in shipped.plans.values())  # a line each
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"plans": {}}')
+    with pytest.raises(ValueError, match="bad.json.*cold_compile --record quick --write"):
+        CP.read_plans(bad)

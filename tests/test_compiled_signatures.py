@@ -34,19 +34,20 @@ def test_quick_matrix_kernels_have_one_signature_each(signature_report):
 
 
 def test_recorded_compile_plans_hold_only_signatures_the_quick_matrix_compiles(signature_report):
-    """A compile plan (``harness/compile_plans_data.py``, issue 31) recorded before a kernel changed names a
+    """A compile plan (``jit/compile_plans.json``, issue 31) recorded before a kernel changed names a
     signature nothing asks for any more: idle workers would compile it for nothing (or fail to, and the case
     compiles its own).  Every recorded project-kernel signature must be one the quick matrix's groups compile
     now; when this fails, record the plans again (``python -m bench_myriapoda.harness.cold_compile --record
     quick --write``, docs/guide/scheduling.md)."""
     import numba
 
-    from bench_myriapoda.harness import compile_plans_data as data
+    from bench_myriapoda.jit.compile_plan import shipped_plans
 
-    if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
-        pytest.skip(f"plans recorded with numba {data.NUMBA_VERSION}, not used with {numba.__version__}")
+    data = shipped_plans()
+    if numba.__version__.split(".")[:2] != data.numba_version.split(".")[:2]:
+        pytest.skip(f"plans recorded with numba {data.numba_version}, not used with {numba.__version__}")
     now = set(signature_report["signatures"])
-    recorded = {(name, ev[1]) for name, plan in data.PLANS.items() for ev in plan["events"]
+    recorded = {(name, ev[1]) for name, plan in data.plans.items() for ev in plan["events"]
                 if ev[0].startswith("bench_myriapoda.")}
     assert len(recorded) >= 100  # six groups' kernels (about 60 each, many shared)
     stale = sorted(f"{name}: {sig}" for name, sig in recorded if sig not in now)

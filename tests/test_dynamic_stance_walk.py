@@ -1,6 +1,6 @@
-"""The dynamic stance on walking centipedes (docs/explanation/dynamic-stance.md): its limits against the
-paper's kinematic stance and against friction, a softer body undulating more, every myriapod scenario
-stable at the default time step.  6-segment centipedes on the straight CONTROL walk at 0.5 m/s for 4 s
+"""The dynamic stance on walking centipedes (docs/explanation/dynamic-stance.md): with the paper's Follower, its
+limits against the paper's kinematic stance and against friction, a softer body undulating more; every myriapod
+scenario stable at the default time step (the dynamic stance's defaults).  6-segment centipedes on the straight CONTROL walk at 0.5 m/s for 4 s
 unless said (fused path; the figures in the comments measured so, on x86-64)."""
 import numpy as np
 import pytest
@@ -12,8 +12,15 @@ from bench_myriapoda.metrics.undulation import undulation_metrics
 STIFF = ("legs.stance_frequency_hz=1000", "legs.foot_mu=1000")
 
 
+# These walks measure the paper's Follower under the dynamic stance (``controller.follower_feedforward=off``;
+# the kinematic runs have it off anyway): the dynamic stance's own default, the Follower's speed feedforward, is
+# measured in tests/test_dynamic_stance_limits.py.
+PAPER_FOLLOWER = "controller.follower_feedforward=off"
+
+
 def walk(body, *sets, scenario="straight", segments=6, duration=4.0, creature="centipede"):
-    case = resolve_case(creature, body, scenario, overrides=[f"creature.segments={segments}", *sets])
+    case = resolve_case(creature, body, scenario,
+                        overrides=[f"creature.segments={segments}", PAPER_FOLLOWER, *sets])
     cr = Creature(case, fused=True)
     n = int(round(duration / case.dt))
     done = status = 0

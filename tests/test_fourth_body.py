@@ -33,13 +33,14 @@ from bench_myriapoda.bodies import step_status as S
 from bench_myriapoda.bodies.contact_kernels import advance_point
 from bench_myriapoda.bodies.friction_kernels import CONTACT_DISTANCE, FRICTION_CAPABILITIES, friction_params
 from bench_myriapoda.bodies.placement import place_points
+from bench_myriapoda.bodies.point_masses import point_mass_momentum_probes
 from bench_myriapoda.bodies.scene import Scene
 from bench_myriapoda.core import registry
 from bench_myriapoda.core.errors import InputError
 from bench_myriapoda.core.feasibility import lattice_footprint
 from bench_myriapoda.core.protocols import MUSCLES, Actuation, Observation
 from bench_myriapoda.core.schema import rng
-from bench_myriapoda.core.specs import BodySpec
+from bench_myriapoda.core.specs import BodyProbes, BodySpec
 from bench_myriapoda.world.terrain_kernels import signed_distance
 
 NAME = "pointchain"
@@ -238,7 +239,9 @@ BODIES = {NAME: BodySpec(
     default_params={},
     checks={"analytic.free-fall-momentum": True, "analytic.worm-eps-lambda": True,
             "miller.image1-worm-book": True, "miller.image2-snake-coils": True,
-            "miller.image4-caterpillar-arch": True})}
+            "miller.image4-caterpillar-arch": True},
+    # the free-fall check's momentum of the point masses (validation reads no body's attributes)
+    probes=BodyProbes(**point_mass_momentum_probes(lambda body: body.mass)))}
 
 
 # --------------------------------------------------------------------------- the tests

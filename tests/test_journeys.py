@@ -338,7 +338,7 @@ name = "journey"
 creatures = ["worm"]
 bodies = ["massspring"]
 scenarios = ["flat"]
-duration = 1.5
+duration = 150.0
 seeds = [0]
 set = { "creature.segments" = 5 }
 [matrix.grid]
@@ -346,15 +346,38 @@ set = { "creature.segments" = 5 }
 """
 
 
+def _ctrl_c_as_in_a_terminal() -> None:
+    """In the child before it runs: SIGINT delivered and handled by default, as a shell's foreground job has it.
+
+    Ignored and blocked signals are inherited across fork and exec, and Python installs its KeyboardInterrupt
+    handler only where SIGINT was not ignored; the test process (a pytest-xdist worker, after whatever ran in it
+    before) is no terminal.  A fresh-clone run once saw the matrix finish with exit 0 after the SIGINT, without
+    a word of "interrupted": the signal never reached Python's handler."""
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
+def _signal_state(pid: int) -> str:
+    """The SigBlk / SigIgn / SigCgt masks of a running process (Linux ``/proc``; empty elsewhere)."""
+    try:
+        lines = Path(f"/proc/{pid}/status").read_text().splitlines()
+    except OSError:
+        return ""
+    return " ".join(ln.replace("\t", "") for ln in lines if ln.startswith(("SigBlk", "SigIgn", "SigCgt")))
+
+
 def test_a_matrix_interrupted_with_ctrl_c_resumes_and_reports(session):
-    """Ctrl-C reaches the whole foreground process group (the pool's workers too), as in a terminal."""
+    """Ctrl-C reaches the whole foreground process group (the pool's workers too), as in a terminal.
+
+    Each case must outlast the 50 ms poll on any machine: with 1.5 s cases (a few ms each with warm kernels)
+    a fast machine once finished all 8 between two polls; 150 s of the 5-segment worm take about 0.5 s."""
     s = session
     (s.cwd / "journey.toml").write_text(SMALL_MATRIX)
     out = s.cwd / "reports" / "matrix" / "journey"
     db = out / "results.sqlite"
     argv = [str(s.bindir / "bench-myriapoda"), "matrix", "journey.toml", "--workers", "2"]
     proc = subprocess.Popen(argv, cwd=s.cwd, env=s.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=_ctrl_c_as_in_a_terminal)
     stored, deadline = 0, time.monotonic() + 1800
     while time.monotonic() < deadline and proc.poll() is None:
         if db.exists():
@@ -366,9 +389,10 @@ def test_a_matrix_interrupted_with_ctrl_c_resumes_and_reports(session):
                 break
         time.sleep(0.05)
     assert proc.poll() is None, "the matrix ended before it could be interrupted"
+    sig_state = _signal_state(proc.pid)  # what the kernel will do with the SIGINT, for the message below
     os.killpg(proc.pid, signal.SIGINT)
     stdout, stderr = proc.communicate(timeout=1800)  # a hung shutdown, not a timing check
-    assert proc.returncode == 130, (proc.returncode, stdout[-2000:], stderr[-3000:])
+    assert proc.returncode == 130, (proc.returncode, sig_state, stdout[-2000:], stderr[-3000:])
     assert "interrupted" in stderr and TRACEBACK not in stderr, stderr[-5000:]
     n = sqlite3.connect(db).execute("SELECT COUNT(*) FROM runs").fetchone()[0]
     assert 1 <= n < 8

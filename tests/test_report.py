@@ -194,9 +194,10 @@ def test_report_renders_in_headless_chromium(matrix_dir, tmp_path):
 
 def test_no_arguments_run_the_quick_matrix_with_its_report(monkeypatch):
     import bench_myriapoda.cli as cli
+    from bench_myriapoda.cli import matrix  # the matrix subcommand, which quick runs
 
     seen = []
-    monkeypatch.setattr(cli, "cmd_matrix", lambda ns: seen.append(ns) or 0)
+    monkeypatch.setattr(matrix, "cmd_matrix", lambda ns: seen.append(ns) or 0)
     assert cli.main([]) == 0
     ns = seen[0]
     assert (ns.file, Path(ns.out), ns.report, ns.executor, ns.resume) == ("quick", Path("reports/quick"), True,

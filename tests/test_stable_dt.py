@@ -7,7 +7,7 @@ from bench_myriapoda.bodies.massspring.body import BodyMassSpring
 from bench_myriapoda.cli import main
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.stable_dt import find_stable_dt
-from bench_myriapoda.validation.references import lattice_omega_max as omega_max
+from bench_myriapoda.bodies.massspring.analytic_systems import omega_max
 from bench_myriapoda.world.world import build_world
 
 STABLE_DT_REL_TOL = 0.08  # bisection bracket 2 % plus the finite duration needed for growth to show

@@ -153,3 +153,19 @@ def test_installed_package_takes_a_users_own_files(installed):
                           "c = resolve_case('my-worm.toml', 'massspring', 'my-flat.toml'); "
                           "print(c.creature.name, c.creature.segments, c.scenario.name)"], own, env)
     assert out.split() == ["worm", "7", "my-flat"]
+
+
+def test_wheel_ships_the_recorded_compile_plans_and_the_installed_package_reads_them(installed):
+    """The compile plans are a data file (``jit/compile_plans.json``, package data in pyproject.toml), not a module:
+    the wheel carries it and the installed package reads the same plans as the checkout."""
+    py, _, whl, work, env = installed
+    with zipfile.ZipFile(whl) as z:
+        assert "bench_myriapoda/jit/compile_plans.json" in z.namelist()
+    out = _run([py, "-c", "import json; from bench_myriapoda.jit import compile_plan as cp; d = cp.shipped_plans(); "
+                          "print(json.dumps([cp.PLANS_FILE.as_posix(), d.numba_version, sorted(d.plans)]))"], work, env)
+    path, version, groups = json.loads(out)
+    assert Path(path).is_relative_to(py.parent.parent), path
+    from bench_myriapoda.jit.compile_plan import read_plans
+
+    here = read_plans()
+    assert version == here.numba_version and groups == sorted(here.plans) and groups

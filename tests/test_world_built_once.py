@@ -184,7 +184,7 @@ WORLD_OWNERS = {
     # ``find_stable_dt``): one per run
     ("bench_myriapoda.harness.runner", "build_world"),
     # the CLI's pre-run placement check builds the case's world and hands it to the run and its animation
-    ("bench_myriapoda.cli", "check_placements"),
+    ("bench_myriapoda.cli.case_flags", "check_placements"),
     # the report: one world per stored case (``MatrixResults.world``), handed to every plot of the case
     ("bench_myriapoda.report.matrix_data", "world_from_sections"),
     # the leg controller set up alone (a script, a test); the runner hands it the run's world before its reset.
@@ -239,9 +239,9 @@ def test_a_world_is_built_from_a_scenario_only_inside_world():
 def test_every_body_factory_receives_the_world_no_signature_is_read():
     """No module reads a callable's signature to decide what to pass it (``inspect.signature``: the old
     ``takes_world``); a body factory is always called ``factory(case, world)``.  The one reader left records
-    numba kernels' argument names for the compile plans (``harness.compile_plan``)."""
+    numba kernels' argument names for the compile plans (``jit.compile_plan``)."""
     bad = {str(p.relative_to(PACKAGE)) for p in PACKAGE.rglob("*.py") if "inspect.signature(" in p.read_text(encoding="utf-8")}
-    assert bad == {"harness/compile_plan.py"}, f"signature sniffing in {sorted(bad)}"
+    assert bad == {"jit/compile_plan.py"}, f"signature sniffing in {sorted(bad)}"
 
 
 # --------------------------------------------------------------------------- the commands: one build per run (issue 42)

@@ -170,7 +170,7 @@ def lateral_gain(factory: Callable[[Any, Any], Any], case, world, cache: bool = 
 # theta = k s - omega t + phi: kappa ~ Im(c e^{i theta}) + const.  The plant at that point is G = c / c_cmd, c_cmd
 # the command's own coefficient: |G| the share of the commanded amplitude the open loop reaches, -arg G its lag.
 
-PLANT_FORMAT = "plant-response-v1"
+PLANT_FORMAT = "plant-response-v2"  # v2: the open loop's harmonic content
 PLANT_SETTLE_CYCLES = 1.0    # open-loop periods after the ramp before the fit (the friction's transient)
 PLANT_FIT_CYCLES = 1.0       # periods fitted
 PLANT_SAMPLES_PER_CYCLE = 40
@@ -202,11 +202,28 @@ def fit_wave_response(s: np.ndarray, t: np.ndarray, kappa: np.ndarray, wavenumbe
     return out
 
 
+def wave_harmonic_content(s: np.ndarray, t: np.ndarray, kappa: np.ndarray, wavenumber: float, omega: float,
+                          phase: float, commanded: float, max_harmonic: int = 5) -> float:
+    """RMS over the points s (n,) [m] of the temporal harmonics 2 to ``max_harmonic`` of kappa (T, n) [1/m] at times
+    t (T,) [s], least-squares fitted in the command's phase theta = wavenumber s - omega t + phase (with the
+    fundamental and a constant), over |commanded| [1/m]: the open loop's own share of the waveform that is not a
+    travelling sine, as ``metrics.shape_tracking.shape_harmonic_content`` measures a run's."""
+    h = np.arange(1, max_harmonic + 1)
+    power = np.zeros(s.shape[0])
+    for j in range(s.shape[0]):
+        th = wavenumber * s[j] - omega * t + phase
+        basis = np.concatenate([np.sin(np.outer(th, h)), np.cos(np.outer(th, h)), np.ones((t.shape[0], 1))], axis=1)
+        coef, *_ = np.linalg.lstsq(basis, kappa[:, j], rcond=None)
+        power[j] = np.sum(coef[1:max_harmonic] ** 2 + coef[max_harmonic + 1:2 * max_harmonic] ** 2)
+    return float(np.sqrt(np.mean(power)) / abs(commanded))
+
+
 def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple) -> dict[str, Any]:
     """Identify the open loop's response (the block comment above) on ``make_body(case)`` driven by
     ``fill(t0, dt, n_rows, act)`` (the calibrated open loop's actuation).  wave: (wavenumber [rad/m], omega [rad/s],
     phase [rad], commanded ground curvature coefficient [1/m], ramp [s]).  Returns {"s": (n,) [m], "gain": (n,)
-    |G|, "lag_deg": (n,) -arg G [deg], "status": "ok" or why not}."""
+    |G|, "lag_deg": (n,) -arg G [deg], "harmonic_content": the open loop's harmonics 2 to 5 over the command [-]
+    (``wave_harmonic_content``), "status": "ok" or why not}."""
     from ..kinematics.centre_lines import ground_curvature  # noqa: PLC0415 (the metrics' own curvature)
 
     k, om, ph, kappa_cmd, ramp = wave
@@ -241,8 +258,9 @@ def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable
     if s is None or len(times) < 8 or s.shape[0] < 5:
         return {"s": [], "gain": [], "lag_deg": [], "status": "too few samples or segments to fit"}
     G = fit_wave_response(s[1:-1], np.asarray(times), np.asarray(curves), k, om, ph, kappa_cmd)
+    content = wave_harmonic_content(s[1:-1], np.asarray(times), np.asarray(curves), k, om, ph, kappa_cmd)
     return {"s": s[1:-1].tolist(), "gain": np.abs(G).tolist(), "lag_deg": (-np.degrees(np.angle(G))).tolist(),
-            "status": "ok"}
+            "harmonic_content": content, "status": "ok"}
 
 
 def plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple,

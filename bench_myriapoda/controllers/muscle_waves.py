@@ -90,12 +90,13 @@ class MuscleWaveConfig(GaitConfig):
                                  "calibrated gain alone, bit for bit as before issue 27 "
                                  "(docs/explanation/shape-tracking.md)")
     shape_guard: bool = rng(True, doc="closed_loop: protect the loop from running away: identify the body's open-loop "
-                                      "response on the case's ground, schedule the loop's gains by its stability "
-                                      "margin (the calibrated open loop where there is none; PlantMargin), and watch "
-                                      "the run (the body bent 20 % beyond the command while the loop pushes, or most "
-                                      "muscles held at max_muscle_strain: back off to the open loop, resume at half "
-                                      "the gains; LoopGuard; controllers/shape_tracking.py); false: the loop as it "
-                                      "was before issue 44, at the body's constant gains")
+                                      "response on the case's ground and store the loop's margin at its gains "
+                                      "(PlantMargin; measured, not acted on), and watch the run (the body bent 20 % "
+                                      "beyond the command while the loop pushes, or most muscles held at "
+                                      "max_muscle_strain: back off to the open loop, resume at half the gains; the "
+                                      "waveform's harmonics growing past 0.15 and the open loop's own: the integrals "
+                                      "off; LoopGuard, WaveformWatch; controllers/shape_tracking.py); false: the loop "
+                                      "as it was before issue 44, at the body's constant gains")
     shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
     shape_gain_p: float = rng(-1.0, ge=-1.0, le=100.0,

@@ -62,6 +62,7 @@ from numba import njit
 
 from ..core.kernel_records import plain
 from ..core.protocols import LATERAL_GROUND_SIGN
+from ..kinematics.centre_lines import ground_bend
 
 # wave table columns (controllers.muscle_waves; repeated here to keep this module free of that import)
 _AMP, _WAVENUMBER, _OMEGA, _PHASE = 0, 1, 2, 3
@@ -211,49 +212,79 @@ def _wrap_deg(x):
 
 
 class PlantMargin:
-    """The loop's stability margin at the wave frequency, from the body's measured open-loop response.
+    """The loop's stability margin at the wave frequency, from the body's measured open-loop response and the gains
+    the loop runs at.
 
     ``bodies.curvature_calibration.plant_response`` identifies, at each interior segment, the open loop's curvature
-    against the command: gain |G| and lag phi.  The fundamental's amplitude-and-phase integral (step 3), its update
-    rotated by a lead delta (0 here), converges at a segment where |phi - delta| < 90 degrees for a linear plant (the
-    model plant of tests/test_shape_tracking.py), so its phase margin is 90 - max over the segments of |phi - delta|
-    [deg].
+    against the command: the complex gain G (|G| and the lag phi = -arg G).  Seen at the wave frequency (a phasor per
+    segment, the body quasi-static over a cycle), the loop of step 3 is: the command u = u_ff + X + K_p rho e, the bend
+    G u, the error e = u_ff - G u, smoothed along the body to rho e (``smooth_along_body``'s response to the commanded
+    wave's spatial period: rho = cos(pi p / lambda)^(2 passes), p the segment pitch), and the amplitude-and-phase
+    integral dX/dt = K_i rho e.  Eliminating e: dX/dt = -K_i H X + const with
 
-    Measured, and not acted on: under Coulomb friction the open loop's response is not the closed loop's plant.  On
-    the slithering grid (lattice) the open loop reached 0.97, 0.88, 0.76, 0.58, 0.20 and 0.03 of the command at
-    mu_t / mu_f = 1, 1.5, 2, 3, 5 and 10, with margins 25, 21, 11, -10, -88 and -90 degrees, and the closed loop
-    tracks every one of those cells (shape error 0.07 or less at 35.7 s); the first runaway case of issue 44 reads
-    like the cell at 5 (gain 0.15, margin -90), the default snake 0.99 and 53.  Scheduling the gains by the margin
-    (the open loop where there is none) dropped the grid's cells at 5 and 10, and turning the fundamental's update by
-    the median lag (a lead, as step 3b's) took the cells at 2 and 3 to shape errors of 0.12 and 0.19.  The guard
-    (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away."""
+        H = rho G / (1 + K_p rho G),
 
-    def __init__(self, gain, lag_deg):
+    so the integral converges where Re H > 0, and its phase margin at a segment is 90 - |arg H| [deg]; the loop's,
+    ``margin_deg``, is the smallest over the segments.  K_p is the proportional gain the loop actually runs at (the
+    body's or the key's), so the margin is that of this run's gains: K_p = 0 gives 90 - max |phi|.  The integral's
+    convergence per gait cycle is K_i / f Re H (``rate_per_cycle``, the median over the segments).
+
+    Measured, and not acted on: under Coulomb friction the open loop's response is not the closed loop's plant (the
+    bend does not grow in proportion to the command: a friction moment that does not grow with the bend holds the body
+    until the muscles' moment passes it).  On the slithering grid (lattice) the open loop reached 0.97, 0.88, 0.76,
+    0.58, 0.20 and 0.03 of the command at mu_t / mu_f = 1, 1.5, 2, 3, 5 and 10 with lags whose margins at K_p = 0
+    were 25, 21, 11, -10, -88 and -90 degrees, and the closed loop tracks every one of those cells (shape error 0.07
+    or less at 35.7 s).  Scheduling the gains by the margin (the open loop where there is none) dropped the grid's
+    cells at 5 and 10, and turning the fundamental's update by the median lag (a lead, as step 3b's) took the cells
+    at 2 and 3 to shape errors of 0.12 and 0.19 (docs/explanation/shape-tracking.md, "The plant, identified").  The
+    guard (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away."""
+
+    def __init__(self, gain, lag_deg, kp: float = 0.0, ki: float = 0.0, frequency_hz: float = 1.0,
+                 smoothing: float = 1.0, harmonic_content: float = float("nan")):
         self.gain = np.asarray(gain, float)
         self.lag_deg = _wrap_deg(lag_deg)
-        self.lead_deg = 0.0
-        self.margin_deg = 90.0 - float(np.max(np.abs(_wrap_deg(self.lag_deg - self.lead_deg))))
+        self.kp, self.ki, self.smoothing = float(kp), float(ki), float(smoothing)
+        self.harmonic_content = float(harmonic_content)
+        g = self.smoothing * self.gain * np.exp(-1j * np.radians(self.lag_deg))
+        h = g / (1.0 + self.kp * g)
+        self.margin_deg = 90.0 - float(np.max(np.abs(np.degrees(np.angle(h))))) if h.size else float("nan")
+        self.rate_per_cycle = float(np.median(self.ki / float(frequency_hz) * h.real)) if h.size else float("nan")
 
     @classmethod
-    def of(cls, response) -> "PlantMargin | None":
-        """From ``body_info["plant_response"]``; None when the plant was not identified (its status says why)."""
+    def of(cls, response, kp: float = 0.0, ki: float = 0.0, frequency_hz: float = 1.0,
+           smoothing: float = 1.0) -> "PlantMargin | None":
+        """From ``body_info["plant_response"]`` at the loop's gains kp [-], ki [1/s] (the fundamental's integral) and
+        the smoothing's response to the commanded wave [-]; None when the plant was not identified (its status says
+        why)."""
         if not response or response.get("status") != "ok" or not response.get("gain"):
             return None
-        return cls(response["gain"], response["lag_deg"])
+        return cls(response["gain"], response["lag_deg"], kp, ki, frequency_hz, smoothing,
+                   response.get("harmonic_content", float("nan")))
 
     def metrics(self) -> dict[str, float]:
-        """shape_plant_gain, shape_plant_lag_deg (medians over the segments), shape_loop_margin_deg,
-        the loop's phase margin on it."""
+        """shape_plant_gain, shape_plant_lag_deg (medians over the segments), shape_loop_margin_deg, the phase margin
+        of the loop's amplitude-and-phase integral at this run's gains, and shape_loop_rate_per_cycle, its
+        convergence per gait cycle."""
         return {"shape_plant_gain": float(np.median(self.gain)), "shape_plant_lag_deg": float(np.median(self.lag_deg)),
-                "shape_loop_margin_deg": self.margin_deg}
+                "shape_loop_margin_deg": self.margin_deg, "shape_loop_rate_per_cycle": self.rate_per_cycle}
 
 
-def scaled_gains(gains: TrackGains, scale: float) -> TrackGains:
-    """``gains`` with the loop's gains, the proportional, the fundamental's integral and the harmonics' integral
-    ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the integral state is
-    zero)."""
+def smoothing_response(pitch_m: float, wavelength_m: float, passes: int = SMOOTHING_PASSES) -> float:
+    """The response [-] of ``smooth_along_body`` (``passes`` binomial passes over muscles ``pitch_m`` apart) to a
+    profile of period ``wavelength_m`` [m] along the body: cos(pi pitch / wavelength)^(2 passes); 0 at two pitches."""
+    if not wavelength_m > 0.0:
+        return 1.0
+    c = math.cos(math.pi * min(pitch_m / wavelength_m, 0.5))
+    return float(c ** (2 * passes))
+
+
+def scaled_gains(gains: TrackGains, scale: float, integral_scale: float | None = None) -> TrackGains:
+    """``gains`` (``TrackGains``' order) with the loop's gains, the proportional, the fundamental's integral and the
+    harmonics' integral ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the
+    integral state is zero).  integral_scale [-], when given, scales the integral gains instead of ``scale``."""
     g = TrackGains(*gains)
-    return g._replace(kp=g.kp * scale, ki=g.ki * scale, ki_h=g.ki_h * scale)
+    si = scale if integral_scale is None else integral_scale
+    return g._replace(kp=g.kp * scale, ki=g.ki * si, ki_h=g.ki_h * si)
 
 
 # The guard's thresholds (``LoopGuard``): the loop has lost its margin when the body's bend, smoothed like the error,
@@ -265,6 +296,91 @@ GUARD_AMPLITUDE_RATIO = 1.2
 GUARD_SATURATION = 0.5
 GUARD_BACKOFF = 0.5
 GUARD_MAX_BACKOFFS = 2
+# The guard's waveform test (``WaveformWatch``): the centre line's bend, demodulated over the last whole period at
+# every interior centre, carries more than GUARD_HARMONIC of the commanded amplitude in the wave's temporal harmonics
+# 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
+# GUARD_HARMONIC_EXCESS above what the calibrated open loop carried on the same ground (the plant identification's
+# own harmonic content: the body's and the friction's, not the loop's), and more than at every check of the last
+# half period (growing: ``WaveformWatch.growing``).  Checked GUARD_CHECKS_PER_PERIOD times a period.
+GUARD_HARMONIC = 0.15
+GUARD_HARMONIC_EXCESS = 0.05
+GUARD_HARMONICS = 5
+GUARD_CHECKS_PER_PERIOD = 4
+
+
+class WaveformWatch:
+    """The harmonic content of the body's bend over the last whole gait period, on line (``LoopGuard``'s waveform test).
+
+    Each tick's bend b_i(t) [strain] at the interior segment centres (the ground curvature of the centre line through
+    the segments' centres, ``kinematics.centre_lines.ground_curvature``, as the run's metrics and the plant
+    identification read it, times the calibrated gain; unsmoothed: the temporal harmonics of a short wave are
+    spatially shorter still, and the smoothing along the body would hide them) goes into a ring of one period.
+    The centre line, not the segment frames the loop reads: on the hybrid at 7.5 segments a wave the frames' turn
+    carried harmonic content 0.27 in the calibrated open loop, whose centre line carried 0.05.  A check projects the
+    ring on the command's phase, c_h,i = (2 / N) sum_t b_i(t) exp(-i h theta_i(t)), theta_i = k s_i - omega t + phi,
+    and returns sqrt(mean_i sum_{h=2..H} |c_h,i|^2) / A_s, A_s the commanded strain amplitude: over a whole period
+    the harmonics are orthogonal, so a travelling sine reads 0 at any amplitude and phase with no ripple (a filter
+    over part of a period ripples at twice the wave frequency, and tripped on the default snake).  A loop still
+    settling reads high too (its amplitude changes within the period): on the slithering grid the first checks
+    after the ramp read 0.15 to 0.22, so the guard asks that the content be growing as well (``growing``).  Fitting
+    the amplitude's drift over the period with the harmonics was tried and read higher (lattice, mu_t / mu_f = 5:
+    0.26 at the first check, 0.10 steady, against 0.19 and 0.06 here)."""
+
+    def __init__(self, period_s: float, dt_tick: float):
+        self.n = max(8, int(round(period_s / dt_tick)))
+        self.period_s = float(period_s)
+        self.buf = None
+        self.times = np.zeros(self.n)
+        self.clear()
+
+    def clear(self) -> None:
+        """Forget what was seen (a back-off: the next check waits for a whole period of the loop resumed)."""
+        self.checks: list[tuple[float, float]] = []  # (t [s], content [-]) of the checks since
+        self.filled = 0
+        self.pos = 0
+        self.next_check = -math.inf
+
+    def push(self, t: float, bend) -> None:
+        """Add the tick at t [s] with the bend (n_p,) [strain]."""
+        if self.buf is None or self.buf.shape[1] != bend.shape[0]:
+            self.buf = np.zeros((self.n, bend.shape[0]))
+        self.buf[self.pos] = bend
+        self.times[self.pos] = t
+        self.pos = (self.pos + 1) % self.n
+        self.filled = min(self.filled + 1, self.n)
+        if self.filled == 1:
+            self.next_check = t + self.period_s - 0.5 * self.period_s / self.n
+
+    def due(self, t: float) -> bool:
+        """True when a whole period is in the ring and a check is due at t [s]."""
+        return self.filled == self.n and t >= self.next_check
+
+    def content(self, t: float, waves, s_points) -> float:
+        """The harmonic content [-] of the ring (class docstring); schedules the next check."""
+        self.next_check = t + self.period_s / GUARD_CHECKS_PER_PERIOD
+        amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
+            waves[_LATERAL, _PHASE]
+        if amp == 0.0 or self.buf.shape[1] != s_points.shape[0]:
+            return 0.0
+        theta = k * s_points[None, :] - om * self.times[:, None] + ph  # (N, n_p)
+        power = np.zeros(s_points.shape[0])
+        for h in range(2, GUARD_HARMONICS + 1):
+            c = (2.0 / self.n) * np.sum(self.buf * np.exp(-1j * h * theta), axis=0)
+            power += c.real ** 2 + c.imag ** 2
+        out = float(np.sqrt(np.mean(power)) / abs(amp))
+        self.checks.append((float(t), out))
+        return out
+
+    def growing(self) -> bool:
+        """True when the last check's content is above every other check's of the last half period (and there is
+        one): a runaway grows, where a settling loop's transient decays (on the slithering grid the first checks
+        after the ramp read 0.15 to 0.22 while the loop brought the bend to the command, and fell to 0.03-0.07 over
+        the next cycles; the hybrid's runaway read 0.13, 0.18, 0.26, 0.37 a quarter period apart)."""
+        if len(self.checks) < 2:
+            return False
+        t, c = self.checks[-1]
+        before = [cc for tt, cc in self.checks[:-1] if tt >= t - 0.5 * self.period_s - 1e-9]
+        return bool(before) and c > max(before)
 
 
 class LoopGuard:
@@ -276,14 +392,26 @@ class LoopGuard:
     snake at 0.5 Hz, one wave per body, mu_t = 0.5: 1.5 of a commanded 10 open loop, 40 closed loop with half its
     muscles at their strength; issue 44).  Once the bend passes the command by ``GUARD_AMPLITUDE_RATIO`` while the
     loop commands more than the feed-forward (the loop's doing: a body that overshoots in open loop is pulled back
-    by the loop, and left alone here), or most muscles are held at their strength, the integral state is dropped and the command is the feed-forward alone for
-    one gait period; then the loop resumes at ``GUARD_BACKOFF`` times its gains, and after ``GUARD_MAX_BACKOFFS``
-    back-offs the open loop stays.  The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
+    by the loop, and left alone here), or most muscles are held at their strength, the integral state is dropped and
+    the command is the feed-forward alone for one gait period; then the loop resumes at ``GUARD_BACKOFF`` times its
+    gains, and after ``GUARD_MAX_BACKOFFS`` back-offs the open loop stays.
+
+    The waveform is watched too (``WaveformWatch``): a loop can hold the bend's amplitude and still drive its shape
+    away, into the wave's temporal harmonics.  On the hybrid snake at 0.3 BL, curvature 10, 0.5 Hz, Miller's friction
+    at mu_t / mu_f = 1 and 25 segments the harmonic content of the centre line grew period by period 0.14, 0.27, 0.52,
+    0.67, 0.72, 0.85 (the open loop's: 0.05), with the amplitude short of the command; that is the fundamental's
+    amplitude-and-phase integral (without it the loop tracked, shape error 0.06, harmonics 0.02).  When the harmonic
+    content over the last period passes ``GUARD_HARMONIC``, and the open loop's own by ``GUARD_HARMONIC_EXCESS``, and
+    is growing (``WaveformWatch.growing``: a settling loop's transient decays), the integrals (the fundamental's
+    and the harmonics') are dropped and switched off for the rest of the run, and the proportional loop goes on
+    (gain scheduling: the part of the loop that lost its margin goes); a second trip of any test backs off as above.
+    The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
     ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
     in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
 
     def __init__(self, period_s: float, t_steady: float, dt_tick: float):
         self.period_s, self.t_steady, self.dt_tick = float(period_s), float(t_steady), float(dt_tick)
+        self.waveform = WaveformWatch(self.period_s, self.dt_tick)
         self.reset()
 
     def reset(self) -> None:
@@ -295,6 +423,17 @@ class LoopGuard:
         self.p_cmd = 0.0           # mean square of the commanded bend, the feed-forward [strain^2], low-passed
         self.p_out = 0.0           # mean square of the loop's command [strain^2], low-passed
         self.sat = 0.0             # share of clipped commands, low-passed
+        self.reasons: list[str] = []  # what each back-off saw
+        self.integral_off = False  # the integrals switched off by a waveform back-off
+        self.harmonic_limit = GUARD_HARMONIC  # the waveform test's threshold (``set_open_loop_harmonics``)
+        self.waveform.clear()
+
+    def set_open_loop_harmonics(self, content: float) -> None:
+        """The calibrated open loop's own harmonic content on this ground [-] (the plant identification's; NaN when
+        not identified): the waveform test trips above it by ``GUARD_HARMONIC_EXCESS``, and never below
+        ``GUARD_HARMONIC``."""
+        c = float(content)
+        self.harmonic_limit = max(GUARD_HARMONIC, c + GUARD_HARMONIC_EXCESS) if math.isfinite(c) else GUARD_HARMONIC
 
     @property
     def fallen_back(self) -> bool:
@@ -305,10 +444,16 @@ class LoopGuard:
         """The loop's gain scale at t [s]: 0 while backed off, else the scale it resumed at."""
         return 0.0 if self.fallen_back or t < self.hold_until else self.scale
 
-    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float) -> bool:
+    def gain_scales(self, t: float) -> tuple[float, float]:
+        """(proportional, integral) gain scales at t [s]: ``gain_scale``'s, the integral's 0 once it is off."""
+        s = self.gain_scale(t)
+        return s, 0.0 if self.integral_off else s
+
+    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None) -> bool:
         """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
-        command; ramp_s [s]: the start ramp); True when the loop lost its margin at this tick (the caller drops the
-        integral state)."""
+        command; ramp_s [s]: the start ramp; bend: (n_p,) the centre line's bend [strain] at rest arc positions
+        s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None); True when the loop lost its margin
+        at this tick (the caller drops the integral state)."""
         amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
             waves[_LATERAL, _PHASE]
         err, lateral = state.err, state.lateral
@@ -323,24 +468,43 @@ class LoopGuard:
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
         if self.fallen_back or t < self.hold_until or r < 1.0:
             return False
+        harmonic = float("nan")
+        if bend is not None:
+            self.waveform.push(t, bend)
+            if self.waveform.due(t):
+                harmonic = self.waveform.content(t, waves, s_bend)
         # the controller's doing: the body bends beyond the command while the loop commands more than the open
         # loop would (a body that overshoots in open loop, which the loop is pulling back, is the body's own)
         overshoot = self.p_meas > GUARD_AMPLITUDE_RATIO ** 2 * self.p_cmd and self.p_out > self.p_cmd
         # most muscles at their strength while the body bends at least as commanded: the loop's doing (a muscle too
         # weak for the load saturates with the body short of the command; that is flagged, not backed off)
-        runaway = overshoot or (self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd)
-        if not runaway:
+        saturated = self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd
+        # the waveform: the bend's harmonics over the last period beyond the open loop's own (``WaveformWatch``)
+        distorted = harmonic > self.harmonic_limit and self.waveform.growing()
+        if not (overshoot or saturated or distorted):
             return False
         self.backoffs += 1
         self.times.append(float(t))
+        self.reasons.append("bend over the command" if overshoot else "most muscles saturated" if saturated else
+                            f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
+                            ("" if self.integral_off else ": integrals off"))
+        self.waveform.clear()
+        self.sat = 0.0
+        if distorted and not (overshoot or saturated) and not self.integral_off:
+            # the waveform ran away with the bend's amplitude held: the integrals' doing (on the hybrid at 0.3 BL,
+            # Miller's friction, mu_t / mu_f 1, the loop without its fundamental's integral tracked, shape error
+            # 0.06, and without its proportional term it blew up), so they are switched off and the proportional
+            # loop goes on; a second trip backs off as any other
+            self.integral_off = True
+            return True
         self.scale *= GUARD_BACKOFF
         self.hold_until = t + self.period_s
-        self.sat = 0.0
         return True
 
     def acted_in_window(self) -> bool:
-        """The guard backed off in the steady window (after ``metrics.warmup_cycles``) or ended in the open loop."""
-        return self.fallen_back or any(tt >= self.t_steady for tt in self.times)
+        """The guard backed off in the steady window (after ``metrics.warmup_cycles``), or ended in the open loop or
+        with the loop's integrals off: the loop measured is not the one commanded."""
+        return self.fallen_back or self.integral_off or any(tt >= self.t_steady for tt in self.times)
 
 
 class ShapeTracker:
@@ -360,6 +524,7 @@ class ShapeTracker:
         self.kh_key = float(g.shape_harmonic_gain_per_cycle)
         self.harmonic_list = tuple(g.shape_harmonics)
         self.frequency_hz = float(g.frequency_hz)
+        self.wavelength_bl = float(g.wavelength_bl)
         self.lead_rad = math.radians(float(g.shape_harmonic_lead_deg))
         self._set_harmonics(max(self.kh_key, 0.0))
         self.period_s = float(g.period_s)
@@ -385,9 +550,12 @@ class ShapeTracker:
                             else float(body_info.get("shape_harmonic_gain_per_cycle", 0.0)))
         n = self.s_muscle.shape[0]
         self.kappa = np.zeros(n)
-        # the open loop's measured response and the loop's margin on it: measured and reported, not acted on
-        # (``PlantMargin`` says why)
-        self.plant = PlantMargin.of(body_info.get("plant_response"))
+        # the open loop's measured response and the margin of the loop at the gains it runs at: measured and
+        # reported, not acted on (``PlantMargin`` says why)
+        wavelength_m = float(self.wavelength_bl) * self.body_length
+        pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
+        self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
+                                    smoothing_response(pitch_m, wavelength_m))
         self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,
                                 kp=self.kp, ki=self.ki, umax=self.umax, passes=SMOOTHING_PASSES,
                                 harmonics=self.harmonics, ki_h=self.ki_h, lead_cos=self.lead_cos,
@@ -396,9 +564,11 @@ class ShapeTracker:
         self.state = TrackState(a=np.zeros(n), b=np.zeros(n), lateral=np.zeros(n), counts=np.zeros(3),
                                 err=np.zeros(n), tmp=np.zeros(n), ah=np.zeros((n_h, n)), bh=np.zeros((n_h, n)))
         self.s_centre = None
-        self.full_gains, self.scale = self.gains, 1.0
+        self._bend = None  # the guard's bend buffer (n - 2,) [strain]
+        self.full_gains, self.scale = self.gains, (1.0, 1.0)
         if self.guard is not None:
             self.guard.reset()
+            self.guard.set_open_loop_harmonics(self.plant.harmonic_content if self.plant is not None else math.nan)
         self.ready = True
 
     def command(self, obs, t: float, waves, ramp_s: float, s_seg, row) -> None:
@@ -413,12 +583,20 @@ class ShapeTracker:
             self.gains = self.gains._replace(ramp_s=float(ramp_s))
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
         if self.guard is not None:
-            scale = self.guard.gain_scale(t)
+            scale = self.guard.gain_scales(t)
             if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
-                self.gains, self.scale = scaled_gains(self.full_gains, scale), scale
+                self.gains, self.scale = scaled_gains(self.full_gains, *scale), scale
         track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, plain(self.gains), plain(self.state))
-        if (self.guard is not None
-                and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state, self.umax)):
+        bend = None
+        if self.guard is not None and obs.seg_pos.shape[0] >= 3:
+            # the centre line's bend at the interior centres [strain], for the guard's waveform test
+            pos = np.ascontiguousarray(obs.seg_pos, dtype=np.float64)  # one compiled signature for every body
+            if self._bend is None or self._bend.shape[0] != pos.shape[0] - 2:
+                self._bend = np.zeros(pos.shape[0] - 2)
+            ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
+            bend = self._bend
+        if self.guard is not None and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state,
+                                                       self.umax, bend, self.s_centre[1:-1]):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
             for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
@@ -451,16 +629,17 @@ class ShapeTracker:
         return out
 
     def run_status(self) -> tuple[str, str] | None:
-        """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good:
-        the motion measured there is the open loop's (or a lower gain's), because the loop drove the shape away;
-        None otherwise."""
+        """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good
+        (the open loop, or the integrals off): the motion measured there is the open loop's (or a lower gain's, or
+        the proportional loop's), because the loop drove the shape away; None otherwise."""
         gd = self.guard
         if gd is None or not gd.acted_in_window():
             return None
-        when = ", ".join(f"{t:.2f}" for t in gd.times)
+        when = ", ".join(f"{t:.2f} ({why})" for t, why in zip(gd.times, gd.reasons))
         end = "stayed in the calibrated open loop" if gd.fallen_back else \
-            f"resumed at {gd.scale:g} of its gains"
+            f"resumed at {gd.scale:g} of its gains" + (", its integrals off" if gd.integral_off else "")
         return ("controller_unstable",
-                f"controller_unstable: the shape tracker drove the body beyond the commanded shape (bend over "
-                f"{GUARD_AMPLITUDE_RATIO:g} x the command or most muscles at max_muscle_strain) and backed off to the "
-                f"calibrated open loop at t = {when} s; it {end}")
+                f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, or the waveform's "
+                f"harmonics beyond the open loop's) and was backed off (to the calibrated open loop for a period, or "
+                f"its integrals off) at t = {when} s; it {end}")

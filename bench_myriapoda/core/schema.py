@@ -198,6 +198,11 @@ class ControllerConfig:
     adjust_from_stance: bool = rng(True, doc="rule 4 also pulls a leg out of STANCE into ADJUST ('whenever'); "
                                              "false: only swinging legs adjust")
     k1: float = rng(20.0, ge=0.0, doc="Follower gain (footnote 2) [1/(m s)]")
+    follower_feedforward: str = rng("auto", choices=("auto", "on", "off"),
+                                    doc="the Follower also moves a segment at the head's commanded speed along its "
+                                        "link (beyond the paper; docs/explanation/dynamic-stance.md): 'auto': on in "
+                                        "legs.stance = 'dynamic', off in the paper's kinematic stance; 'on'; 'off': "
+                                        "the paper's Follower, which follows by stretching the link")
     k2: float = rng(10.0, ge=0.0, doc="Balancer gain (footnote 2) [1/s]")
     omega_follow_deg_s: float = rng(114.59, ge=0.0, doc="Follower turn rate [deg/s]")
     omega_balance_deg_s: float = rng(114.59, ge=0.0, doc="Balancer turn rate [deg/s]")

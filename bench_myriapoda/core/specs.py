@@ -46,6 +46,49 @@ class HangingBar:
 
 
 @dataclass(frozen=True)
+class BodyProbes:
+    """What ``validation``'s analytic checks measure of a body model's own systems, published by the body so that
+    validation names no body and reads no body's internals (issue 42).  Each field is optional: a check whose
+    probe a body does not publish does not apply to it (the check says why).  Positions [m], velocities [m/s],
+    masses [kg], forces [N], times [s].
+
+    - ``rigid_motion_residual(build, angles, draw)``: the largest elastic force of the body's elements with its
+      rest shape moved rigidly by ``draw(angle) -> (R (3, 3), t (3,))`` for each of ``angles`` [rad], relative to
+      the force scale ``rigid_motion_scale`` names (0 for an exactly corotational element); ``build()`` gives a
+      built 4-segment worm of the body, if the probe needs one.  ``rigid_motion_not_applicable``:
+      why the check does not apply when there is no such probe.
+    - ``omega_max(body)``: the largest angular eigenfrequency [rad/s] of a built body linearized at rest, damping
+      off; ``undamped``: the ``--set`` overrides that remove the body's damping (``analytic.stable-dt``).
+    - ``linear_momentum(body) -> (3,)``, ``total_mass(body)`` and ``add_velocity(body, dv (3,))`` (every point
+      mass of a built body, its carried parts included): ``analytic.free-fall-momentum``.
+    - ``bar_under_own_weight(n_len, nu, E, rho, g, L) -> (system, u)``: a bar (cells n/4 x n x n/4) hanging from
+      its top face, relaxed; u its bottom face's mean displacement [m].
+    - ``cantilever_tip(cells, P, E, nu, L, H, W) -> u``: a beam along x clamped at x = 0 with a tip load P [N];
+      u the tip's mean deflection [m].
+    - ``pure_damping_modes(gamma, h) -> [(lam, factor)]``: for some generalized eigenvectors D phi = lam M phi of
+      a clamped mesh, the per-node ratio (array) of the velocity after one step of h to before it.
+    - ``one_node_step_eigenvalues(rho, gamma, h) -> (6,)``: eigenvalues of the linearized one-step map of the one
+      free node of a unit tet with three nodes fixed.
+    - ``density_and_modulus(case) -> (rho [kg/m^3], E [Pa]) or None``: a continuum body's, for the analytic
+      elongation of the hanging worm (``validation.work_precision``).
+    """
+
+    rigid_motion_residual: Callable[[Any, Any, Any], float] | None = None
+    rigid_motion_scale: str = ""
+    rigid_motion_not_applicable: str = "the body publishes no rigid-motion probe"
+    omega_max: Callable[[Any], float] | None = None
+    undamped: tuple[str, ...] = ()
+    linear_momentum: Callable[[Any], Any] | None = None
+    total_mass: Callable[[Any], float] | None = None
+    add_velocity: Callable[[Any, Any], None] | None = None
+    bar_under_own_weight: Callable[..., tuple[Any, float]] | None = None
+    cantilever_tip: Callable[..., float] | None = None
+    pure_damping_modes: Callable[[float, float], list] | None = None
+    one_node_step_eigenvalues: Callable[[float, float, float], Any] | None = None
+    density_and_modulus: Callable[[Any], tuple[float, float] | None] | None = None
+
+
+@dataclass(frozen=True)
 class BodySpec:
     """A body model backend.
 
@@ -77,6 +120,7 @@ class BodySpec:
     - ``hanging_bar``: ``hanging_bar(body, case) -> HangingBar``, the 1-D bar a built legged chain of this body
       is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
       ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
+    - ``probes``: what validation's analytic checks measure of the body's own systems (``BodyProbes`` above).
     """
 
     name: str
@@ -95,6 +139,7 @@ class BodySpec:
     suite_scenes: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     hanging_bar: Callable[[Any, Any], HangingBar] | None = None
     hang_dt_s: float | None = None
+    probes: BodyProbes = field(default_factory=BodyProbes)
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,8 @@
 ``python -m bench_myriapoda.harness.cold_compile --record quick --write`` compiles every compile group of a
 matrix in a fresh process with an empty numba cache (``record_groups``), each group's first case as the
 executor starts it, records every signature compiled with its compile time (``compile_plan.recording``) and
-writes the plans the executor uses (``compile_plan.write_plan_module``, ``compile_plans_data.py``).
+writes the plans the executor uses (``compile_plan.write_plans``: the data file ``jit/compile_plans.json``, shipped
+with the package).
 ``--simulate DIR`` predicts a cold matrix's wall for 1 to 16 workers with and without kernels compiled
 ahead (:func:`simulate_cold`, the local executor's ``CompileScheduler`` replayed on the recorded compile
 times and the case times of a run in DIR).  Apart from ``compile_plan`` because it needs the executor,
@@ -14,8 +15,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
-from .compile_plan import (PLAN_MODULE, CompileEvent, _encode_args, compact, critical_chain, group_name,
-                           group_tasks, kernel_graph, read_plan_module, recording, write_plan_module)
+from ..jit.compile_plan import (PLANS_FILE, CompileEvent, _encode_args, compact, critical_chain, group_name,
+                                group_tasks, kernel_graph, read_plans, recording, shipped_plans, write_plans)
 
 def record_case(case) -> list[CompileEvent]:
     """Compile ``case``'s kernels in this process (``executors.compile_case``) and return what compiled."""
@@ -103,7 +104,6 @@ def _simulate_main(args) -> int:
     import sys
 
     from ..core import registry
-    from . import compile_plans_data as data
     from .matrix import expand_matrix, locate_matrix
     from .store import read_matrix_case_walls
 
@@ -131,7 +131,7 @@ def _simulate_main(args) -> int:
             cases.append(mc.case)
             run.append(p.seconds)
             predicted[p.source] = predicted.get(p.source, 0) + 1
-    plans = read_plan_module(Path(args.plans)) if args.plans else data.PLANS
+    plans = read_plans(Path(args.plans)).plans if args.plans else shipped_plans().plans
     rows = []
     for n in args.workers:
         kw = dict(costs=run, worker_start_s=args.worker_start, per_case_s=args.per_case)
@@ -168,14 +168,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--record-one", nargs=2, metavar=("CASE_PICKLE", "OUT_PICKLE"), help=argparse.SUPPRESS)
     ap.add_argument("--record", nargs="+", metavar="MATRIX",
                     help="record every compile group of these matrices (one fresh process and numba cache each)")
-    ap.add_argument("--write", action="store_true", help=f"write the recorded plans to {PLAN_MODULE.name}")
+    ap.add_argument("--write", action="store_true", help=f"write the recorded plans to {PLANS_FILE.name} (package data "
+                    "beside bench_myriapoda/jit/compile_plan.py)")
     ap.add_argument("--groups", nargs="+", metavar="GROUP", help="with --record: only these compile groups "
                     "(massspring-legged-dry, ...); with --write the file's other groups are kept")
-    ap.add_argument("--out", metavar="FILE", help=f"with --write: write this file instead of {PLAN_MODULE.name} "
+    ap.add_argument("--out", metavar="FILE", help=f"with --write: write this file instead of {PLANS_FILE.name} "
                     "(--simulate --plans FILE reads it)")
     ap.add_argument("--plans", metavar="FILE", help="with --simulate: the plans of this file (default: the "
                     "shipped ones)")
-    ap.add_argument("--note", default="", help="how and where the plans were recorded (the module's docstring)")
+    ap.add_argument("--note", default="", help="how and where the plans were recorded (the file's \"note\")")
     ap.add_argument("--simulate", metavar="DIR", help="a matrix output directory (results.sqlite) whose case wall "
                     "times minus compile are the cases' warm costs: the cold matrix's wall predicted with and "
                     "without kernels compiled ahead, from the recorded plans")
@@ -206,9 +207,10 @@ def main(argv: Sequence[str] | None = None) -> int:
                 if incl >= 0.3 or depth == 0:
                     print(f"{incl:7.2f} {self_s:7.2f} {'cached' if cached else '':6s} {'  ' * depth}{kernel}")
         if args.write:
-            out = Path(args.out) if args.out else PLAN_MODULE
+            out = Path(args.out) if args.out else PLANS_FILE
             # --groups: the other groups' plans stay as they were recorded
-            write_plan_module({**(read_plan_module(out) if args.groups else {}), **plans}, args.note, out)
+            kept = read_plans(out).plans if args.groups and out.is_file() else {}
+            write_plans({**kept, **plans}, args.note, out)
         return 0
     ap.print_usage(sys.stderr)
     return 2

@@ -53,6 +53,9 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from ..core.config import Case
+from ..jit import compile_lock
+from ..jit.compile_plan import compile_kernels, group_name, load_plans
+from ..jit.worker_start import worker_context
 from .recorder import compact_recording, save_recording
 from .runner import RunResult, run_case
 from .store import (STORE_WRITE_ERRORS, UnstoredError, keep_unstored, matrix_case_statuses, read_matrix_runs,
@@ -180,7 +183,6 @@ def _worker_main(conn) -> None:
         try:
             conn.send(("started", index))
             if compile_only == KERNELS:  # ``case`` is a list of (kernel, argument types): compile them ahead
-                from .compile_plan import compile_kernels
                 try:
                     compile_kernels(case)
                 except Exception:  # noqa: BLE001 -- a signature that does not apply: the case compiles its own
@@ -326,8 +328,6 @@ class CompileScheduler:
         self.groups = [compile_group(c) for c in cases]
         self.compiling: set = set()  # groups whose first case is running: its kernels are not in the cache yet
         self.warm: set = set()  # groups with a finished case
-        from .compile_plan import group_name
-
         names = {g: group_name(g) for g in set(self.groups)}
         # each group's kernels to compile ahead, in the order idle workers take them; a kernel several groups
         # need is handed out once (``kernels_out``)
@@ -435,9 +435,6 @@ def _run_local(cases: Sequence[Case], workers: int, timeout: float | None, emit:
     ``costs``: predicted wall times [s] in the order of ``cases`` (longest first, ``compile_first_order``).
     ``plans``: the kernels idle workers compile ahead (``CompileScheduler``; default ``compile_plan.load_plans``).
     ``stats``: gets ``kernel_jobs``, the number of kernels compiled (or loaded) ahead."""
-    from .compile_plan import load_plans
-    from .worker_start import worker_context
-
     ctx = worker_context()
     sched = CompileScheduler(cases, costs, load_plans() if plans is None else plans)
     pending = sched.pending
@@ -613,8 +610,6 @@ def worker_process_settings() -> None:
     """What every matrix worker process sets before its first case: the compile lock (a kernel another
     worker process is compiling is waited for and loaded from numba's cache, not compiled twice) and
     the garbage collector's thresholds (``WORKER_GC_THRESHOLDS``).  Idempotent."""
-    from . import compile_lock
-
     compile_lock.install()
     gc.set_threshold(*WORKER_GC_THRESHOLDS)
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..core.config import Case
+from ..jit.worker_start import worker_context
 from .runner import run_case, run_world
 
 
@@ -203,8 +204,6 @@ def brackets_for_cases(cases: list[Case], directory, workers: int = 1,
                 found = [failed_entry(c, f"the worker process failed: {type(exc).__name__}: {exc}") for c in todo]
         elif workers > 1 and len(todo) > 1:
             from concurrent.futures import ProcessPoolExecutor
-
-            from .worker_start import worker_context
 
             with ProcessPoolExecutor(max_workers=min(workers, len(todo)), mp_context=worker_context()) as pool:
                 found = list(pool.map(bracket_entry, todo))

@@ -32,6 +32,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from ..jit import compile_plan
+from ..jit.worker_start import worker_context
+
 PROBE_CASE = ("worm", "massspring", "flat")  # the cheapest kernels to load
 PROBE_DURATION_S = 0.2  # [s] simulated: a short case, so the harness's part is visible
 
@@ -62,14 +65,11 @@ def measure(workers: int, method: str | None = None, plans: bool | None = None) 
     import os
 
     from ..core.config import resolve_case
-    from . import compile_plan
     from .executors import _start_slot
     from .recorder import save_recording
     from .store import record_run
 
     case = resolve_case(*PROBE_CASE, duration=PROBE_DURATION_S)
-    from .worker_start import worker_context
-
     if plans is not None:  # a fork server started with the other setting restarts (worker_context)
         os.environ[compile_plan.ENV_SWITCH] = "on" if plans else "off"
     ctx = worker_context(method)

@@ -10,7 +10,7 @@ compiles a kernel: on a cold cache nothing is loaded.
 from ..core import registry
 from ..core.errors import InputError
 from . import executors, runner  # noqa: F401 -- imported for the fork server's children
-from .compile_plan import preload_cached
+from ..jit.compile_plan import preload_cached
 
 try:
     registry.load_all()

@@ -179,10 +179,13 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("muscle_strain_peak", "-", "largest |lateral strain| commanded in the steady window (closed-loop shape control "
      "only)", "bending gaits"),
     ("shape_control_backoffs", "count", "times the closed loop's guard found the loop had lost its margin (the "
-     "body bent beyond 1.2 x the command or most muscles held at `gait.max_muscle_strain`) and backed it off to the "
-     "calibrated open loop (`gait.shape_guard`, closed-loop shape control only)", "bending gaits"),
+     "body bent beyond 1.2 x the command or most muscles held at `gait.max_muscle_strain`: backed off to the "
+     "calibrated open loop; the bend's harmonic content over the last period above 0.15 and the open loop's own + "
+     "0.05: the loop's integrals switched off the first time, backed off after) (`gait.shape_guard`, closed-loop "
+     "shape control only)", "bending gaits"),
     ("shape_control_gain_scale", "-", "the closed loop's gains at the end of the run over its own: 1 when the guard "
-     "never acted, halved at each back-off, 0 when it stayed in the calibrated open loop", "bending gaits"),
+     "never acted, halved at each back-off, 0 when it stayed in the calibrated open loop (the proportional gain's: "
+     "after a waveform trip the integrals are off, which the run's message says)", "bending gaits"),
     ("shape_control_backoff_s", "s", "when the guard first backed the loop off (NaN when it never did)",
      "bending gaits"),
     ("shape_plant_gain", "-", "median over the interior segments of the curvature amplitude the calibrated open loop "
@@ -192,9 +195,13 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("shape_plant_lag_deg", "deg", "median over the interior segments of the open loop's curvature lag behind the "
      "commanded wave, from the same identification", "bending gaits"),
     ("shape_loop_margin_deg", "deg", "phase margin of the loop's amplitude-and-phase integral on the identified open "
-     "loop: 90 - the largest |lag| over the segments (a linear plant converges above 0); measured, not acted on: "
-     "under Coulomb friction it does not predict the closed loop (docs/explanation/shape-tracking.md)",
-     "bending gaits"),
+     "loop at the gains the run started with (before any back-off): 90 - the largest |arg H| over the segments, "
+     "H = rho G / (1 + K_p rho G) (G the identified response, K_p the proportional gain used, rho the smoothing's "
+     "response to the commanded wave; a linear plant converges above 0); measured, not acted on: under Coulomb "
+     "friction it does not predict the closed loop (docs/explanation/shape-tracking.md)", "bending gaits"),
+    ("shape_loop_rate_per_cycle", "-", "the same integral's convergence per gait cycle at the gains used: "
+     "`gait.shape_gain_i_per_cycle` x Re H, the median over the segments (e-foldings of a linear plant's error per "
+     "cycle; 0 or below: no convergence)", "bending gaits"),
     ("tail_swing_ratio", "-", "RMS lateral excursion of the tail over that of the mid-body (median over the middle "
      "third of the centres) over the steady window, each across the mean body axis less a line fitted in time: 1 for a kinematic snake whose every point "
      "follows the head's path, above 1 for a tail that swishes wider (Miller Sec. 4)", "bending gaits"),

@@ -1,6 +1,6 @@
 """The main job's second half: the fidelity and stability of every creature x body pair of the quick matrix.
 
-After the matrix has run (``cli.cmd_matrix``), ``fidelity_phase`` writes two files into its output directory:
+After the matrix has run (``cli.matrix.cmd_matrix``), ``fidelity_phase`` writes two files into its output directory:
 
 ``stable_dt.json``   the [largest stable, smallest unstable] dt of every headline pair, bisected to 10 % on
                      1 s runs (``harness.stable_dt.brackets_for_cases``; kept by case and source hash, so a
@@ -102,7 +102,7 @@ def fidelity_phase(exp, out: Path, workers: int | None,
     from ..validation.run import JSON_NAME, summary, write_json
     from ..validation.core import Row
     from ..harness.stable_dt import brackets_for_cases, source_hash
-    from ..harness.worker_start import worker_context
+    from ..jit.worker_start import worker_context
 
     t0 = time.perf_counter()
     code = source_hash()

@@ -39,7 +39,7 @@ def section(page, out_dir: Path | str) -> None:
             "critical path [s]": _round(e.get("critical_path_s")), "critical case": e.get("critical_case"),
             "predicted vs measured case cost (Pearson r)": "-" if r is None else _round(r, 3),
             "cost sources": ", ".join(f"{k}: {v}" for k, v in sorted(sched.get("cost_sources", {}).items())) or "-",
-            # kernels idle workers compiled (or loaded) ahead of their cases (harness/compile_plan.py)
+            # kernels idle workers compiled (or loaded) ahead of their cases (jit/compile_plan.py)
             "kernels compiled ahead": sched.get("kernel_jobs", "-")}
     page.table(pd.DataFrame({"quantity": list(rows), "value": [str(v) for v in rows.values()]}))
 

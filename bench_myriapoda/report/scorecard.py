@@ -20,6 +20,11 @@ one-line definition; the report, ``scorecard`` and ``scorecard --json`` print th
 ``cost``        CPU seconds per simulated second and steps/s of the headline case: the median over its
                 timed repeats (the matrix's seeds) with their spread (max - min).
 
+The error a recommendation ranks by (``Row.error``, ``ERROR_KINDS``): the locomotion error where there is one; for a
+myriapod (whose walking speed is commanded) the ``paper.kinematic-shortcut-<creature>`` check of ``validate``: how
+far the paper's kinematic stance walks from the dynamic stance, in body lengths (``shortcut_error``; the fem body
+has no dynamic stance, so no such error); else the share of FAIL verdicts.
+
 Every group is a number or a stated reason; where a cell has no data the reason names the command
 that fills it.  Per creature, a one-line recommendation (``recommend``) ranks the bodies by error and
 cost, calling two bodies a tie where they differ by no more than the measured spread, says which axis
@@ -46,6 +51,13 @@ from .scorecard_verdicts import BODY_CHECKS, CHECK_CREATURE, check_creature, row
 from .sweeps import sweep_mask
 
 SHAPE_METRIC, SHAPE_FLAG = "metric.shape_tracking_error", "metric.shape_not_achieved"
+# the myriapods' error axis (issue 43): validate's kinematic-shortcut check of the creature on the body, the largest
+# distance between the heads of its kinematic-stance walk (the paper's, what the matrix runs) and its dynamic-stance
+# walk (legs that push through friction-limited feet), in body lengths (validation/shortcut.py)
+SHORTCUT_CHECK = "paper.kinematic-shortcut-{creature}"
+SHORTCUT_KIND = "BL kinematic-shortcut error"
+# the error kinds a creature's rows are ranked by, the first that any of its rows has (one kind per creature)
+ERROR_KINDS = ("speed error", SHORTCUT_KIND, "validate FAIL share")
 DT_RISK_MARGIN = 1.2   # a default dt whose stable end is less than this many times above it is a risk
 MIN_REPEATS = 3        # timed repeats a cost needs before it is ranked
 
@@ -101,7 +113,8 @@ class Row:
     locomotion: Group
     cost: Group
     shape: Group
-    error: float | None = None       # the error the recommendation ranks by (locomotion, else fidelity)
+    error: float | None = None       # the error the recommendation ranks by (locomotion, else the myriapods'
+    #                                  kinematic-shortcut check, else fidelity: ERROR_KINDS)
     error_kind: str = ""
     error_spread: float = 0.0        # its spread over repeats (0: one deterministic run; a rerun gives the same)
 
@@ -694,6 +707,19 @@ def recommend(creature: str, rows: list[Row]) -> str:
     return line + cost_note + tail
 
 
+def shortcut_error(verdicts, creature: str, body: str) -> float | None:
+    """The myriapod's error axis on ``body`` (``SHORTCUT_CHECK``): the measured value [BL] of validate's
+    kinematic-shortcut check of ``creature`` on ``body`` in ``verdicts`` (a ``scorecard_verdicts.PairVerdicts``);
+    None where that check has no finite measured value (not run, failed, a creature without the check, the fem
+    body, which has no dynamic stance)."""
+    if verdicts is None or not hasattr(verdicts, "validate_row"):
+        return None
+    row = verdicts.validate_row(SHORTCUT_CHECK.format(creature=creature), body)
+    if row is None or row["verdict"] == "FAIL":
+        return None
+    return _num(row["measured"])
+
+
 def build_scorecard(res, vdata=None, store: Path | None = None, brackets: dict | None = None) -> Scorecard:
     """The scorecard of a matrix directory's results (``report.matrix_data.MatrixResults``).
 
@@ -731,6 +757,8 @@ def build_scorecard(res, vdata=None, store: Path | None = None, brackets: dict |
             errs = [locomotion_group(r).value for _, r in repeat_rows(head).iterrows()]
             errs = [e for e in errs if e is not None]
             row.error_spread = float(max(errs) - min(errs)) if len(errs) > 1 else 0.0
+        elif (shortcut := shortcut_error(verdicts, creature, body)) is not None:
+            row.error, row.error_kind = shortcut, SHORTCUT_KIND
         elif row.fidelity.value is not None:
             row.error, row.error_kind = row.fidelity.value, "validate FAIL share"
         rows.append(row)
@@ -738,9 +766,10 @@ def build_scorecard(res, vdata=None, store: Path | None = None, brackets: dict |
     for creature in sorted({r.creature for r in rows}):
         mine = [r for r in rows if r.creature == creature]
         kinds = {r.error_kind for r in mine if r.error is not None}
-        if len(kinds) > 1:  # rank one creature by one kind of error only
+        if len(kinds) > 1:  # rank one creature by one kind of error only: the first of ERROR_KINDS it has
+            keep = next(k for k in ERROR_KINDS if k in kinds)
             for r in mine:
-                if r.error_kind != "speed error":
+                if r.error_kind != keep:
                     r.error, r.error_kind = None, ""
         recs[creature] = recommend(creature, mine)
     return Scorecard(rows, recs, str(res.directory))

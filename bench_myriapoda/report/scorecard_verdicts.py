@@ -57,6 +57,7 @@ class PairVerdicts:
 CHECK_CREATURE = (("analytic.worm", "worm"), ("miller.image1", "worm"), ("cross_body.worm", "worm"),
                   ("analytic.slithering", "snake"), ("miller.image2", "snake"), ("miller.image3", "snake"),
                   ("miller.image4", "caterpillar"), ("paper.fig4", "chain"), ("paper.wave-millipede", "millipede"),
+                  ("paper.kinematic-shortcut-millipede", "millipede"),
                   ("paper.", "centipede"), ("cross_body.centipede", "centipede"), ("cross_body.hang", "centipede"),
                   ("throughput.", "centipede"))
 BODY_CHECKS = ("analytic.hanging-bar", "analytic.cantilever", "analytic.rigid-rotation",

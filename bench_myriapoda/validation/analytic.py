@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core import registry
 from . import references as R
 from .core import Context, Outcome, at_most, failed_run, holds, not_applicable, relative
 
@@ -17,6 +18,12 @@ MOMENTUM_REL_TOL = 1e-10     # |P - (P0 + M g t)| / (|P0| + M g t) in free fligh
 STABLE_DT_REL_TOL = 0.08     # bisection bracket 2 % plus the finite duration growth needs to show
 DAMPING_EXACT_TOL = 1e-10    # backward-Euler factor of a pure damping mode (linear algebra)
 DAMPING_OSC_TOL = 1e-6       # |eigenvalue| of the linearized one-step map (finite differences)
+
+
+def _probes(body: str):
+    """The body model's ``BodySpec.probes`` (``core.specs.BodyProbes``; plugins' bodies included)."""
+    registry.load_all()
+    return registry.BODIES[body].probes
 
 
 # --------------------------------------------------------------------------- the worm: eps * Lambda
@@ -38,8 +45,12 @@ def worm_eps_lambda(ctx: Context, body: str) -> Outcome:
 
 def hanging_bar(ctx: Context, body: str) -> Outcome:
     """FEM bar hanging under its own weight (nu = 0.3, top face clamped) against rho g L^2 / (2 E)."""
+    probes = _probes(body)
+    if probes.bar_under_own_weight is None:
+        return not_applicable("the body publishes no hanging bar (BodyProbes.bar_under_own_weight)", None,
+                              "rho g L^2 / (2 E)")
     n = 8 if ctx.quick else 16
-    _s, ratio = R.hanging_bar(n, nu=0.3)
+    _s, ratio = R.hanging_bar(n, nu=0.3, solve=probes.bar_under_own_weight)
     E, rho, g, L = 1e4, 1.0, 9.81, 1.0
     ref = R.hanging_bar_displacement(rho, g, L, E)
     return relative(ratio * ref, ref, BAR_REL_TOL, "m", detail=f"{n} cells along the bar; ratio {ratio:.4f} "
@@ -48,8 +59,12 @@ def hanging_bar(ctx: Context, body: str) -> Outcome:
 
 def cantilever(ctx: Context, body: str) -> Outcome:
     """FEM cantilever with a tip load against P L^3 / (3 E I) + P L / (kappa G A)."""
+    probes = _probes(body)
+    if probes.cantilever_tip is None:
+        return not_applicable("the body publishes no cantilever (BodyProbes.cantilever_tip)", None,
+                              "P L^3 / (3 E I) + P L / (kappa G A)")
     cells = (40, 8, 1) if ctx.quick else (60, 12, 1)
-    ratio = R.cantilever_ratio(cells)
+    ratio = R.cantilever_ratio(cells, solve=probes.cantilever_tip)
     return relative(ratio, 1.0, CANTILEVER_REL_TOL, "x beam theory",
                     detail=f"cells {cells}; linear tets lock in bending and converge from the stiff side",
                     cells=str(cells))
@@ -57,55 +72,28 @@ def cantilever(ctx: Context, body: str) -> Outcome:
 
 def rigid_rotation(ctx: Context, body: str) -> Outcome:
     """Elastic force of a rotated (and translated) rest shape: zero for a fixed-corotational mesh and for
-    the lattice's springs."""
+    the lattice's springs (the body's ``BodyProbes.rigid_motion_residual``)."""
+    probes = _probes(body)
+    if probes.rigid_motion_residual is None:
+        return not_applicable(probes.rigid_motion_not_applicable, 0.0, f"< {RIGID_REL_TOL:g}")
     rng = np.random.default_rng(11)
     angles = (1e-3, 0.4, 2.0, np.pi - 1e-6)  # small ones by Newton, large by the SVD fallback (FEM)
-    worst = 0.0
-    if body == "fem":
-        from ..bodies.fem.mesh import box_grid
-        from ..bodies.fem.system import FEMSystem
-        for tpc in (5, 6):
-            nodes, tets = box_grid((1.0, 0.6, 0.4), (3, 2, 2), tets_per_cell=tpc)
-            s = FEMSystem(nodes, tets)
-            scale = s.mu.max() * s.vol.max() ** (2 / 3)
-            for angle in angles:
-                s.x[:] = nodes @ R.rotation(rng.normal(size=3), angle).T + rng.normal(size=3)
-                worst = max(worst, np.abs(s.elastic_forces()).max() / scale)
-    elif body == "massspring":
-        from ..bodies.massspring import kernels as K
+
+    def draw(angle):  # a random axis, then a random translation [m], in this order (rng's sequence)
+        rot = R.rotation(rng.normal(size=3), angle)
+        return rot, rng.normal(size=3)
+
+    def build():
         from ..core.config import resolve_case
         from ..harness.runner import build_body
-        b = build_body(resolve_case("worm", "massspring", "flat", overrides=["creature.segments=4"]))
-        lat = b.lattice
-        x0 = lat.rest_nodes
-        scale = float(np.max(b.stiffness)) * float(np.max(lat.rest_length))
-        for angle in angles:
-            x = x0 @ R.rotation(rng.normal(size=3), angle).T + rng.normal(size=3)
-            f = np.zeros_like(x)
-            K.spring_forces(x, np.zeros_like(x), lat.springs, b.stiffness, np.zeros(lat.n_springs),
-                            lat.rest_length, f)
-            worst = max(worst, np.abs(f).max() / scale)
-    else:
-        return not_applicable("the hybrid's links are the fem body's FEMSystem (checked on fem); its boxes are rigid",
-                              0.0, f"< {RIGID_REL_TOL:g}")
+        return build_body(resolve_case("worm", body, "flat", overrides=["creature.segments=4"]))
+
+    worst = probes.rigid_motion_residual(build, angles, draw)
     return at_most(worst, RIGID_REL_TOL, "", reference=0.0,
-                   detail="max |f| relative to mu V^(2/3) (fem) or k L (lattice) over 4 rotations")
+                   detail=f"max |f| relative to {probes.rigid_motion_scale} over 4 rotations")
 
 
 # --------------------------------------------------------------------------- dynamics
-
-def _momentum(body) -> np.ndarray:
-    if hasattr(body, "momenta"):
-        return body.momenta()[0]
-    mass = body.system.mass if hasattr(body, "system") else body.mass
-    return (mass[:, None] * body.v).sum(axis=0)
-
-
-def _mass(body) -> float:
-    if hasattr(body, "total_mass"):
-        return float(body.total_mass)
-    return float((body.system.mass if hasattr(body, "system") else body.mass).sum())
-
 
 def free_fall_momentum(ctx: Context, body: str) -> Outcome:
     """A tumbling, vibrating body in free flight (no ground): P(t) = P0 + M g t at every sample."""
@@ -115,15 +103,16 @@ def free_fall_momentum(ctx: Context, body: str) -> Outcome:
     duration = 0.3 if ctx.quick else 1.0
     case = resolve_case("worm", body, "drop", duration=duration, overrides=[
         "scenario.terrain=none", "scenario.passive=true", "scenario.perturbation_m=0.005", "creature.segments=6"])
+    probes = _probes(body)
+    if probes.linear_momentum is None:
+        return not_applicable("the body publishes no momentum probe (BodyProbes.linear_momentum)", None,
+                              "P0 + M g t")
     cr = Creature(case)
     cr.compile()
     b = cr.body
-    b.v[:] += np.array([0.3, 1.0, -0.2])  # a moving start: P0 != 0
-    if hasattr(b, "sync_attached"):
-        b.rigid.v[:] += np.array([0.3, 1.0, -0.2])
-        b.sync_attached()
-    M, g = _mass(b), np.array([0.0, -case.scenario.gravity_m_s2, 0.0])
-    P0 = _momentum(b)
+    probes.add_velocity(b, np.array([0.3, 1.0, -0.2]))  # a moving start: P0 != 0
+    M, g = probes.total_mass(b), np.array([0.0, -case.scenario.gravity_m_s2, 0.0])
+    P0 = probes.linear_momentum(b)
     worst, done, chunk = 0.0, 0, max(1, int(round(0.01 / case.dt)))
     while done < case.steps:
         k, code = cr.advance(done * case.dt, min(chunk, case.steps - done))
@@ -131,23 +120,28 @@ def free_fall_momentum(ctx: Context, body: str) -> Outcome:
             return Outcome("FAIL", None, "P0 + M g t", f"< {MOMENTUM_REL_TOL:g} relative", b.status_text(code))
         done += k
         t = done * case.dt
-        err = np.linalg.norm(_momentum(b) - (P0 + M * g * t)) / (np.linalg.norm(P0) + M * np.linalg.norm(g) * t)
+        err = np.linalg.norm(probes.linear_momentum(b) - (P0 + M * g * t)) / (np.linalg.norm(P0) + M * np.linalg.norm(g) * t)
         worst = max(worst, err)
     return at_most(worst, MOMENTUM_REL_TOL, reference="P0 + M g t",
                    detail=f"max relative error over {done} steps ({duration:g} s, 6 segments, no ground)")
 
 
 def stable_dt(ctx: Context, body: str) -> Outcome:
-    """``stable-dt`` on an undamped 3-segment lattice against symplectic Euler's limit 2 / omega_max."""
+    """``stable-dt`` on an undamped 3-segment worm of a body that publishes its highest eigenfrequency
+    (``BodyProbes.omega_max``; the lattice) against symplectic Euler's limit 2 / omega_max."""
     from ..core.config import resolve_case
     from ..harness.runner import build_body, run_world
     from ..harness.stable_dt import find_stable_dt
 
-    case = resolve_case("worm", "massspring", "drop", duration=1.0 if ctx.quick else 2.0, overrides=[
+    probes = _probes(body)
+    if probes.omega_max is None:
+        return not_applicable("the body publishes no highest eigenfrequency (BodyProbes.omega_max)", None,
+                              "2 / omega_max")
+    case = resolve_case("worm", body, "drop", duration=1.0 if ctx.quick else 2.0, overrides=[
         "creature.segments=3", "scenario.passive=true", "scenario.gravity_m_s2=0", "scenario.start_height_m=1",
-        "body.damping=0", "scenario.perturbation_m=1e-6"])
+        *probes.undamped, "scenario.perturbation_m=1e-6"])
     world = run_world(case)  # one world for the body measured here and every trial run
-    expected = R.symplectic_euler_dt_limit(R.lattice_omega_max(build_body(case, world)))
+    expected = R.symplectic_euler_dt_limit(probes.omega_max(build_body(case, world)))
     res = find_stable_dt(case, rel_tol=0.02, world=world)
     return relative(res.stable_dt_max_s, expected, STABLE_DT_REL_TOL, "s",
                     detail=f"bracket [{res.stable_dt_max_s:.4g}, {res.unstable_dt_min_s:.4g}] s",
@@ -155,28 +149,17 @@ def stable_dt(ctx: Context, body: str) -> Outcome:
 
 
 def damping_pure_mode(ctx: Context, body: str) -> Outcome:
-    """v' = (M + h D)^-1 M v: a generalized eigenvector D phi = lam M phi decays by 1 / (1 + lam h) per step."""
-    from scipy.linalg import eigh
-
-    from ..bodies.fem.mesh import box_grid
-    from ..bodies.fem.system import FEMSystem
-
-    nodes, tets = box_grid((1.0, 0.5, 0.5), (2, 1, 1))
-    s = FEMSystem(nodes, tets, gamma=300.0)
-    mask = np.isclose(nodes[:, 0], 0.0)
-    s.set_fixed(mask)
-    free = ~mask
-    lam_d, phi = eigh(s.D.toarray()[np.ix_(free, free)], np.diag(s.mass[free]))
+    """v' = (M + h D)^-1 M v: a generalized eigenvector D phi = lam M phi decays by 1 / (1 + lam h) per step
+    (the body's ``BodyProbes.pure_damping_modes``)."""
+    probes = _probes(body)
+    if probes.pure_damping_modes is None:
+        return not_applicable("the body publishes no damping modes (BodyProbes.pure_damping_modes)", None,
+                              "1 / (1 + lambda h)")
     h = 1e-3
-    worst, k_last = 0.0, len(lam_d) - 1
-    for k in (0, len(lam_d) // 2, k_last):
-        s.x[:] = nodes
-        s.v[:] = 0.0
-        s.v[free, 2] = phi[:, k]
-        s.advance(1, dt=h, gravity=(0.0, 0.0, 0.0))
-        expected = R.backward_euler_damping_factor(lam_d[k], h)
-        worst = max(worst, float(np.max(np.abs(s.v[free, 2] / phi[:, k] / expected - 1.0))))
-    ref = R.backward_euler_damping_factor(lam_d[k_last], h)
+    modes = probes.pure_damping_modes(300.0, h)
+    worst = max(float(np.max(np.abs(factor / R.backward_euler_damping_factor(lam, h) - 1.0)))
+                for lam, factor in modes)
+    ref = R.backward_euler_damping_factor(modes[-1][0], h)
     return at_most(worst, DAMPING_EXACT_TOL, reference=ref,
                    detail=f"max relative error of the per-step factor over 3 modes (stiffest: {ref:.6f} per step)")
 
@@ -184,8 +167,12 @@ def damping_pure_mode(ctx: Context, body: str) -> Outcome:
 def damping_oscillating_mode(ctx: Context, body: str) -> Outcome:
     """One free node on a tet: every underdamped mode of the App. A step decays by 1 / sqrt(1 + c h) per step,
     c = 3 gamma / rho, from the eigenvalues of the linearized one-step map."""
+    probes = _probes(body)
+    if probes.one_node_step_eigenvalues is None:
+        return not_applicable("the body publishes no one-node step map (BodyProbes.one_node_step_eigenvalues)",
+                              None, "1 / sqrt(1 + c h)")
     rho, gamma, h = 1.0, 40.0, 1e-3
-    ev = R.one_step_map_eigenvalues(R.single_node_tet(rho=rho, gamma=gamma), node=3, h=h)
+    ev = probes.one_node_step_eigenvalues(rho, gamma, h)
     expected = R.semi_implicit_oscillator_factor(3.0 * gamma / rho, h)
     oscillating = bool(np.all(np.abs(ev.imag) > 0))
     err = float(np.max(np.abs(np.abs(ev) / expected - 1.0)))

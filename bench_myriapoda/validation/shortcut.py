@@ -13,7 +13,9 @@ shortcut, not a pass or a fail (the dynamic stance is a model too, with its own 
 
 The runs: the creature on the ``straight`` CONTROL walk (0.5 m/s, no turns), 4 s with ``--quick``, else
 10 s, its default size, each body's default time step; the dynamic run with the dynamic stance's
-defaults (10 Hz, critical damping, the scenario's friction).
+defaults (10 Hz, critical damping, the scenario's friction, the Follower's speed feedforward:
+``controller.follower_feedforward`` 'auto').  The scorecard ranks the myriapods' bodies by the measured value
+(``report.scorecard.shortcut_error``).
 """
 from __future__ import annotations
 

@@ -23,6 +23,7 @@ import time
 from dataclasses import dataclass
 from typing import Callable
 
+from ..core import registry
 from ..core.errors import InputError
 from .core import all_bodies, clean
 
@@ -58,17 +59,22 @@ QUANTITIES = (
 )
 
 
+def _probes(body: str):
+    """The body model's ``BodySpec.probes`` (``core.specs.BodyProbes``; plugins' bodies included)."""
+    registry.load_all()
+    return registry.BODIES[body].probes
+
+
 def analytic_reference(q: Quantity, case) -> float | None:
     """The analytic value of ``q`` for this case, or None when there is none for its body model."""
     from .references import hanging_bar_displacement, worm_displacement_per_cycle
 
     if q.name == "worm_displacement":
         return worm_displacement_per_cycle(case.gait.amplitude, case.gait.wavelength_bl * case.creature.body_length_m)
-    if q.name == "hanging_elongation" and case.body.name == "fem":
-        cre = case.creature
-        rho = case.body.density_kg_m3 if case.body.density_kg_m3 > 0 else \
-            cre.mass_kg / (cre.body_length_m * cre.width_m * cre.height_m)
-        return hanging_bar_displacement(rho, case.scenario.gravity_m_s2, cre.body_length_m, case.body.youngs_modulus_pa)
+    continuum = _probes(case.body.name).density_and_modulus  # a continuum body's (rho, E), else None
+    if q.name == "hanging_elongation" and continuum is not None:
+        rho, E = continuum(case)
+        return hanging_bar_displacement(rho, case.scenario.gravity_m_s2, case.creature.body_length_m, E)
     return None
 
 
@@ -90,10 +96,12 @@ def measure(q: Quantity, body: str, dt_factor: float, resolution: int | None, qu
 
 
 def _default_resolution(q: Quantity, body: str) -> int | None:
-    if body == "massspring":
-        return None
+    """The body's default ``body.resolution`` for ``q``'s case, or None for a body without that key (the
+    lattice: one cube per segment)."""
     from ..core.config import resolve_case
-    return int(resolve_case(q.creature, body, q.scenario, q.gait, overrides=list(q.overrides)).body.resolution)
+    res = getattr(resolve_case(q.creature, body, q.scenario, q.gait, overrides=list(q.overrides)).body,
+                  "resolution", None)
+    return None if res is None else int(res)
 
 
 def _warm_up(q: Quantity, body: str) -> None:

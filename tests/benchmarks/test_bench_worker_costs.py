@@ -18,7 +18,7 @@ import math
 import pytest
 
 from bench_myriapoda.harness import worker_costs
-from bench_myriapoda.harness.worker_start import start_method
+from bench_myriapoda.jit.worker_start import start_method
 
 
 @pytest.mark.parametrize("plans", [False, True], ids=["plans-off", "plans-on"])

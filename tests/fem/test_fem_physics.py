@@ -13,8 +13,8 @@ import pytest
 
 from bench_myriapoda.bodies.fem.mesh import box_grid
 from bench_myriapoda.bodies.fem.system import DT_PAPER, FEMSystem
-from bench_myriapoda.validation.references import (cantilever_ratio, hanging_bar, one_step_map_eigenvalues, rotation,
-                                                   single_node_tet)
+from bench_myriapoda.bodies.fem.analytic_systems import one_step_map_eigenvalues, single_node_tet
+from bench_myriapoda.validation.references import cantilever_ratio, hanging_bar, rotation
 from bench_myriapoda.world import terrain_kernels as T
 
 BAR_TOL = 0.05              # hanging bar: relative error of the bottom displacement

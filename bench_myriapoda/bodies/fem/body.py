@@ -30,14 +30,16 @@ from ...core.feasibility import tet_mesh_footprint
 from ...core.kernel_records import plain
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
-from ...core.specs import BodySpec, Footprint, HangingBar
+from ...core.specs import BodyProbes, BodySpec, Footprint, HangingBar
 from ..case_scalars import contact_scalars
 from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
+from ..point_masses import point_mass_momentum_probes
 from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
 from ..segment_chain import check_chain_segments, check_legged_gait
 from ..segment_frames import NodeSegments, csr_rest_offsets
+from . import analytic_systems as AS
 from . import body_kernels as BK
 from . import kernels as FK
 from .element_quality import ElementQuality
@@ -401,6 +403,14 @@ def hanging_bar(body, case) -> HangingBar:
                       (cfg.rigid_stiffness_factor * E * a, E * a))
 
 
+def _density(case) -> float:
+    """The worm's density [kg/m^3]: ``body.density_kg_m3``, else the creature's mass over its box volume
+    (the analytic hanging elongation, ``BodyProbes.density_and_modulus``)."""
+    cre = case.creature
+    rho = case.body.density_kg_m3
+    return rho if rho > 0 else cre.mass_kg / (cre.body_length_m * cre.width_m * cre.height_m)
+
+
 CHECKS = {"analytic.worm-eps-lambda": True, "analytic.hanging-bar": True, "analytic.cantilever": True,
           "analytic.rigid-rotation": True, "analytic.free-fall-momentum": True, "analytic.damping-pure-mode": True,
           "analytic.damping-oscillating-mode": True, "analytic.slithering": False,
@@ -435,4 +445,11 @@ BACKEND = BodySpec(
     hang_dt_s=1.0 / 6000.0,  # the chain at 5 nodes per edge blows up at 1/3000 s within 1 s
     # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
     suite_scenes={"worm": ("fem-worm", 20.0 * 27.0),  # the default 20-segment worm, resolution 3
-                  "centipede": ("fem-centipede", 18.0 * 27.0)})
+                  "centipede": ("fem-centipede", 18.0 * 27.0)},
+    # what validation's analytic checks measure of the FEM method's own systems (analytic_systems.py)
+    probes=BodyProbes(
+        rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="mu V^(2/3)",
+        bar_under_own_weight=AS.bar_under_own_weight, cantilever_tip=AS.cantilever_tip,
+        pure_damping_modes=AS.pure_damping_modes, one_node_step_eigenvalues=AS.one_node_step_eigenvalues,
+        density_and_modulus=lambda case: (_density(case), case.body.youngs_modulus_pa),
+        **point_mass_momentum_probes(lambda body: body.system.mass)))

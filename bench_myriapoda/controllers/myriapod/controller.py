@@ -88,6 +88,14 @@ SWING_LOOP_PREVIOUS = {SW.SF1: SW.SB2, SW.SF2: SW.SF1, SW.SB1: SW.SF2, SW.SB2: S
 TURN_LEFT, TURN_RIGHT = 1.0, -1.0  # turn_dir of the head: + = left (a positive rotation about +y)
 
 
+def follower_feedforward(case) -> bool:
+    """Whether the Targeter's Follower adds the head's commanded speed (``targeter``'s module docstring):
+    ``controller.follower_feedforward`` 'on' / 'off', or at 'auto' in the dynamic stance only (the paper's
+    kinematic stance keeps the paper's Follower)."""
+    mode = case.controller.follower_feedforward
+    return mode == "on" or (mode == "auto" and case.legs.stance == "dynamic")
+
+
 def avoidance_turn(left: bool, right: bool, priority: str) -> float:
     """Turn direction (+1 left, -1 right) for antenna contacts (Sec. 5.2, Braitenberg):
     a left contact turns right, a right contact left; when both touch, the ``priority``
@@ -210,7 +218,8 @@ class MyriapodController:
             adjust_from_stance=ct.adjust_from_stance,
             wave_direction=SW.RETROGRADE if ct.wave_direction == "retrograde" else SW.DIRECT)
         self.tg_params = TG.targeter_params(k1=ct.k1, k2=ct.k2, omega_follow=d(ct.omega_follow_deg_s),
-                                            omega_balance=d(ct.omega_balance_deg_s))
+                                            omega_balance=d(ct.omega_balance_deg_s),
+                                            follow_feedforward=follower_feedforward(case))
         self.world = world_of(case, self.world)
         self.terr_kind, self.terr = self.world.terrain
         self.contact_distance = lg.contact_distance_m

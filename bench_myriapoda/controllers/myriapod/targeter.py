@@ -18,6 +18,14 @@ its target pose is initialized to the current one and then modified:
   ``R_T *= R([0, +-1, 0], w dt)`` turns the x axis toward l, the sign from the
   projection of l on the segment's z axis: l to the right (+z) needs a rotation
   about -y (a rotation about +y turns x toward -z).
+* Follower speed feedforward (beyond the paper; the dynamic stance's default,
+  ``controller.follower_feedforward``): ``c_T += v_head dt l / |l|`` as well, v_head the head's
+  commanded speed, so a follower walks at the commanded speed by itself and the stretch term
+  only corrects its spacing.  The paper's Follower alone needs a link stretched by
+  v_head / (k1 |l|) to follow at v_head; a carried segment stretches its links for free, a
+  segment pushed by its legs must hold that link's tension with its feet
+  (docs/explanation/dynamic-stance.md, "Why the paper's Follower crawls").  Off (0) in the
+  paper's kinematic stance: the same doubles as without it.
 * Head (Sec. 4.3): the Balancer, then the motion (Sec. 6, step 2): the centre
   moves along the head's own x axis at the commanded speed and the head turns
   about its y axis at the commanded rate, ``turn_dir`` = +1 left (a positive
@@ -42,6 +50,7 @@ K2             [1/s]        Balancer height gain; stable for k2 dt < 2
 OMEGA_FOLLOW   [rad/s]      Follower turn rate
 OMEGA_BALANCE  [rad/s]      Balancer turn rate
 ALIGN_TOL      [rad]        an axis this close to its goal is not turned
+FOLLOW_FF      [-]          1: the Follower's speed feedforward, 0: none
 =============  ===========  ========================================
 
 Walls (``keep_clear_of_walls``).  A supported segment is carried by its legs and has no collision of its
@@ -66,22 +75,24 @@ from numba import njit
 from bench_myriapoda.controllers.myriapod.switcher import STANCE
 from bench_myriapoda.world.terrain_kernels import H_NOBST, distance_and_normal, obstacle_normal, obstacles_below
 
-K1, K2, OMEGA_FOLLOW, OMEGA_BALANCE, ALIGN_TOL = 0, 1, 2, 3, 4
-N_TARGETER_PARAMS = 5
+K1, K2, OMEGA_FOLLOW, OMEGA_BALANCE, ALIGN_TOL, FOLLOW_FF = 0, 1, 2, 3, 4, 5
+N_TARGETER_PARAMS = 6
 
 TURN_LEFT, TURN_STRAIGHT, TURN_RIGHT = 1, 0, -1
 
 
 def targeter_params(k1: float = 20.0, k2: float = 10.0, omega_follow: float = 2.0,
-                    omega_balance: float = 2.0, align_tol: float = 1e-6) -> np.ndarray:
+                    omega_balance: float = 2.0, align_tol: float = 1e-6, follow_feedforward: bool = False) -> np.ndarray:
     """The Targeter parameter vector (units in the module docstring).
 
     The paper gives no values; these defaults settle a unit-length link in
-    about 1/k1 s and a height error in about 1/k2 s.
+    about 1/k1 s and a height error in about 1/k2 s.  follow_feedforward: the
+    Follower's speed feedforward (module docstring; off: the paper's Follower).
     """
     values = np.empty(N_TARGETER_PARAMS)
     values[K1], values[K2] = k1, k2
     values[OMEGA_FOLLOW], values[OMEGA_BALANCE], values[ALIGN_TOL] = omega_follow, omega_balance, align_tol
+    values[FOLLOW_FF] = 1.0 if follow_feedforward else 0.0
     if not (np.all(np.isfinite(values)) and np.all(values >= 0.0)):
         raise ValueError(f"targeter parameters must be finite and >= 0, got {values}")
     return values
@@ -198,6 +209,21 @@ def _follow_centre(c_T, c_self, c_ahead, l0, k1, dt):
 
 
 @njit(cache=True, inline="always")
+def _follow_speed(c_T, c_self, c_ahead, speed, dt):
+    """The Follower's speed feedforward: c_T += speed dt l / |l|, l = c_ahead - c_self; speed [m/s] the
+    head's commanded speed (module docstring)."""
+    lx = c_ahead[0] - c_self[0]
+    ly = c_ahead[1] - c_self[1]
+    lz = c_ahead[2] - c_self[2]
+    length = math.sqrt(lx * lx + ly * ly + lz * lz)
+    if length > 0.0:
+        g = speed * dt / length
+        c_T[0] += g * lx
+        c_T[1] += g * ly
+        c_T[2] += g * lz
+
+
+@njit(cache=True, inline="always")
 def _follow_turn(R_T, c_self, c_ahead, omega, tol, dt):
     """The Follower's turn of the x axis toward l = c_ahead - c_self about the segment's own y axis."""
     lx = c_ahead[0] - c_self[0]
@@ -262,6 +288,8 @@ def targeter_step(c, R, kinematic, kind, f, params, link_rest, height_target,
             head_motion(c_T[0], R_T[0], head_speed, head_turn_rate, head_turn_dir, dt)
         else:
             _follow_centre(c_T[i], c[i], c_T[i - 1], link_rest[i], params[K1], dt)
+            if params[FOLLOW_FF] != 0.0:  # the paper's Follower (0) takes no branch: the same doubles
+                _follow_speed(c_T[i], c[i], c_T[i - 1], head_speed, dt)
     for i in range(n):
         if not kinematic[i]:
             continue

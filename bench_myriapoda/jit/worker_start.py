@@ -20,6 +20,8 @@ import multiprocessing as mp
 import os
 import sys
 
+# What the fork server imports in its own process: the harness's worker code.  Named, not imported: this package
+# sits below the harness and starts the workers without knowing what they run.
 PRELOAD = "bench_myriapoda.harness.worker_preload"
 START_METHODS = ("forkserver", "spawn")
 ENV_START = "BENCH_MYRIAPODA_WORKER_START"

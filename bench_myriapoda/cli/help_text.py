@@ -1,9 +1,9 @@
 """What ``bench-myriapoda SUBCOMMAND --help`` says: a paragraph, the choices, and examples at the end.
 
-``cli.build_parser`` passes ``help_text(NAME)`` to each ``add_parser``. The text is written so that
+Each subcommand's module passes ``help_text(NAME)`` to its ``add_parser``. The text is written so that
 the help stands alone: what the command does, what it writes, and a few command lines to copy.
 ``validate``'s list of checks comes from the validation registry and is filled in only when its help is
-printed (``cli._Parser.format_help``), so an ordinary command does not pay for importing the registry.
+printed (``parser.Parser.format_help``), so an ordinary command does not pay for importing the registry.
 """
 from __future__ import annotations
 
@@ -11,10 +11,12 @@ import argparse
 import textwrap
 from typing import Any
 
+from ..harness.matrix import matrix_paths
+
 WIDTH = 100
 
 
-def _para(text: str) -> str:
+def para(text: str) -> str:
     return textwrap.fill(" ".join(text.split()), WIDTH)
 
 
@@ -120,13 +122,13 @@ FULL_SET_TIME = "about 7 to 10 minutes"
 
 def validate_description() -> str:
     """``validate --help``'s description: the paragraph, the families, every check with its bodies."""
-    from .validation.registry import CHECKS
+    from ..validation.registry import CHECKS  # every check module: about 25 ms of CPU, paid when this help prints
 
-    head = _para("""Run the validation checks and print one row per check and body model: the quantity, the measured
+    head = para("""Run the validation checks and print one row per check and body model: the quantity, the measured
         value, the reference with its source (an equation, a paper's figure or section), the tolerance and the
         verdict (PASS, FAIL, NOT APPLICABLE with the reason, or INFO). Exit 1 when a row FAILs. Rows go to the
         results store's validation table and to DIR/validation.json.""")
-    times = _para(f"""--quick runs each check on the bodies its registry entry lists for the quick set, at smaller
+    times = para(f"""--quick runs each check on the bodies its registry entry lists for the quick set, at smaller
         sizes: {QUICK_SET_TIME} on 2 cores. The full set (no --quick) runs every check on every body it lists:
         {FULL_SET_TIME}. --check takes a check's name or a family's.""")
     families = list(dict.fromkeys(c.family for c in CHECKS))
@@ -140,10 +142,8 @@ def validate_description() -> str:
 
 def help_text(name: str) -> dict[str, Any]:
     """Keyword arguments for ``add_parser(name, ...)``: description, epilog with examples, raw formatting."""
-    description = None if name == "validate" else _para(DESCRIPTIONS[name])
+    description = None if name == "validate" else para(DESCRIPTIONS[name])
     if name == "matrix":
-        from .harness.matrix import matrix_paths
-
         description = description.format(matrices=", ".join(matrix_paths()) or "(none found)")
     return {"description": description, "epilog": "examples:\n" + EXAMPLES[name],
             "formatter_class": argparse.RawDescriptionHelpFormatter}

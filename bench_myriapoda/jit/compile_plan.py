@@ -11,9 +11,11 @@ tens of seconds -- while other workers wait for the group's kernels.
 :func:`recording` wraps ``Dispatcher.compile`` (over the compile lock, ``compile_lock``) and keeps
 one :class:`CompileEvent` per signature compiled or loaded: the kernel, the exact argument types,
 the wall time with its callees (``inclusive_s``) and without (``self_s``), whether it came from the
-cache.  ``python -m bench_myriapoda.harness.cold_compile --record quick --write`` records every
-compile group of a matrix, each in a fresh process on an empty cache, into ``compile_plans_data``
-(the signatures pickled: they are numba types; ``cold_compile`` also simulates a cold matrix).
+cache.  ``python -m bench_myriapoda.harness.cold_compile --record quick --write`` (:data:`RECORD_COMMAND`)
+records every compile group of a matrix, each in a fresh process on an empty cache, into the data file
+``compile_plans.json`` beside this module (:func:`write_plans`; generated, not edited; the signatures
+pickled, as they are numba types; ``cold_compile`` also simulates a cold matrix), shipped as package data
+and read once per process (:func:`shipped_plans`).
 :func:`load_plans` turns them into :class:`KernelTask` lists, which the local executor hands to workers that would otherwise wait
 (``executors.CompileScheduler.next_kernel_job``): they compile a group's kernels with the case's
 exact signatures, from the end of the tree the case reaches last, so the case finds them in the
@@ -25,11 +27,22 @@ nothing of the executor's (which uses it); what needs the executor is in ``cold_
 """
 from __future__ import annotations
 
+import base64
 import contextlib
+import functools
+import importlib
+import inspect
+import json
+import os
+import pickle
 import time
+import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterator, Mapping, Sequence
+
+# numba is imported where it is used: importing it costs about 0.26 s of CPU (python -c, time.process_time), which a
+# process that only reads, writes or schedules the plans (group_name, read_plans, kernel_graph) does not pay
 
 
 @dataclass
@@ -121,8 +134,6 @@ def recording() -> Iterator[list[CompileEvent]]:
 
 def dispatcher_of(kernel: str):
     """The numba dispatcher ``module.qualname`` (imported)."""
-    import importlib
-
     mod, _, name = kernel.rpartition(".")
     obj: Any = importlib.import_module(mod)
     return getattr(obj, name)
@@ -159,23 +170,28 @@ def group_name(group: tuple) -> str:
     return f"{body}-{'legged' if legged else 'legless'}-{'water' if water else 'dry'}"
 
 
-PLAN_MODULE = Path(__file__).with_name("compile_plans_data.py")
+PLANS_FILE = Path(__file__).with_name("compile_plans.json")  # shipped as package data (pyproject.toml)
 RECORD_MODULE = "bench_myriapoda.harness.cold_compile"  # the command line that records and simulates
+RECORD_COMMAND = f"python -m {RECORD_MODULE} --record quick --write"  # how PLANS_FILE is written
+
+
+@dataclass
+class RecordedPlans:
+    """Compile plans as :func:`write_plans` wrote them: ``numba_version``, the numba that compiled them (plans of
+    another major.minor version are not used: its types may differ); ``plans``, group name (:func:`group_name`) ->
+    ``{"case": label, "events": [(kernel, signature, depth, parent, inclusive_s, self_s, cached, can_cache)],
+    "args": the events' argument types, pickled}``; ``note``, how and where they were recorded."""
+
+    numba_version: str
+    plans: dict[str, dict]
+    note: str = ""
 
 
 def _encode_args(args_list: list[tuple]) -> str:
-    import base64
-    import pickle
-    import zlib
-
     return base64.b64encode(zlib.compress(pickle.dumps(args_list, protocol=4), 9)).decode("ascii")
 
 
 def _decode_args(blob: str) -> list[tuple]:
-    import base64
-    import pickle
-    import zlib
-
     return pickle.loads(zlib.decompress(base64.b64decode(blob)))
 
 
@@ -203,28 +219,54 @@ def compact(plan: Mapping[str, Any]) -> dict:
     return dict(plan, events=events, args=_encode_args([args[k] for k in keep]))
 
 
-def read_plan_module(path: Path = PLAN_MODULE) -> dict[str, dict]:
-    """The ``PLANS`` of a module :func:`write_plan_module` wrote (empty if there is none)."""
-    import importlib.util
-
-    if not Path(path).is_file():
-        return {}
-    spec = importlib.util.spec_from_file_location("_bench_compile_plans", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return dict(mod.PLANS)
+def read_plans(path: Path = PLANS_FILE) -> RecordedPlans:
+    """The plans of a file :func:`write_plans` wrote; ``ValueError`` naming the file when it is not one."""
+    try:
+        doc = json.loads(Path(path).read_text(encoding="utf-8"))
+        return RecordedPlans(str(doc["numba_version"]), dict(doc["plans"]), str(doc.get("note", "")))
+    except (ValueError, KeyError, TypeError) as exc:
+        raise ValueError(f"{path}: not a compile plans file ({type(exc).__name__}: {exc}); write it again with "
+                         f"{RECORD_COMMAND}") from None
 
 
-def write_plan_module(plans: Mapping[str, dict], note: str, path: Path = PLAN_MODULE) -> None:
-    """Write the recorded plans as a Python module (``compile_plans_data``; generated, not edited by hand)."""
-    import numba
-    import pprint
+@functools.lru_cache(maxsize=1)
+def shipped_plans() -> RecordedPlans:
+    """The plans shipped with the package (``compile_plans.json``), read once per process; none (an empty
+    record) when the file is missing or unreadable: every group then compiles as before, in the worker of its
+    first case (``tests/test_compile_plan.py`` checks that the shipped file reads)."""
+    try:
+        return read_plans(PLANS_FILE)
+    except (OSError, ValueError):
+        return RecordedPlans("", {})
 
-    text = (f'"""Compile plans recorded by ``python -m {RECORD_MODULE} --record``: generated, do not edit.\n\n'
-            f"{note}\n\"\"\"\n"
-            f"NUMBA_VERSION = {numba.__version__!r}\n"
-            f"PLANS = {pprint.pformat(dict(plans), width=118, sort_dicts=True)}\n")
-    path.write_text(text)
+
+def write_plans(plans: Mapping[str, Mapping[str, Any]], note: str, path: Path = PLANS_FILE,
+                numba_version: str | None = None) -> None:
+    """Write recorded plans as JSON (``compile_plans.json``: generated by :data:`RECORD_COMMAND`, not edited by hand),
+    one event to a line so that a new recording reads as a diff; the file is replaced whole.  ``numba_version``:
+    the numba that recorded them (default: this process's)."""
+    if numba_version is None:
+        import numba
+
+        numba_version = numba.__version__
+
+    def one(value) -> str:
+        return json.dumps(value, ensure_ascii=True)
+
+    lines = ["{", f'"generated_by": {one(f"{RECORD_COMMAND} (do not edit)")},',
+             f'"numba_version": {one(numba_version)},', f'"note": {one(note)},', '"plans": {']
+    groups = sorted(plans.items())
+    for k, (name, plan) in enumerate(groups):
+        lines += [f" {one(name)}: {{", f'  "case": {one(plan["case"])},', f'  "args": {one(plan["args"])},',
+                  '  "events": [']
+        events = [list(ev) for ev in plan["events"]]
+        lines += [f"   {one(ev)}{',' if i + 1 < len(events) else ''}" for i, ev in enumerate(events)]
+        lines += ["  ]", f" }}{',' if k + 1 < len(groups) else ''}"]
+    lines += ["}", "}"]
+    path = Path(path)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    tmp.replace(path)
 
 
 def critical_chain(plans: Mapping[str, Mapping[str, Any]]) -> dict[str, tuple[float, float]]:
@@ -287,7 +329,7 @@ def _reverse_postorder(events: Sequence[tuple]) -> list[int]:
 
 
 def group_tasks(plan: Mapping[str, Any], args: Sequence[tuple] | None = None) -> list[KernelTask]:
-    """The kernels of one recorded group plan (``PLANS[name]``) that idle workers compile ahead, in the order they
+    """The kernels of one recorded group plan (``shipped_plans().plans[name]``) that idle workers compile ahead, in the order they
     take them (:func:`_reverse_postorder`): every cached kernel of at least ``MIN_TASK_S`` but the group's
     largest top-level kernel (the one the case itself compiles first: its compile is the case's, and it
     finds its callees compiled)."""
@@ -309,28 +351,23 @@ ENV_SWITCH = "BENCH_MYRIAPODA_COMPILE_PLAN"  # "off": no kernels compiled ahead,
 
 def plans_enabled() -> bool:
     """Whether the recorded plans are used (not turned off with ``BENCH_MYRIAPODA_COMPILE_PLAN=off``)."""
-    import os
-
     return os.environ.get(ENV_SWITCH, "on").strip().lower() not in ("off", "0", "no", "false")
 
 
 def load_plans() -> dict[str, list[KernelTask]]:
-    """Group name -> :func:`group_tasks` of the recorded plans (``compile_plans_data``); empty where they do not
+    """Group name -> :func:`group_tasks` of the recorded plans (:func:`shipped_plans`); empty where they do not
     apply: recorded with another numba major.minor version (its signatures' types may differ), unreadable, or
     turned off (:func:`plans_enabled`); a signature that no longer fits the code (:func:`stale_reason`) is left
     out.  Without a plan a group compiles as before, in the worker of its first case."""
     if not plans_enabled():
         return {}
-    try:
-        import numba
+    import numba
 
-        from . import compile_plans_data as data
-    except ImportError:
-        return {}
-    if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
+    data = shipped_plans()
+    if numba.__version__.split(".")[:2] != data.numba_version.split(".")[:2]:
         return {}
     out = {}
-    for name, plan in data.PLANS.items():
+    for name, plan in data.plans.items():
         try:
             tasks = group_tasks(plan)
         except Exception:  # noqa: BLE001 -- a plan pickled by another numba: compile as before
@@ -347,8 +384,6 @@ def stale_reason(kernel: str, args: tuple) -> str | None:
     with the right number of arguments of types the code no longer passes cannot be told apart without
     compiling it: ``tests/test_compiled_signatures.py`` fails on those (every recorded signature must be one
     the quick matrix compiles now), and the plans are recorded again (module docstring)."""
-    import inspect
-
     from numba.core.dispatcher import Dispatcher
 
     try:
@@ -366,12 +401,10 @@ def stale_reason(kernel: str, args: tuple) -> str | None:
 
 
 def stale_signatures(plans: Mapping[str, Mapping[str, Any]] | None = None) -> list[str]:
-    """Every recorded signature of ``plans`` (default: the shipped ``compile_plans_data.PLANS``) that
+    """Every recorded signature of ``plans`` (default: the shipped ones, :func:`shipped_plans`) that
     :func:`stale_reason` rejects, as ``group: reason`` lines (empty: none is stale)."""
     if plans is None:
-        from . import compile_plans_data as data
-
-        plans = data.PLANS
+        plans = shipped_plans().plans
     out = []
     for name, plan in plans.items():
         try:
@@ -396,7 +429,7 @@ class _Kernel:
 
 def kernel_graph(plans: Mapping[str, Mapping[str, Any]]) -> tuple[dict[str, _Kernel], dict[str, list[str]]]:
     """(kernel signature -> its recorded self compile time [s] and callees, group name -> its top-level
-    signatures in call order) from recorded plans (``PLANS``).  A signature several groups compile is one node."""
+    signatures in call order) from recorded plans (``RecordedPlans.plans``).  A signature several groups compile is one node."""
     nodes: dict[str, _Kernel] = {}
     roots: dict[str, list[str]] = {}
     for name, plan in plans.items():
@@ -454,17 +487,14 @@ def preload_cached() -> tuple[int, int]:
     first case of each group; on a cold cache nothing is loaded and nothing is compiled."""
     if not plans_enabled():
         return 0, 0
-    try:
-        import numba
+    import numba
 
-        from . import compile_plans_data as data
-    except ImportError:
-        return 0, 0
-    if numba.__version__.split(".")[:2] != data.NUMBA_VERSION.split(".")[:2]:
+    data = shipped_plans()
+    if numba.__version__.split(".")[:2] != data.numba_version.split(".")[:2]:
         return 0, 0
     loaded = total = 0
     seen: set[str] = set()
-    for plan in data.PLANS.values():
+    for plan in data.plans.values():
         try:
             args = _decode_args(plan["args"])
         except Exception:  # noqa: BLE001 -- pickled by another numba: nothing to preload from this plan

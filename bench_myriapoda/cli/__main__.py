@@ -1,0 +1,6 @@
+"""``python -m bench_myriapoda.cli``: the ``bench-myriapoda`` command."""
+import sys
+
+from .program import main
+
+sys.exit(main())
