@@ -70,7 +70,7 @@ from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
-from ..legged_chunk import copy_frames, copy_rows, register
+from ..legged_chunk import carry, copy_frames, copy_rows, register
 from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_points
@@ -81,6 +81,8 @@ from .kernels import elastic_forces_gathered, semi_implicit_velocity
 from .element_quality import ElementQuality
 from .mesh import box_grid, segment_cells, signed_volumes
 from .system import FEMSystem
+from .pushed_blocks import block_inertia, push_blocks, pushed_blocks
+from ..dynamic_stance import stance_arrays, stance_params, stance_statistics
 
 # Scalar parameters (``phys``).
 DT, R_N, R_TAN, MAX_SPEED, MAX_PEN, K_SUPPORT = range(6)
@@ -294,8 +296,8 @@ def carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_t
 
 # the fused legged walk's pack (``legged_chunk``): blocks a ``Blocks``, chain ``advance_chain``'s arguments without
 # n_steps (a ``BlockChain``, a ``BlockChainWorld``, acc), each as a plain tuple (``core.kernel_records``), named
-# where read
-BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain")
+# where read; push the dynamic stance's ``pushed_blocks.PushedBlocks``
+BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain push")
 # the blocks as the legs carry them: x (n_nodes, 3) [m]; block_nodes (n, k); rest_offsets (n, k, 3) [m]; att_nodes,
 # att_block (n_att,); held (n,) bool; att_target (n_att, 3) [m] and support (n,) bool (``carry_blocks`` writes them);
 # the poses' scratch c (n, 3) [m], A, R (n, 3, 3)
@@ -328,12 +330,24 @@ def _sample_blocks(P, c_out, R_out, links_out):
             links_out[li, i] = 0.5 * (c[li, i] + c[li + 1, i])
 
 
+def _carry_blocks_feet(P, kinematic, c_T, R_T, states, tips):
+    """``legged_chunk.carry_feet`` after ``_block_poses``: in dynamic stance the legs push the blocks
+    (``pushed_blocks.push_blocks``, on the poses ``_block_poses`` left; returns True: feet may have slid), else
+    ``_carry_blocks`` (False)."""
+    if P.push.stance.params.dynamic != 0.0:
+        B = Blocks(*P.blocks)
+        push_blocks(P.push, B.c, B.R, kinematic, c_T, R_T, states, tips)
+        return True
+    carry(P, kinematic, c_T, R_T)   # (the registered ``_carry_blocks``: a plain function compiles only so)
+    return False
+
+
 def _block_chain_step(P):
     """``legged_chunk.step``: one step."""
     return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
-register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step)
+register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step, _carry_blocks_feet)
 
 
 class BodyFEMChain(LeggedSegments):
@@ -411,6 +425,20 @@ class BodyFEMChain(LeggedSegments):
         self._spine = np.zeros((n, 3))
         self.acc = np.zeros(S.N_ACC)
         self.quality = ElementQuality(len(tets))
+        self.total_mass = float(fem.mass.sum())
+        self._setup_stance(case)
+
+    def _setup_stance(self, case) -> None:
+        """The dynamic stance (``legs.stance``, ``pushed_blocks``): ``self.dynamic_stance``, ``self.stance``
+        (``dynamic_stance.StanceArrays`` of the blocks: lumped masses, rest inertia) and ``self._push``."""
+        params = stance_params(case.legs, case.friction)
+        self.dynamic_stance = params.dynamic != 0.0
+        node_mass = self.fem.mass[self.block_nodes]
+        n = self.n_blocks
+        self.stance = stance_arrays(params, node_mass.sum(axis=1), block_inertia(self.rest_offsets, node_mass),
+                                    self.gravity, np.zeros((n, 3)), np.zeros((n, 3)), self.terr_kind, self.terr)
+        self._push = pushed_blocks(self.x, self.v, self.fem.mass, self.block_nodes, self.att_nodes, self.att_block,
+                                   self._f_work, self.support, self._held, self.stance, self.dt)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
@@ -441,21 +469,49 @@ class BodyFEMChain(LeggedSegments):
                         att_nodes=self.att_nodes, att_block=self.att_block, held=self._held,
                         att_target=self.att_target, support=self.support, c=np.zeros((n, 3)), A=np.zeros((n, 3, 3)),
                         R=np.zeros((n, 3, 3)))
-        return BlockChainLegs(plain(blocks), self._chain_args + (self.acc,))
+        return BlockChainLegs(plain(blocks), self._chain_args + (self.acc,), self._push)
+
+    def _state_arrays(self):
+        return (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc, self._f_work, self.stance.acc)
 
     def _state(self):
-        return [a.copy() for a in (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc)]
+        return [a.copy() for a in self._state_arrays()]
 
     def _restore(self, saved) -> None:
-        for dst, src in zip((self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc), saved):
+        for dst, src in zip(self._state_arrays(), saved):
             dst[...] = src
 
     def compile(self) -> None:
         saved = self._state()
         self.advance(0.0, 1)
         self.observe(0.0)
+        if self.dynamic_stance:
+            n = self.n_blocks
+            self.push_support(np.zeros(n, bool), *self.segment_poses(), np.zeros(2 * n, np.int64), np.zeros((2 * n, 3)))
         self._restore(saved)
         self.quality.reset()
+
+    # ------------------------------------------------------------------ the dynamic stance
+    def push_support(self, supported, c_T, R_T, states, tips) -> None:
+        """The dynamic stance's support this step (``pushed_blocks.push_blocks``): supported (n,) bool, the targets
+        c_T (n, 3) [m] and R_T (n, 3, 3), the leg states (n_legs,) and the feet tips (n_legs, 3) [m], UPDATED where
+        a foot slides."""
+        c, R = self.segment_poses()
+        push_blocks(self._push, c, R, np.ascontiguousarray(supported, dtype=np.bool_),
+                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                    states, tips)
+
+    def stance_statistics(self) -> dict[str, float]:
+        """The dynamic stance's statistics of the run so far (``dynamic_stance.stance_statistics``; empty in
+        kinematic stance)."""
+        if not self.dynamic_stance:
+            return {}
+        return stance_statistics(self.stance.acc)
+
+    def centre_of_mass(self) -> np.ndarray:
+        """(3,) [m]: the nodes' mass centre."""
+        m = self.fem.mass
+        return m @ self.x / self.total_mass
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -538,7 +594,8 @@ class BodyFEMChain(LeggedSegments):
         return kinetic, self.fem.elastic_energy(), float(-self.gravity[1] * (m @ self.x[:, 1]))
 
     def extra_metrics(self) -> dict[str, float]:
-        return {"min_J": self.quality.min_J, "inverted_elements_max": float(self.quality.inverted_max)}
+        return {"min_J": self.quality.min_J, "inverted_elements_max": float(self.quality.inverted_max),
+                **self.stance_statistics()}
 
     def contact_fraction_mean(self) -> float:
         return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))
