@@ -50,6 +50,10 @@ block follows elastically; the segment's pose is its nodes' best fit, so a
 supported segment tracks its target within a tracking error that the tests
 report (not exactly, unlike the rigid bodies).
 
+In the dynamic stance (``legs.stance = "dynamic"``) the penalty holds a held block only: the STANCE legs push
+every other supported block through friction-limited feet, their impulse given to its leg-attachment nodes
+(``pushed_blocks``; ``push_support``, and the fused path's ``carry_feet``).
+
 ``segment_poses`` returns each block's best-fit rigid pose: the centroid of
 its nodes and the polar rotation of sum (x_i - c)(X_i - X_c)^T (rest shape X).
 The kernel (``advance_chain``) runs n steps per call: elastic forces (eqs.
