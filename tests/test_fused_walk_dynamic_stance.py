@@ -12,7 +12,7 @@ def assert_same_stance(fused, ref):
     assert fused.body.extra_metrics() == ref.body.extra_metrics()
 
 
-@pytest.mark.parametrize("body", ["hybrid", "massspring"])
+@pytest.mark.parametrize("body", ["hybrid", "massspring", "fem"])
 def test_fused_equals_python_in_dynamic_stance(body):
     # mu = 0.3: the feet slide (the tips move in the body's support), ADJUSTMENT then RANDOM-WALK
     case, fused, ref = pair("walk", 6, "legs.stance=dynamic", "friction.mu_transverse=0.3", body=body)

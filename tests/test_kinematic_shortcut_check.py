@@ -56,8 +56,9 @@ def test_a_failed_dynamic_run_is_a_failed_row():
     assert out.verdict == "FAIL"
 
 
-def test_the_bodies_with_a_dynamic_stance_run_the_checks_and_fem_does_not():
+def test_every_legged_body_runs_the_checks_fem_too():
+    # (this replaced the test that fem did not run them: fem has a dynamic stance now, bodies/fem/pushed_blocks.py)
     registry.load_all()
     for name in ("paper.kinematic-shortcut-centipede", "paper.kinematic-shortcut-millipede"):
-        assert name in registry.BODIES["hybrid"].checks and name in registry.BODIES["massspring"].checks
-        assert name not in registry.BODIES["fem"].checks
+        for body in ("hybrid", "massspring", "fem"):
+            assert registry.BODIES[body].checks.get(name) is True, (name, body)   # in validate --quick

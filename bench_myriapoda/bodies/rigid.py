@@ -12,11 +12,13 @@ World frame: y up, gravity along -y, SI units.  Quaternions are (w, x, y, z).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import NamedTuple
 
 import numpy as np
 
 from bench_myriapoda.bodies import rigid_kernels as rk
+from bench_myriapoda.core.kernel_records import plain
 from bench_myriapoda.world.terrain_kernels import N_TERRAIN_PARAMS, PLANE
 
 GRAVITY = (0.0, -9.81, 0.0)  # [m/s^2]
@@ -48,6 +50,17 @@ class ContactSettings:
     position_iterations: int = 4
     position_beta: float = 0.2
     slop: float = 1e-5
+
+    @cached_property
+    def kernel_params(self) -> tuple:
+        """These settings as ``rigid_kernels.ContactParams``, a plain tuple (``core.kernel_records``: the call's
+        cost), built once (the settings are frozen)."""
+        return plain(rk.ContactParams(mu=float(self.friction), restitution=float(self.restitution),
+                                      bounce_threshold=float(self.bounce_threshold),
+                                      n_velocity_iterations=int(self.velocity_iterations),
+                                      velocity_tolerance=float(self.velocity_tolerance),
+                                      n_position_iterations=int(self.position_iterations),
+                                      beta=float(self.position_beta), slop=float(self.slop)))
 
     def __post_init__(self) -> None:
         checks = {
@@ -156,26 +169,22 @@ class RigidBoxes:
                 f = np.ascontiguousarray(p)
             else:  # a short header: zero-padded
                 f[: p.shape[0]] = p
-        n_done, status = rk.advance(
-            (self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents,
-             self.force, self.torque, self.impulse_cache), self.kinematic, int(n_steps),
-            float(dt), _vec3(gravity, "gravity"), int(terrain_kind), f,
-            (float(contact.friction), float(contact.restitution),
-             float(contact.bounce_threshold), int(contact.velocity_iterations),
-             float(contact.velocity_tolerance),
-             int(contact.position_iterations), float(contact.position_beta),
-             float(contact.slop)), float(max_speed))
+        n_done, status = rk.advance(self._box_arrays, self.kinematic, int(n_steps), float(dt),
+                                    _vec3(gravity, "gravity"), int(terrain_kind), f, contact.kernel_params,
+                                    float(max_speed))
         if clear_forces:
             self.clear_forces()
         return int(n_done), int(status)
 
     # -- loads ----------------------------------------------------------------
 
-    def pack(self) -> tuple:
-        """The boxes' arrays in the fields' order of ``rigid_chain.Boxes`` (no copy; a plain tuple, which numba
-        types fast at a call), for the rigid segment chain's kernels."""
-        return (self.c, self.q, self.v, self.w, self.mass, self.inertia_body, self.half_extents, self.kinematic,
-                     self.impulse_cache, self.force, self.torque)
+    @cached_property
+    def _box_arrays(self) -> tuple:
+        """``rigid_kernels.BoxArrays`` of the boxes as a plain tuple (``core.kernel_records``: the call's cost),
+        built once by field name: it refers to the boxes' own arrays, which are changed in place only."""
+        return plain(rk.BoxArrays(c=self.c, q=self.q, v=self.v, w=self.w, mass=self.mass,
+                                  inertia_body=self.inertia_body, half_extents=self.half_extents, force=self.force,
+                                  torque=self.torque, impulse_cache=self.impulse_cache))
 
     def clear_forces(self) -> None:
         """Zero the force and torque accumulators."""

@@ -36,12 +36,12 @@ from .case_scalars import contact_scalars
 from .friction_kernels import CONTACT_DISTANCE, spine_between
 from .step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK, RUNAWAY_SPEED
 
-# The chain's arguments, packed (numba compiles a namedtuple of arrays as a struct of them).  Python hands them
-# over as plain tuples in these fields' order and a link element's entry kernel names them (``hybrid.kernels.advance``):
-# numba types a plain tuple of arrays in its C dispatcher, a namedtuple in Python (about 100 us a call for the
-# 18-segment centipede's packs, measured, against 8 us), and names in compiled code cost nothing.
-# So each link element's module has its own entry kernel, a few lines alike by design (``hybrid.kernels.advance``,
-# ``massspring.myriapod.advance_spring_chain``).
+# The chain's arguments, named records (numba compiles a namedtuple of arrays as a struct of them; kernels read
+# the fields by name, which costs nothing in compiled code).  Python builds them by field name (``boxes_of``,
+# ``coupling_of``, a body's ``_chain_args``) and hands them over as plain tuples (``core.kernel_records``: numba's
+# dispatcher types a namedtuple argument several times slower), which a link element's entry kernel names again
+# with the same classes (``hybrid.kernels.advance``).  So each link element's module has its own entry kernel, a
+# few lines alike by design (``hybrid.kernels.advance``, ``massspring.myriapod.advance_spring_chain``).
 # the boxes (``rigid_kernels`` conventions; c, q, vr, w, impulse_cache UPDATED; mass (n_rigid,) [kg], inertia_body
 # (n_rigid, 3) [kg m^2], half_extents (n_rigid, 3) [m], kinematic (n_rigid,) bool; force, torque (n_rigid, 3) scratch)
 Boxes = namedtuple("Boxes", "c q vr w mass inertia_body half_extents kinematic impulse_cache force torque")
@@ -54,6 +54,20 @@ World = namedtuple("World", "gravity terr_kind terr fric_model fric phys")
 # the coupling's scratch (``segment_chain.CouplingScratch``, less qtmp): f_att, x_att, x_pred (n_fixed, 3), residual
 # (n_fixed,), spine (n_links, 3), Rb (n_rigid, 3, 3), and ``rigid_kernels._solve_contacts``'s
 Coupling = namedtuple("Coupling", "f_att x_att x_pred residual spine Rb R Iw corner_of lin ang resp kn kt target lam")
+
+
+def boxes_of(rb) -> Boxes:
+    """The ``Boxes`` record of a ``rigid.RigidBoxes`` rb (its own arrays, no copy)."""
+    return Boxes(c=rb.c, q=rb.q, vr=rb.v, w=rb.w, mass=rb.mass, inertia_body=rb.inertia_body,
+                 half_extents=rb.half_extents, kinematic=rb.kinematic, impulse_cache=rb.impulse_cache,
+                 force=rb.force, torque=rb.torque)
+
+
+def coupling_of(sc) -> Coupling:
+    """The ``Coupling`` record of a ``segment_chain.CouplingScratch`` sc (its own arrays, no copy)."""
+    return Coupling(f_att=sc.f_att, x_att=sc.x_att, x_pred=sc.x_pred, residual=sc.residual, spine=sc.spine,
+                    Rb=sc.Rb, R=sc.R, Iw=sc.Iw, corner_of=sc.corner_of, lin=sc.lin, ang=sc.ang, resp=sc.resp,
+                    kn=sc.kn, kt=sc.kt, target=sc.target, lam=sc.lam)
 
 # Scalar parameter vector layout (``phys``, float64); MUSCLES_ON, MUSCLE_GAIN and VOLUME are the hybrid's
 # active FEM links' (a spring link has no muscles and leaves them 0).
@@ -199,10 +213,11 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
     Shared by the hybrid (FEM links) and the legged mass-spring chain (spring links): steps 2 and 3 of the
     module docstring.
     """
-    fixed, att_body, att_local = A
-    c, q, vr, w, rmass, inertia_body, half_extents, kinematic, impulse_cache, force, torque = B
-    gravity, terr_kind, terr, fric_model, fric, phys = W
-    f_att, x_att, x_pred, residual, spine, Rb, R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam = C
+    fixed, att_body, att_local = A.fixed, A.att_body, A.att_local
+    c, q, vr, w, kinematic, half_extents = B.c, B.q, B.vr, B.w, B.kinematic, B.half_extents
+    gravity, terr_kind, terr, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric, W.phys
+    f_att, x_att, x_pred, residual, Rb = C.f_att, C.x_att, C.x_pred, C.residual, C.Rb
+    force, torque = B.force, B.torque
     n_fixed = fixed.shape[0]
     n_rigid = c.shape[0]
     dt, _, _, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
@@ -229,9 +244,12 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
         if not kinematic[i]:
             rk.accumulate_point_forces(att_body[a0:a1], x_att[a0:a1], f_att[a0:a1], c, force, torque)
         a0 = a1
-    boxes = (c, q, vr, w, rmass, inertia_body, half_extents, force, torque, impulse_cache)  # rk.BoxArrays
-    contact = (mu_r, e_r, bounce, n_vel, vel_tol, n_pos, beta, slop)  # rk.ContactParams
-    scratch = (R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam)  # rk.ContactScratch
+    boxes = rk.BoxArrays(c=c, q=q, v=vr, w=w, mass=B.mass, inertia_body=B.inertia_body, half_extents=half_extents,
+                         force=force, torque=torque, impulse_cache=B.impulse_cache)
+    contact = rk.ContactParams(mu=mu_r, restitution=e_r, bounce_threshold=bounce, n_velocity_iterations=n_vel,
+                               velocity_tolerance=vel_tol, n_position_iterations=n_pos, beta=beta, slop=slop)
+    scratch = rk.ContactScratch(R=C.R, Iw=C.Iw, corner_of=C.corner_of, lin=C.lin, ang=C.ang, resp=C.resp, kn=C.kn,
+                                kt=C.kt, target=C.target, lam=C.lam)
     for i in range(n_rigid):
         if kinematic[i]:
             continue

@@ -75,10 +75,11 @@ N_ANISO = 4
 NO_ANISO = np.zeros(N_ANISO)
 _MU_FLOOR = 1e-9  # a zero coefficient in the scaled disk problem: no friction along that axis
 
-# ``_step_body``'s arguments, packed (numba compiles a tuple as a struct of its fields, and a tuple of scalars
-# inlined or passed to ``_step_body`` costs nothing).  Callers build plain tuples in these fields' order
-# (``advance``; ``rigid_chain.rigid_segments_step`` builds them in compiled code), as ``rigid_chain``'s packs.
-# The boxes' arrays (module docstring; c, q, v, w, impulse_cache UPDATED; force, torque (n, 3) read)
+# ``_step_body``'s arguments, named records (numba compiles a namedtuple as a struct of its fields, read by name;
+# building one in compiled code, as ``rigid_chain.rigid_segments_step`` does, costs nothing).
+# The boxes' arrays (module docstring): c (n, 3) [m], q (n, 4), v (n, 3) [m/s], w (n, 3) [rad/s], impulse_cache
+# (n, 8, 3) [N s] UPDATED; mass (n,) [kg], inertia_body (n, 3) [kg m^2], half_extents (n, 3) [m]; force (n, 3) [N],
+# torque (n, 3) [N m] read
 BoxArrays = namedtuple("BoxArrays", "c q v w mass inertia_body half_extents force torque impulse_cache")
 # the contact's scalars (``advance``): mu, restitution, bounce_threshold [m/s], n_velocity_iterations,
 # velocity_tolerance [m/s], n_position_iterations, beta (``advance``'s position_beta), slop [m]
@@ -535,8 +536,8 @@ def _corner(R, c, i, corner, hx, hy, hz):
 @njit(cache=True, inline="always")
 def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
     """Velocity-level contact of body i's 8 corners with the terrain; updates v[i], w[i].  boxes: a
-    ``BoxArrays``, contact: a ``ContactParams``, scratch: a ``ContactScratch`` (each a plain tuple in its
-    fields' order); R, Iw: body i's rotation and world inverse inertia.
+    ``BoxArrays``, contact: a ``ContactParams``, scratch: a ``ContactScratch`` (named records);
+    R, Iw: body i's rotation and world inverse inertia.
 
     Contacts are the corners with phi < 0.  Each gets a normal impulse lam_n >= 0
     whose target is a separating normal velocity of -e v_n^- when the approach
@@ -574,9 +575,12 @@ def _solve_contacts(i, boxes, kind, f, contact, scratch, aniso=NO_ANISO):
     kt (8, 6) the 2x2 tangential inverse effective mass K_t (a, b, d) and its
     inverse; lam (8, 3) accumulated impulses.  Returns the contact count.
     """
-    c, _, v, w, mass, _, half_extents, _, _, impulse_cache = boxes
-    mu, restitution, bounce_threshold, n_iterations, tolerance, _, _, _ = contact
-    R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam = scratch
+    c, v, w, mass, half_extents, impulse_cache = (boxes.c, boxes.v, boxes.w, boxes.mass, boxes.half_extents,
+                                                  boxes.impulse_cache)
+    mu, restitution, bounce_threshold = contact.mu, contact.restitution, contact.bounce_threshold
+    n_iterations, tolerance = contact.n_velocity_iterations, contact.velocity_tolerance
+    R, Iw, corner_of, lin, ang = scratch.R, scratch.Iw, scratch.corner_of, scratch.lin, scratch.ang
+    resp, kn, kt, target, lam = scratch.resp, scratch.kn, scratch.kt, scratch.target, scratch.lam
     inv_m = 1.0 / mass[i]
     aniso_on = aniso[ANISO_ON] != 0.0
     hx, hy, hz = half_extents[i, 0], half_extents[i, 1], half_extents[i, 2]
@@ -738,11 +742,12 @@ def _project_positions(i, c, q, mass, inertia_body, half_extents, R, Iw, kind, f
 @njit(cache=True)
 def _step_body(i, boxes, dt, gravity, kind, f, contact, scratch, aniso=NO_ANISO):
     """Advance dynamic body i by one step dt (kick, contact, drift, projection); boxes: a ``BoxArrays``,
-    contact: a ``ContactParams``, scratch: a ``ContactScratch`` (plain tuples in the fields' order);
-    ``aniso``: see ``_solve_contacts``."""
-    c, q, v, w, mass, inertia_body, half_extents, force, torque, _ = boxes
-    _, _, _, _, _, n_position_iterations, beta, slop = contact
-    R, Iw = scratch[0], scratch[1]
+    contact: a ``ContactParams``, scratch: a ``ContactScratch`` (named records); ``aniso``: see
+    ``_solve_contacts``."""
+    c, q, v, w, mass = boxes.c, boxes.q, boxes.v, boxes.w, boxes.mass
+    inertia_body, half_extents, force, torque = boxes.inertia_body, boxes.half_extents, boxes.force, boxes.torque
+    n_position_iterations, beta, slop = contact.n_position_iterations, contact.beta, contact.slop
+    R, Iw = scratch.R, scratch.Iw
     m = mass[i]
     i0, i1, i2 = inertia_body[i, 0], inertia_body[i, 1], inertia_body[i, 2]
     _rotation_matrix(q[i, 0], q[i, 1], q[i, 2], q[i, 3], R)
@@ -799,12 +804,13 @@ def _check_state(c, q, v, w, half_extents, max_speed):
 
 
 @njit(cache=True)
-def advance(boxes, kinematic, n_steps, dt, gravity, terrain_kind, terrain_params, contact, max_speed):
+def advance(box_arrays, kinematic, n_steps, dt, gravity, terrain_kind, terrain_params, contact_params, max_speed):
     """Advance all boxes by up to n_steps steps of dt [s]; stop early when unstable.
 
-    boxes: a ``BoxArrays`` (c, q, v, w, mass, inertia_body, half_extents, force, torque, impulse_cache) and
-    contact a ``ContactParams`` (mu, restitution, bounce_threshold, n_velocity_iterations,
-    velocity_tolerance, n_position_iterations, position_beta, slop), plain tuples in the fields' order.
+    box_arrays: a ``BoxArrays`` (c, q, v, w, mass, inertia_body, half_extents, force, torque, impulse_cache)
+    and contact_params a ``ContactParams`` (mu, restitution, bounce_threshold, n_velocity_iterations,
+    velocity_tolerance, n_position_iterations, beta, slop), as plain tuples (``core.kernel_records``: the
+    call's cost), named here.
     State arrays (module docstring) are OVERWRITTEN in place for dynamic bodies;
     kinematic bodies are left untouched.  force (n, 3) [N] and torque (n, 3) [N m]
     are read, not cleared: they act as constant loads over the whole call.
@@ -826,7 +832,8 @@ def advance(boxes, kinematic, n_steps, dt, gravity, terrain_kind, terrain_params
     including the one that produced the bad state (left in the arrays), so the
     failure time is t0 + n_done dt.
     """
-    c, q, v, w, _, _, half_extents, _, _, _ = boxes
+    boxes, contact = BoxArrays(*box_arrays), ContactParams(*contact_params)
+    c, q, v, w, half_extents = boxes.c, boxes.q, boxes.v, boxes.w, boxes.half_extents
     corner_of = np.empty(N_CORNERS, dtype=np.int64)
     lin = np.empty((N_CORNERS, 3, 3))
     ang = np.empty((N_CORNERS, 3, 3))
@@ -837,7 +844,8 @@ def advance(boxes, kinematic, n_steps, dt, gravity, terrain_kind, terrain_params
     target = np.empty(N_CORNERS)
     R = np.empty((3, 3))
     Iw = np.empty((3, 3))
-    scratch = (R, Iw, corner_of, lin, ang, resp, kn, kt, target, lam)
+    scratch = ContactScratch(R=R, Iw=Iw, corner_of=corner_of, lin=lin, ang=ang, resp=resp, kn=kn, kt=kt,
+                             target=target, lam=lam)
     for step in range(n_steps):
         for i in range(c.shape[0]):
             if kinematic[i]:

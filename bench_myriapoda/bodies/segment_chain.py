@@ -123,12 +123,6 @@ class CouplingScratch:
     lam: np.ndarray
     qtmp: np.ndarray
 
-    def coupling(self) -> tuple:
-        """The arrays but qtmp in the fields' order of ``rigid_chain.Coupling`` (no copy; a plain tuple, which
-        numba types fast at a call), for the rigid segment chain's kernels."""
-        return (self.f_att, self.x_att, self.x_pred, self.residual, self.spine, self.Rb, self.R, self.Iw,
-                        self.corner_of, self.lin, self.ang, self.resp, self.kn, self.kt, self.target, self.lam)
-
     @classmethod
     def new(cls, n_fixed: int, n_rigid: int, n_corners: int) -> "CouplingScratch":
         z = np.zeros

@@ -60,6 +60,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
+from ..core.kernel_records import plain
 from ..core.protocols import LATERAL_GROUND_SIGN
 from ..kinematics.centre_lines import ground_bend
 
@@ -130,9 +131,10 @@ def smooth_along_body(x, passes, tmp):
             x[i] = 0.25 * (tmp[i - 1] + 2.0 * tmp[i] + tmp[i + 1])
 
 
-# ``track_tick``'s arguments, packed.  The tracker holds them as plain tuples, in these fields' order: numba
-# types a plain tuple at a call in C, a namedtuple in Python (measured ~8 us against ~180 us a call, commit
-# fe4ab02), and ``track_tick`` runs 250 times a simulated second.  The namedtuples name the fields for Python.
+# ``track_tick``'s arguments, named records (numba compiles a namedtuple as a struct of its fields, read by name).
+# The tracker holds them as records and hands them over as plain tuples (``core.kernel_records``: ``track_tick``
+# runs 250 times a simulated second, and numba's dispatcher types a namedtuple argument about twice as slowly
+# here), which ``track_tick`` names again.
 # The harmonics' fields default to none (empty arrays), the fundamental's tracker alone.
 _NO_HARMONICS = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0))
 TrackGains = namedtuple("TrackGains", "ramp_s dt_tick strain_per_kappa kp ki umax passes harmonics ki_h lead_cos lead_sin",
@@ -141,23 +143,27 @@ TrackState = namedtuple("TrackState", "a b lateral counts err tmp ah bh", defaul
 
 
 @njit(cache=True, error_model="numpy")
-def track_tick(kappa, s_muscle, waves, t, counting, gains, state):
+def track_tick(kappa, s_muscle, waves, t, counting, track_gains, track_state):
     """One control tick of the tracker (module docstring, steps 2-4).
 
-    kappa: (n_m,) measured ground curvature [1/m]; s_muscle: (n_m,) [m]; waves: (3, 5) wave table whose
-    LATERAL row is the feed-forward; t: the tick's time [s]; counting: count this tick's commands (steady
-    window).  gains = (ramp_s [s], dt_tick [s], strain_per_kappa = g L [strain m] (sign included: the strain of a
-    unit ground curvature), kp [-], ki [1/s] (the fundamental's), umax [-], passes: binomial smoothing passes of
-    the error along the body before the proportional and integral terms (``smooth_along_body``; module docstring,
-    step 3), harmonics: (n_h,) int64 temporal harmonics h >= 2 with their own correction (module docstring,
-    step 3b), ki_h: (n_h,) their gains [1/s], lead_cos, lead_sin: (n_h,) cos and sin of the phase lead [rad]
-    each correction's update is rotated by), in ``TrackGains``' order.  state = (a, b: (n_m,) the fundamental's
+    kappa: (n_m,) measured ground curvature [1/m]; s_muscle: (n_m,) [m]; waves: (3, 5) wave table whose LATERAL row
+    is the feed-forward; t: the tick's time [s]; counting: count this tick's commands (steady window).  track_gains
+    = gains (ramp_s [s], dt_tick [s], strain_per_kappa = g L [strain m] (sign included: the strain of a unit ground
+    curvature), kp [-], ki [1/s] (the fundamental's), umax [-], passes: binomial smoothing passes of the error along
+    the body before the proportional and integral terms (``smooth_along_body``; module docstring, step 3),
+    harmonics: (n_h,) int64 temporal harmonics h >= 2 with their own correction (module docstring, step 3b), ki_h:
+    (n_h,) their gains [1/s], lead_cos, lead_sin: (n_h,) cos and sin of the phase lead [rad] each correction's
+    update is rotated by), a ``TrackGains`` as a plain tuple.  track_state = state (a, b: (n_m,) the fundamental's
     integral state [strain], updated; lateral: (n_m,) OVERWRITTEN with the clipped LATERAL strain; counts: (3,) +=
     (commands, clipped commands, peak |u| so far) when counting; err, tmp: (n_m,) scratch; ah, bh: (n_h, n_m) the
-    harmonics' integral state [strain], updated), in ``TrackState``' order.
+    harmonics' integral state [strain], updated), a ``TrackState`` as a plain tuple.
     """
-    ramp_s, dt_tick, strain_per_kappa, kp, ki, umax, passes, harmonics, ki_h, lead_cos, lead_sin = gains
-    a, b, lateral, counts, err, tmp, ah, bh = state
+    gains, state = TrackGains(*track_gains), TrackState(*track_state)
+    ramp_s, dt_tick, strain_per_kappa, kp, ki = gains.ramp_s, gains.dt_tick, gains.strain_per_kappa, gains.kp, gains.ki
+    umax, passes, harmonics, ki_h = gains.umax, gains.passes, gains.harmonics, gains.ki_h
+    lead_cos, lead_sin = gains.lead_cos, gains.lead_sin
+    a, b, lateral, counts, err, tmp, ah, bh = state.a, state.b, state.lateral, state.counts, state.err, state.tmp, \
+        state.ah, state.bh
     r = 1.0
     if ramp_s > 0.0 and t < ramp_s:
         r = max(t, 0.0) / ramp_s
@@ -272,13 +278,13 @@ def smoothing_response(pitch_m: float, wavelength_m: float, passes: int = SMOOTH
     return float(c ** (2 * passes))
 
 
-def scaled_gains(gains: tuple, scale: float, integral_scale: float | None = None) -> tuple:
+def scaled_gains(gains: TrackGains, scale: float, integral_scale: float | None = None) -> TrackGains:
     """``gains`` (``TrackGains``' order) with the loop's gains, the proportional, the fundamental's integral and the
     harmonics' integral ones, times ``scale`` [-]; 0: the calibrated open loop (the feed-forward alone, once the
     integral state is zero).  integral_scale [-], when given, scales the integral gains instead of ``scale``."""
     g = TrackGains(*gains)
     si = scale if integral_scale is None else integral_scale
-    return tuple(g._replace(kp=g.kp * scale, ki=g.ki * si, ki_h=g.ki_h * si))
+    return g._replace(kp=g.kp * scale, ki=g.ki * si, ki_h=g.ki_h * si)
 
 
 # The guard's thresholds (``LoopGuard``): the loop has lost its margin when the body's bend, smoothed like the error,
@@ -450,7 +456,7 @@ class LoopGuard:
         at this tick (the caller drops the integral state)."""
         amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
             waves[_LATERAL, _PHASE]
-        err, lateral = state[4], state[2]
+        err, lateral = state.err, state.lateral
         r = 1.0 if ramp_s <= 0.0 or t >= ramp_s else max(t, 0.0) / ramp_s
         ref = (r * amp) * np.sin(k * s_muscle - om * t + ph)
         meas = ref - err  # the measured bend, smoothed along the body like the error [strain]
@@ -550,12 +556,13 @@ class ShapeTracker:
         pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
         self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
                                     smoothing_response(pitch_m, wavelength_m))
-        # plain tuples (``TrackGains``, ``TrackState``: why there)
-        self.gains = tuple(TrackGains(self.ramp_s, self.dt_tick, self.strain_per_kappa, self.kp, self.ki, self.umax,
-                                      SMOOTHING_PASSES, self.harmonics, self.ki_h, self.lead_cos, self.lead_sin))
+        self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,
+                                kp=self.kp, ki=self.ki, umax=self.umax, passes=SMOOTHING_PASSES,
+                                harmonics=self.harmonics, ki_h=self.ki_h, lead_cos=self.lead_cos,
+                                lead_sin=self.lead_sin)
         n_h = self.harmonics.shape[0]
-        self.state = tuple(TrackState(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(3), np.zeros(n), np.zeros(n),
-                                      np.zeros((n_h, n)), np.zeros((n_h, n))))
+        self.state = TrackState(a=np.zeros(n), b=np.zeros(n), lateral=np.zeros(n), counts=np.zeros(3),
+                                err=np.zeros(n), tmp=np.zeros(n), ah=np.zeros((n_h, n)), bh=np.zeros((n_h, n)))
         self.s_centre = None
         self._bend = None  # the guard's bend buffer (n - 2,) [strain]
         self.full_gains, self.scale = self.gains, (1.0, 1.0)
@@ -571,15 +578,15 @@ class ShapeTracker:
             n = obs.seg_rot.shape[0]
             self.s_centre = float(obs.seg_half[0, 0]) + self.pitch * np.arange(n, dtype=np.float64)
             self.psi = np.zeros(n)
-        if ramp_s != self.full_gains[0]:  # the caller's ramp wins (the controller's, the gait's by default)
-            self.full_gains = (float(ramp_s),) + self.full_gains[1:]
-            self.gains = (float(ramp_s),) + self.gains[1:]
+        if ramp_s != self.full_gains.ramp_s:  # the caller's ramp wins (the controller's, the gait's by default)
+            self.full_gains = self.full_gains._replace(ramp_s=float(ramp_s))
+            self.gains = self.gains._replace(ramp_s=float(ramp_s))
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
         if self.guard is not None:
             scale = self.guard.gain_scales(t)
             if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
                 self.gains, self.scale = scaled_gains(self.full_gains, *scale), scale
-        track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, self.gains, self.state)
+        track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, plain(self.gains), plain(self.state))
         bend = None
         if self.guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
@@ -588,23 +595,23 @@ class ShapeTracker:
                 self._bend = np.zeros(pos.shape[0] - 2)
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
             bend = self._bend
-        if self.guard is not None and self.guard.watch(t, self.gains[0], waves, self.s_muscle, self.state, self.umax,
-                                                       bend, self.s_centre[1:-1]):
+        if self.guard is not None and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state,
+                                                       self.umax, bend, self.s_centre[1:-1]):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
-            for arr in (self.state[0], self.state[1], self.state[6], self.state[7]):
+            for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
                 arr[...] = 0.0
         row[:, _LATERAL] = self.lateral
 
     @property
     def lateral(self) -> np.ndarray:
         """(n_m,) the last tick's clipped LATERAL strain [-]."""
-        return self.state[2]
+        return self.state.lateral
 
     @property
     def counts(self) -> np.ndarray:
         """(3,) commands counted, clipped commands, peak |u| [-] (steady window)."""
-        return self.state[3]
+        return self.state.counts
 
     def metrics(self) -> dict[str, float]:
         """muscle_saturation_fraction [-]: share of the steady window's (segment, tick) LATERAL commands

@@ -168,7 +168,8 @@ class LegsConfig:
     # the dynamic stance (issue 43, docs/explanation/dynamic-stance.md)
     stance: str = rng("kinematic", choices=("kinematic", "dynamic"),
                       doc="'kinematic': supported segments carried to their targets (the paper, Sec. 3); 'dynamic': "
-                          "STANCE legs push their segments through friction-limited feet (hybrid, massspring)")
+                          "STANCE legs push their segments through friction-limited feet (every legged body; fem: on its "
+                          "blocks' leg-attachment nodes)")
     stance_frequency_hz: float = rng(10.0, gt=0.0, le=1.0e6,
                                      doc="dynamic stance: natural frequency of a segment on its legs' spring-damper "
                                          "toward the Targeter's pose [Hz] (stiffness m (2 pi f)^2)")

@@ -22,8 +22,8 @@ one-line definition; the report, ``scorecard`` and ``scorecard --json`` print th
 
 The error a recommendation ranks by (``Row.error``, ``ERROR_KINDS``): the locomotion error where there is one; for a
 myriapod (whose walking speed is commanded) the ``paper.kinematic-shortcut-<creature>`` check of ``validate``: how
-far the paper's kinematic stance walks from the dynamic stance, in body lengths (``shortcut_error``; the fem body
-has no dynamic stance, so no such error); else the share of FAIL verdicts.
+far the paper's kinematic stance walks from the dynamic stance, in body lengths (``shortcut_error``; on every
+legged body, fem included); else the share of FAIL verdicts.
 
 Every group is a number or a stated reason; where a cell has no data the reason names the command
 that fills it.  Per creature, a one-line recommendation (``recommend``) ranks the bodies by error and
@@ -710,8 +710,7 @@ def recommend(creature: str, rows: list[Row]) -> str:
 def shortcut_error(verdicts, creature: str, body: str) -> float | None:
     """The myriapod's error axis on ``body`` (``SHORTCUT_CHECK``): the measured value [BL] of validate's
     kinematic-shortcut check of ``creature`` on ``body`` in ``verdicts`` (a ``scorecard_verdicts.PairVerdicts``);
-    None where that check has no finite measured value (not run, failed, a creature without the check, the fem
-    body, which has no dynamic stance)."""
+    None where that check has no finite measured value (not run, failed, a creature without the check)."""
     if verdicts is None or not hasattr(verdicts, "validate_row"):
         return None
     row = verdicts.validate_row(SHORTCUT_CHECK.format(creature=creature), body)

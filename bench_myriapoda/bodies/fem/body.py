@@ -27,6 +27,7 @@ import numpy as np
 
 from ...core.errors import InputError
 from ...core.feasibility import tet_mesh_footprint
+from ...core.kernel_records import plain
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
 from ...core.specs import BodyProbes, BodySpec, Footprint, HangingBar
@@ -255,17 +256,27 @@ class BodyFEM(NodeSegments):
         Without ``act`` the muscles are at rest (a passive body)."""
         if act is None:
             act = self._rest_actuation
-        s, so = self.system, self.solver
         self.phys[BK.MUSCLES] = 1.0 if act.muscles_on else 0.0
-        return BK.advance(self.x, self.v,
-                          (s.mass, s.tets, s.Dm_inv, s.vol, s.mu, s.lam, self.tet_seg, self.tet_y, self.tet_z),
-                          act.muscle,
-                          (so.perm, so.sky_first, so.sky_ptr, so.sky_L, so.fp_ptr, so.fp_col, so.fp_val),
-                          (self.node_seg, self.node_seg_b, self.node_w, self.seg_ptr, self.seg_nodes),
-                          self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                          (s.Dm_inv_eff, s.coef, s.q_ws, s.F_work, s.H_work, s.inc_ptr, s.inc_off,
-                           self._force, self._b_work, self._centers, self._spine),
-                          self._act, self.acc)
+        mesh, factor, frames, work = self._packs
+        return BK.advance(self.x, self.v, mesh, act.muscle, factor, frames, self.fric_model, self.fric, self.terr_kind,
+                          self.terr, self.phys, n_steps, work, self._act, self.acc)
+
+    @cached_property
+    def _packs(self) -> tuple:
+        """``body_kernels.advance``'s records (``BodyMesh``, ``BodyFactor``, ``NodeFrames``, ``BodyWork``) as plain
+        tuples (``core.kernel_records``: the call's cost), built once by field name: they refer to the body's own
+        arrays, which are changed in place only."""
+        s, so = self.system, self.solver
+        mesh = BK.BodyMesh(mass=s.mass, tets=s.tets, Dm_inv=s.Dm_inv, vol=s.vol, mu=s.mu, lam=s.lam,
+                           tet_seg=self.tet_seg, tet_y=self.tet_y, tet_z=self.tet_z)
+        factor = BK.BodyFactor(perm=so.perm, sky_first=so.sky_first, sky_ptr=so.sky_ptr, sky_L=so.sky_L,
+                               fp_ptr=so.fp_ptr, fp_col=so.fp_col, fp_val=so.fp_val)
+        frames = BK.NodeFrames(node_seg=self.node_seg, node_seg_b=self.node_seg_b, node_w=self.node_w,
+                               seg_ptr=self.seg_ptr, seg_nodes=self.seg_nodes)
+        work = BK.BodyWork(Dm_inv_eff=s.Dm_inv_eff, coef=s.coef, q_ws=s.q_ws, F_work=s.F_work, H_work=s.H_work,
+                           inc_ptr=s.inc_ptr, inc_off=s.inc_off, force=self._force, b_work=self._b_work,
+                           centers=self._centers, spine=self._spine)
+        return plain(mesh), plain(factor), plain(frames), plain(work)
 
     def compile(self) -> None:
         x, v, acc = self.x.copy(), self.v.copy(), self.acc.copy()
@@ -368,9 +379,6 @@ def check_buildable(case, source: str) -> None:
         return
     check_chain_segments(case, source, "a legged fem chain")
     check_legged_gait(case, source, "a legged fem chain")
-    if case.legs.stance == "dynamic":  # docs/explanation/dynamic-stance.md: hybrid and massspring only
-        raise InputError(source, "legs.stance", "'dynamic' is not implemented on the fem body (hybrid and "
-                                                "massspring have it); use 'kinematic'")
     if not body.block_density_kg_m3 > 0:
         ll = body.link_length_m if body.link_length_m > 0 else 0.5 * cre.segment_length_m
         rho = body.density_kg_m3 if body.density_kg_m3 > 0 else 1.0
@@ -407,7 +415,8 @@ CHECKS = {"analytic.worm-eps-lambda": True, "analytic.hanging-bar": True, "analy
           "miller.image1-worm-book": False, "miller.image2-snake-coils": False, "miller.image3-sidewinder": False,
           "miller.image4-caterpillar-arch": False, "miller.image4-caterpillar-up": False,
           "miller.image4-caterpillar-down": False, "paper.fig10a-hang": False, "paper.fig10d-walk": False,
-          "paper.wave-centipede": False}
+          "paper.wave-centipede": False, "paper.kinematic-shortcut-centipede": True,
+          "paper.kinematic-shortcut-millipede": True}
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.

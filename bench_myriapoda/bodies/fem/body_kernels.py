@@ -85,9 +85,8 @@ def segment_spines(x, seg_ptr, seg_nodes, centers, spine):
         spine_between(centers, i - 1 if i > 0 else 0, i + 1 if i < n_seg - 1 else n_seg - 1, spine, i)
 
 
-# ``advance``'s arguments, packed (numba compiles a namedtuple as a struct of its fields).  ``FEMBody`` hands them
-# over as plain tuples in these fields' order: numba types a plain tuple of arrays in its C dispatcher, a
-# namedtuple in Python (``bodies.rigid_chain``).  The fields are described in ``advance``.
+# ``advance``'s arguments, named records (numba compiles a namedtuple as a struct of its fields, read by name;
+# ``bodies.rigid_chain``'s note on the call's cost).  The fields are described in ``advance``.
 BodyMesh = namedtuple("BodyMesh", "mass tets Dm_inv vol mu lam tet_seg tet_y tet_z")
 BodyFactor = namedtuple("BodyFactor", "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val")
 NodeFrames = namedtuple("NodeFrames", "node_seg node_seg_b node_w seg_ptr seg_nodes")
@@ -95,13 +94,15 @@ BodyWork = namedtuple("BodyWork", "Dm_inv_eff coef q_ws F_work H_work inc_ptr in
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, mesh, act_buf, factor, frames, fric_model, fric, terr_kind, terr, phys, n_steps, work, act, acc):
+def advance(x, v, body_mesh, act_buf, body_factor, node_frames, fric_model, fric, terr_kind, terr, phys, n_steps,
+            body_work, act, acc):
     """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
 
     mesh = ``BodyMesh`` (mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z), factor = ``BodyFactor`` (perm,
     sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val), frames = ``NodeFrames`` (node_seg, node_seg_b, node_w,
     seg_ptr, seg_nodes), work = ``BodyWork`` (Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force,
-    b_work, centers, spine): tuples in these fields' order.
+    b_work, centers, spine): the records as plain tuples (``core.kernel_records``: the call's cost), named
+    here.
 
     act_buf (n_rows, n_seg, 3): the muscle strains of step k in row k (rows past the last repeat
     it); read only when phys[MUSCLES] is set (the actuation drives muscles at all).
@@ -115,10 +116,17 @@ def advance(x, v, mesh, act_buf, factor, frames, fric_model, fric, terr_kind, te
     inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets.  Work arrays are
     overwritten; ``acc`` accumulates statistics (``step_status``).
     """
-    mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z = mesh
-    perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val = factor
-    node_seg, node_seg_b, node_w, seg_ptr, seg_nodes = frames
-    Dm_inv_eff, coef, q_ws, F_work, H_work, inc_ptr, inc_off, force, b_work, centers, spine = work
+    mesh, factor, frames = BodyMesh(*body_mesh), BodyFactor(*body_factor), NodeFrames(*node_frames)
+    work = BodyWork(*body_work)
+    mass, tets, Dm_inv, vol, mu, lam = mesh.mass, mesh.tets, mesh.Dm_inv, mesh.vol, mesh.mu, mesh.lam
+    tet_seg, tet_y, tet_z = mesh.tet_seg, mesh.tet_y, mesh.tet_z
+    perm, sky_first, sky_ptr, sky_L = factor.perm, factor.sky_first, factor.sky_ptr, factor.sky_L
+    fp_ptr, fp_col, fp_val = factor.fp_ptr, factor.fp_col, factor.fp_val
+    node_seg, node_seg_b, node_w, seg_ptr, seg_nodes = (frames.node_seg, frames.node_seg_b, frames.node_w,
+                                                        frames.seg_ptr, frames.seg_nodes)
+    Dm_inv_eff, coef, q_ws, F_work, H_work = work.Dm_inv_eff, work.coef, work.q_ws, work.F_work, work.H_work
+    inc_ptr, inc_off, force, b_work = work.inc_ptr, work.inc_off, work.force, work.b_work
+    centers, spine = work.centers, work.spine
     g = phys[GRAVITY]
     dt = phys[DT]
     r_n = phys[R_N]

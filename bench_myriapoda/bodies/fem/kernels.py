@@ -1533,9 +1533,8 @@ def _maybe_unstable(x, v, vmax2):
     return n_fast > 0 or not math.isfinite(tot)
 
 
-# ``advance``'s arguments, packed (numba compiles a namedtuple as a struct of its fields).  ``FEMSystem`` hands
-# them over as plain tuples in these fields' order: numba types a plain tuple of arrays in its C dispatcher, a
-# namedtuple in Python (``bodies.rigid_chain``).  The fields are described in ``advance``.
+# ``advance``'s arguments, named records (numba compiles a namedtuple as a struct of its fields, read by name;
+# ``bodies.rigid_chain``'s note on the call's cost).  The fields are described in ``advance``.
 FEMMesh = namedtuple("FEMMesh", "tets inc_ptr inc_off coef mass")
 FEMSolve = namedtuple("FEMSolve", "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val fixed pf_ptr pf_col pf_val")
 FEMGround = namedtuple("FEMGround", "contact terrain_kind terrain_params mu_friction v_limit")
@@ -1543,7 +1542,7 @@ FEMWork = namedtuple("FEMWork", "q_ws f_fixed f_work b_work F_work H_work")
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, mesh, gravity, f_ext, dt, n_steps, solve, ground, work):
+def advance(x, v, fem_mesh, gravity, f_ext, dt, n_steps, fem_solve, fem_ground, fem_work):
     """Run up to n_steps semi-implicit steps (eqs. 14-15) in one call.
 
     Per step: f = f_E(x^n) + M g + f_ext on the free nodes; solve
@@ -1556,7 +1555,7 @@ def advance(x, v, mesh, gravity, f_ext, dt, n_steps, solve, ground, work):
     mesh = ``FEMMesh`` (tets, inc_ptr, inc_off, coef, mass), solve = ``FEMSolve`` (perm, sky_first, sky_ptr,
     sky_L, fp_ptr, fp_col, fp_val, fixed, pf_ptr, pf_col, pf_val), ground = ``FEMGround`` (contact,
     terrain_kind, terrain_params, mu_friction, v_limit), work = ``FEMWork`` (q_ws, f_fixed, f_work, b_work,
-    F_work, H_work): tuples in these fields' order.
+    F_work, H_work): the records as plain tuples (``core.kernel_records``: the call's cost), named here.
     Inputs: x, v (n_nodes, 3) [m], [m/s], OVERWRITTEN with the new state; tets,
     inc_ptr, inc_off (``node_incidence``), coef, q_ws as in
     ``elastic_forces_gathered``;
@@ -1575,10 +1574,15 @@ def advance(x, v, mesh, gravity, f_ext, dt, n_steps, solve, ground, work):
     speed; on failure x, v hold the state of the failed step and f_fixed is
     undefined.
     """
-    tets, inc_ptr, inc_off, coef, mass = mesh
-    perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val, fixed, pf_ptr, pf_col, pf_val = solve
-    contact, terrain_kind, terrain_params, mu_friction, v_limit = ground
-    q_ws, f_fixed, f_work, b_work, F_work, H_work = work
+    mesh, solve, ground, work = FEMMesh(*fem_mesh), FEMSolve(*fem_solve), FEMGround(*fem_ground), FEMWork(*fem_work)
+    tets, inc_ptr, inc_off, coef, mass = mesh.tets, mesh.inc_ptr, mesh.inc_off, mesh.coef, mesh.mass
+    perm, sky_first, sky_ptr, sky_L = solve.perm, solve.sky_first, solve.sky_ptr, solve.sky_L
+    fp_ptr, fp_col, fp_val, fixed = solve.fp_ptr, solve.fp_col, solve.fp_val, solve.fixed
+    pf_ptr, pf_col, pf_val = solve.pf_ptr, solve.pf_col, solve.pf_val
+    contact, terrain_kind, terrain_params = ground.contact, ground.terrain_kind, ground.terrain_params
+    mu_friction, v_limit = ground.mu_friction, ground.v_limit
+    q_ws, f_fixed, f_work, b_work = work.q_ws, work.f_fixed, work.f_work, work.b_work
+    F_work, H_work = work.F_work, work.H_work
     n_nodes = x.shape[0]
     n_fixed = fixed.shape[0]
     vmax2 = v_limit * v_limit

@@ -50,6 +50,10 @@ block follows elastically; the segment's pose is its nodes' best fit, so a
 supported segment tracks its target within a tracking error that the tests
 report (not exactly, unlike the rigid bodies).
 
+In the dynamic stance (``legs.stance = "dynamic"``) the penalty holds a held block only: the STANCE legs push
+every other supported block through friction-limited feet, their impulse given to its leg-attachment nodes
+(``pushed_blocks``; ``push_support``, and the fused path's ``carry_feet``).
+
 ``segment_poses`` returns each block's best-fit rigid pose: the centroid of
 its nodes and the polar rotation of sum (x_i - c)(X_i - X_c)^T (rest shape X).
 The kernel (``advance_chain``) runs n steps per call: elastic forces (eqs.
@@ -70,7 +74,8 @@ from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
-from ..legged_chunk import copy_frames, copy_rows, register
+from ..legged_chunk import carry, copy_frames, copy_rows, register
+from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_points
 from ..segment_chain import LeggedSegments
@@ -80,10 +85,27 @@ from .kernels import elastic_forces_gathered, semi_implicit_velocity
 from .element_quality import ElementQuality
 from .mesh import box_grid, segment_cells, signed_volumes
 from .system import FEMSystem
+from .pushed_blocks import block_inertia, push_blocks, pushed_blocks
+from ..dynamic_stance import stance_arrays, stance_params, stance_statistics
 
 # Scalar parameters (``phys``).
 DT, R_N, R_TAN, MAX_SPEED, MAX_PEN, K_SUPPORT = range(6)
 N_PHYS = 6
+
+# ``advance_chain``'s records (namedtuples: numba compiles each as a struct of its fields, read by name).
+# The chain's arrays: x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr, inc_off, coef,
+# q_ws (UPDATED), F_work, H_work as ``fem.kernels.elastic_forces_gathered``; perm, sky_first, sky_ptr, sky_L, fp_ptr,
+# fp_col, fp_val the factor of (M + dt D) with no fixed node (``FEMSystem.solver``); block_nodes (n_blocks, k) node
+# ids of each block; node_spine (n_nodes,) the block whose spine a node's friction uses; att_nodes (n_att,)
+# leg-attachment node ids, att_block (n_att,) their block, att_target (n_att, 3) [m] their targets at the end of
+# the step (supported blocks only); support (n_blocks,) bool; scratch f_work (n_nodes, 3), b_work (n_nodes, 3),
+# cent, spine (n_blocks, 3).
+BlockChain = namedtuple("BlockChain", "x v mass tets inc_ptr inc_off coef q_ws F_work H_work perm sky_first sky_ptr "
+                                      "sky_L fp_ptr fp_col fp_val block_nodes node_spine att_nodes att_block "
+                                      "att_target support f_work b_work cent spine")
+# The world as the chain sees it: gravity (3,) [m/s^2]; terr_kind, terr (``terrain_kernels``); fric_model, fric
+# (``friction_kernels``); phys (N_PHYS,) the scalars above.
+BlockChainWorld = namedtuple("BlockChainWorld", "gravity terr_kind terr fric_model fric phys")
 
 
 def chain_mesh(n_blocks, block_length, link_length, height, width, cells, tets_per_cell=6):
@@ -153,13 +175,11 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
 
 
 @njit(cache=True, error_model="numpy")
-def advance_chain(B, W, acc, n_steps):
+def advance_chain(chain, world, acc, n_steps):
     """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
 
-    B = (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work, perm, sky_first, sky_ptr, sky_L,
-    fp_ptr, fp_col, fp_val, block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work,
-    cent, spine), W = (gravity, terr_kind, terr, fric_model, fric, phys): plain tuples (numba types them fast at a
-    call, ``rigid_chain``'s note), named here.
+    chain: a ``BlockChain`` B, world: a ``BlockChainWorld`` W (the fields above them), as plain tuples
+    (``core.kernel_records``: the call's cost), named here.
     B.x, B.v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
     inc_off, coef, q_ws (UPDATED), F_work, H_work as
     ``fem.kernels.elastic_forces_gathered``;
@@ -174,10 +194,13 @@ def advance_chain(B, W, acc, n_steps):
     (n_nodes, 3), cent, spine (n_blocks, 3).  acc (S.N_ACC,) ACCUMULATES the
     shared statistics (contact fraction sum, steps, deepest penetration).
     """
-    (x, v, mass, tets, inc_ptr, inc_off, coef, q_ws, F_work, H_work,
-     perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val,
-     block_nodes, node_spine, att_nodes, att_block, att_target, support, f_work, b_work, cent, spine) = B
-    gravity, terr_kind, terr, fric_model, fric, phys = W
+    B, W = BlockChain(*chain), BlockChainWorld(*world)
+    x, v, mass, tets, inc_ptr, inc_off, coef, q_ws = B.x, B.v, B.mass, B.tets, B.inc_ptr, B.inc_off, B.coef, B.q_ws
+    F_work, H_work, perm, sky_first, sky_ptr, sky_L = B.F_work, B.H_work, B.perm, B.sky_first, B.sky_ptr, B.sky_L
+    fp_ptr, fp_col, fp_val, block_nodes, node_spine = B.fp_ptr, B.fp_col, B.fp_val, B.block_nodes, B.node_spine
+    att_nodes, att_block, att_target, support = B.att_nodes, B.att_block, B.att_target, B.support
+    f_work, b_work, cent, spine = B.f_work, B.b_work, B.cent, B.spine
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
     n_nodes = x.shape[0]
     n_blocks = block_nodes.shape[0]
     dt = phys[DT]
@@ -275,30 +298,35 @@ def carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_t
             att_target[e, i] = c_T[b, i] + ((R_T[b, i, 0] * r0 + R_T[b, i, 2] * r2) + R_T[b, i, 1] * r1)
 
 
-# the fused legged walk's pack (``legged_chunk``): blocks = (x, block_nodes, rest_offsets, att_nodes, att_block,
-# held, att_target, support, and the poses' scratch c (n, 3), A, R (n, 3, 3)); chain ``advance_chain``'s
-# arguments without n_steps
-BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain")
+# the fused legged walk's pack (``legged_chunk``): blocks a ``Blocks``, chain ``advance_chain``'s arguments without
+# n_steps (a ``BlockChain``, a ``BlockChainWorld``, acc), each as a plain tuple (``core.kernel_records``), named
+# where read; push the dynamic stance's ``pushed_blocks.PushedBlocks``
+BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain push")
+# the blocks as the legs carry them: x (n_nodes, 3) [m]; block_nodes (n, k); rest_offsets (n, k, 3) [m]; att_nodes,
+# att_block (n_att,); held (n,) bool; att_target (n_att, 3) [m] and support (n,) bool (``carry_blocks`` writes them);
+# the poses' scratch c (n, 3) [m], A, R (n, 3, 3)
+Blocks = namedtuple("Blocks", "x block_nodes rest_offsets att_nodes att_block held att_target support c A R")
 
 
 def _block_poses(P):
     """``legged_chunk.poses``: the blocks' best-fit poses (``block_poses``), as ``segment_poses``."""
-    x, block_nodes, rest_offsets, _, _, _, _, _, c, A, R = P.blocks
-    block_poses(x, block_nodes, rest_offsets, c, A, R)
-    return c, R
+    B = Blocks(*P.blocks)
+    block_poses(B.x, B.block_nodes, B.rest_offsets, B.c, B.A, B.R)
+    return B.c, B.R
 
 
 def _carry_blocks(P, kinematic, c_T, R_T):
     """``legged_chunk.carry`` after ``_block_poses``: ``set_support`` on the poses it left (the nodes have not
     moved since)."""
-    x, _, _, att_nodes, att_block, held, att_target, support, c, _, R = P.blocks
-    carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_target, support)
+    B = Blocks(*P.blocks)
+    carry_blocks(B.x, B.att_nodes, B.att_block, B.held, kinematic, B.c, B.R, c_T, R_T, B.att_target, B.support)
 
 
 def _sample_blocks(P, c_out, R_out, links_out):
     """``legged_chunk.sample``: the nodes do not move before the step, so the poses are the sensed ones; a
     link's centre is the mean of its two blocks' centroids (``segment_centers``)."""
-    c, R = P.blocks[8], P.blocks[10]
+    B = Blocks(*P.blocks)
+    c, R = B.c, B.R
     copy_rows(c, c_out)
     copy_frames(R, R_out)
     for li in range(c.shape[0] - 1):
@@ -306,12 +334,24 @@ def _sample_blocks(P, c_out, R_out, links_out):
             links_out[li, i] = 0.5 * (c[li, i] + c[li + 1, i])
 
 
+def _carry_blocks_feet(P, kinematic, c_T, R_T, states, tips):
+    """``legged_chunk.carry_feet`` after ``_block_poses``: in dynamic stance the legs push the blocks
+    (``pushed_blocks.push_blocks``, on the poses ``_block_poses`` left; returns True: feet may have slid), else
+    ``_carry_blocks`` (False)."""
+    if P.push.stance.params.dynamic != 0.0:
+        B = Blocks(*P.blocks)
+        push_blocks(P.push, B.c, B.R, kinematic, c_T, R_T, states, tips)
+        return True
+    carry(P, kinematic, c_T, R_T)   # (the registered ``_carry_blocks``: a plain function compiles only so)
+    return False
+
+
 def _block_chain_step(P):
     """``legged_chunk.step``: one step."""
     return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
 
 
-register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step)
+register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step, _carry_blocks_feet)
 
 
 class BodyFEMChain(LeggedSegments):
@@ -389,42 +429,93 @@ class BodyFEMChain(LeggedSegments):
         self._spine = np.zeros((n, 3))
         self.acc = np.zeros(S.N_ACC)
         self.quality = ElementQuality(len(tets))
+        self.total_mass = float(fem.mass.sum())
+        self._setup_stance(case)
+
+    def _setup_stance(self, case) -> None:
+        """The dynamic stance (``legs.stance``, ``pushed_blocks``): ``self.dynamic_stance``, ``self.stance``
+        (``dynamic_stance.StanceArrays`` of the blocks: lumped masses, rest inertia) and ``self._push``."""
+        params = stance_params(case.legs, case.friction)
+        self.dynamic_stance = params.dynamic != 0.0
+        node_mass = self.fem.mass[self.block_nodes]
+        n = self.n_blocks
+        self.stance = stance_arrays(params, node_mass.sum(axis=1), block_inertia(self.rest_offsets, node_mass),
+                                    self.gravity, np.zeros((n, 3)), np.zeros((n, 3)), self.terr_kind, self.terr)
+        self._push = pushed_blocks(self.x, self.v, self.fem.mass, self.block_nodes, self.att_nodes, self.att_block,
+                                   self._f_work, self.support, self._held, self.stance, self.dt)
 
     # ------------------------------------------------------------------ stepping
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
-        return advance_chain(*self._chain_args(), self.acc, int(n_steps))
+        return advance_chain(*self._chain_args, self.acc, int(n_steps))
 
+    @cached_property
     def _chain_args(self) -> tuple:
-        """``advance_chain``'s packs (the chain's arrays, the world)."""
+        """``advance_chain``'s records (``BlockChain``: the chain's arrays, ``BlockChainWorld``) as plain tuples
+        (``core.kernel_records``: the call's cost), built once by field name: they refer to the body's own arrays,
+        which are changed in place only."""
         f, s = self.fem, self.solver
-        chain = (self.x, self.v, f.mass, f.tets, f.inc_ptr, f.inc_off, f.coef, f.q_ws, f.F_work,
-                           f.H_work, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-                           self.block_nodes, self.node_spine, self.att_nodes, self.att_block, self.att_target,
-                           self.support, self._f_work, self._b_work, self._cent, self._spine)
-        return chain, (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys)
+        chain = BlockChain(x=self.x, v=self.v, mass=f.mass, tets=f.tets, inc_ptr=f.inc_ptr, inc_off=f.inc_off,
+                           coef=f.coef, q_ws=f.q_ws, F_work=f.F_work, H_work=f.H_work, perm=s.perm,
+                           sky_first=s.sky_first, sky_ptr=s.sky_ptr, sky_L=s.sky_L, fp_ptr=s.fp_ptr, fp_col=s.fp_col,
+                           fp_val=s.fp_val, block_nodes=self.block_nodes, node_spine=self.node_spine,
+                           att_nodes=self.att_nodes, att_block=self.att_block, att_target=self.att_target,
+                           support=self.support, f_work=self._f_work, b_work=self._b_work, cent=self._cent,
+                           spine=self._spine)
+        return plain(chain), plain(BlockChainWorld(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr,
+                                                   fric_model=self.fric_model, fric=self.fric, phys=self.phys))
 
     def legged_pack(self) -> "BlockChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the blocks and the step's arguments."""
         n = self.n_blocks
-        blocks = (self.x, self.block_nodes, self.rest_offsets, self.att_nodes, self.att_block, self._held,
-                  self.att_target, self.support, np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3, 3)))
-        return BlockChainLegs(blocks, self._chain_args() + (self.acc,))
+        blocks = Blocks(x=self.x, block_nodes=self.block_nodes, rest_offsets=self.rest_offsets,
+                        att_nodes=self.att_nodes, att_block=self.att_block, held=self._held,
+                        att_target=self.att_target, support=self.support, c=np.zeros((n, 3)), A=np.zeros((n, 3, 3)),
+                        R=np.zeros((n, 3, 3)))
+        return BlockChainLegs(plain(blocks), self._chain_args + (self.acc,), self._push)
+
+    def _state_arrays(self):
+        return (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc, self._f_work, self.stance.acc)
 
     def _state(self):
-        return [a.copy() for a in (self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc)]
+        return [a.copy() for a in self._state_arrays()]
 
     def _restore(self, saved) -> None:
-        for dst, src in zip((self.x, self.v, self.fem.q_ws, self.support, self.att_target, self.acc), saved):
+        for dst, src in zip(self._state_arrays(), saved):
             dst[...] = src
 
     def compile(self) -> None:
         saved = self._state()
         self.advance(0.0, 1)
         self.observe(0.0)
+        if self.dynamic_stance:
+            n = self.n_blocks
+            self.push_support(np.zeros(n, bool), *self.segment_poses(), np.zeros(2 * n, np.int64), np.zeros((2 * n, 3)))
         self._restore(saved)
         self.quality.reset()
+
+    # ------------------------------------------------------------------ the dynamic stance
+    def push_support(self, supported, c_T, R_T, states, tips) -> None:
+        """The dynamic stance's support this step (``pushed_blocks.push_blocks``): supported (n,) bool, the targets
+        c_T (n, 3) [m] and R_T (n, 3, 3), the leg states (n_legs,) and the feet tips (n_legs, 3) [m], UPDATED where
+        a foot slides."""
+        c, R = self.segment_poses()
+        push_blocks(self._push, c, R, np.ascontiguousarray(supported, dtype=np.bool_),
+                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                    states, tips)
+
+    def stance_statistics(self) -> dict[str, float]:
+        """The dynamic stance's statistics of the run so far (``dynamic_stance.stance_statistics``; empty in
+        kinematic stance)."""
+        if not self.dynamic_stance:
+            return {}
+        return stance_statistics(self.stance.acc)
+
+    def centre_of_mass(self) -> np.ndarray:
+        """(3,) [m]: the nodes' mass centre."""
+        m = self.fem.mass
+        return m @ self.x / self.total_mass
 
     @staticmethod
     def status_text(code: int) -> str:
@@ -507,7 +598,8 @@ class BodyFEMChain(LeggedSegments):
         return kinetic, self.fem.elastic_energy(), float(-self.gravity[1] * (m @ self.x[:, 1]))
 
     def extra_metrics(self) -> dict[str, float]:
-        return {"min_J": self.quality.min_J, "inverted_elements_max": float(self.quality.inverted_max)}
+        return {"min_J": self.quality.min_J, "inverted_elements_max": float(self.quality.inverted_max),
+                **self.stance_statistics()}
 
     def contact_fraction_mean(self) -> float:
         return float(self.acc[S.ACC_CONTACT_SUM] / max(self.acc[S.ACC_STEPS], 1.0))

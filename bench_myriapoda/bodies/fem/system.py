@@ -12,6 +12,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
+from ...core.kernel_records import plain
 from . import kernels as K
 from .mesh import lame_parameters, signed_volumes
 
@@ -238,13 +239,16 @@ class FEMSystem:
             contact, kind, params = False, 0, np.zeros(8)
         else:
             contact, kind, params = True, int(terrain[0]), np.ascontiguousarray(terrain[1], dtype=np.float64)
-        steps, status = K.advance(
-            self.x, self.v, (self.tets, self.inc_ptr, self.inc_off, self.coef, self.mass),
-            g, fe, float(dt), int(n_steps),
-            (s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col, s.fp_val,
-             s.fixed, s.pf_ptr, s.pf_col, s.pf_val),
-            (contact, kind, params, float(friction), float(v_limit)),
-            (self.q_ws, self._f_fixed, self._f_work, self._b_work, self.F_work, self.H_work))
+        mesh = K.FEMMesh(tets=self.tets, inc_ptr=self.inc_ptr, inc_off=self.inc_off, coef=self.coef, mass=self.mass)
+        solve = K.FEMSolve(perm=s.perm, sky_first=s.sky_first, sky_ptr=s.sky_ptr, sky_L=s.sky_L, fp_ptr=s.fp_ptr,
+                           fp_col=s.fp_col, fp_val=s.fp_val, fixed=s.fixed, pf_ptr=s.pf_ptr, pf_col=s.pf_col,
+                           pf_val=s.pf_val)
+        ground = K.FEMGround(contact=contact, terrain_kind=kind, terrain_params=params, mu_friction=float(friction),
+                             v_limit=float(v_limit))
+        work = K.FEMWork(q_ws=self.q_ws, f_fixed=self._f_fixed, f_work=self._f_work, b_work=self._b_work,
+                         F_work=self.F_work, H_work=self.H_work)
+        steps, status = K.advance(self.x, self.v, plain(mesh), g, fe, float(dt), int(n_steps), plain(solve),
+                                  plain(ground), plain(work))
         return AdvanceResult(int(steps), int(status))
 
     def elastic_forces(self):

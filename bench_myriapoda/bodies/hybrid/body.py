@@ -75,6 +75,7 @@ from functools import cached_property
 import numpy as np
 
 from ...core.errors import InputError
+from ...core.kernel_records import plain
 from ...core.feasibility import tet_mesh_footprint
 from ...core.protocols import LEGS, MUSCLES, SEGMENTS, Actuation, Observation
 from ...core.schema import rng
@@ -89,7 +90,7 @@ from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
 from ..placement import place_box_chain
-from ..rigid_chain import chain_phys
+from ..rigid_chain import boxes_of, chain_phys, coupling_of
 from ..rigid import ContactSettings, RigidBoxes
 from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
 from ..segment_chain import (CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes, check_chain_segments,
@@ -263,10 +264,11 @@ class BodyHybrid(PushedBoxes, SupportedSegments):
         self.n_muscle_segments = n_links
         self.muscle_s = np.arange(n_links) * lay.pitch + lay.rigid_length + 0.5 * lay.link_length
         cen = mesh.nodes[mesh.tets].mean(axis=1)
-        self._muscle_static = (fem.Dm_inv.copy(), fem.vol, fem.mu, fem.lam,
-                               np.ascontiguousarray(mesh.node_link[mesh.tets[:, 0]]),
-                               np.ascontiguousarray(cen[:, 1] / (0.5 * lay.link_height)),
-                               np.ascontiguousarray(cen[:, 2] / (0.5 * lay.link_width)))
+        # ``kernels.ActiveLinks`` but its act_buf (each call's muscle buffer, ``_chain_args``)
+        self._muscle_static = dict(Dm_inv_rest=fem.Dm_inv.copy(), vol=fem.vol, mu=fem.mu, lam=fem.lam,
+                                   tet_link=np.ascontiguousarray(mesh.node_link[mesh.tets[:, 0]]),
+                                   tet_y=np.ascontiguousarray(cen[:, 1] / (0.5 * lay.link_height)),
+                                   tet_z=np.ascontiguousarray(cen[:, 2] / (0.5 * lay.link_width)))
         self.free = np.sort(fem.free_nodes)
         self.att_body = np.ascontiguousarray(mesh.att_body[self.fixed])
         self.node_link = mesh.node_link
@@ -357,15 +359,28 @@ class BodyHybrid(PushedBoxes, SupportedSegments):
         return K.advance(*self._chain_args(buf), self.acc, int(n_steps))
 
     def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
-        """``hybrid.kernels.advance``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch),
-        with muscle_buf (rows, n_links, 3) the links' active strain."""
-        fem, s, rb, sc = self.fem, self.solver, self.rigid, self.scratch
-        links = (fem.x, fem.v, len(s.perm), fem.tets, fem.Dm_inv_eff, fem.coef,
-                           self._muscle_static + (muscle_buf,), fem.mass, fem.q_ws, fem.F_work, fem.H_work,
-                           fem.inc_ptr, fem.inc_off, s.perm, s.sky_first, s.sky_ptr, s.sky_L, s.fp_ptr, s.fp_col,
-                           s.fp_val, s.pf_ptr, s.pf_col, s.pf_val, self.node_link, self._f_work, self._b_work)
-        return (links, (s.fixed, self.att_body, self.att_local), rb.pack(),
-                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), sc.coupling())
+        """``hybrid.kernels.advance``'s records (``kernels.FEMLinks``, ``rigid_chain``'s ``Attachment``, ``Boxes``,
+        ``World``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), with muscle_buf (rows,
+        n_links, 3) the links' active strain: ``_packs`` with this call's muscle buffer put in."""
+        links, att, boxes, world, coupling = self._packs
+        muscle = links[_MUSCLE][:-1] + (muscle_buf,)  # ``ActiveLinks``' last field, act_buf
+        return links[:_MUSCLE] + (muscle,) + links[_MUSCLE + 1:], att, boxes, world, coupling
+
+    @cached_property
+    def _packs(self) -> tuple:
+        """``_chain_args``' plain tuples, built once by field name: they refer to the body's own arrays, which are
+        changed in place only (building them at every call cost about 6 us of the Python path's step)."""
+        fem, s = self.fem, self.solver
+        links = K.FEMLinks(x=fem.x, v=fem.v, n_free=len(s.perm), tets=fem.tets, Dm_inv=fem.Dm_inv_eff, coef=fem.coef,
+                           muscle=plain(K.ActiveLinks(act_buf=self._no_muscle, **self._muscle_static)), mass=fem.mass,
+                           q_ws=fem.q_ws, F_work=fem.F_work, H_work=fem.H_work, inc_ptr=fem.inc_ptr,
+                           inc_off=fem.inc_off, perm=s.perm, sky_first=s.sky_first, sky_ptr=s.sky_ptr, sky_L=s.sky_L,
+                           fp_ptr=s.fp_ptr, fp_col=s.fp_col, fp_val=s.fp_val, pf_ptr=s.pf_ptr, pf_col=s.pf_col,
+                           pf_val=s.pf_val, node_link=self.node_link, f_work=self._f_work, b_work=self._b_work)
+        world = K.World(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr, fric_model=self.fric_model,
+                        fric=self.fric, phys=self.phys)
+        return (plain(links), plain(K.Attachment(fixed=s.fixed, att_body=self.att_body, att_local=self.att_local)),
+                plain(boxes_of(self.rigid)), plain(world), plain(coupling_of(self.scratch)))
 
     def legged_pack(self) -> "HybridLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
@@ -610,6 +625,10 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
           "paper.kinematic-shortcut-centipede": True, "paper.kinematic-shortcut-millipede": True,
           "throughput.sec6-headline": True}
 
+# where ``kernels.FEMLinks`` holds the muscles, and their buffer last in ``kernels.ActiveLinks`` (``_chain_args``)
+_MUSCLE = K.FEMLinks._fields.index("muscle")
+assert K.ActiveLinks._fields[-1] == "act_buf"
+
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
 # ``hybrid.kernels.advance``'s arguments without n_steps
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
@@ -622,8 +641,9 @@ def _hybrid_legged_step(P):
     the chain and before the chunk, one more optimisation and machine code of the whole chain on a cold
     start's longest sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles")."""
     links, att, boxes, world, coupling, acc = P.chain
+    # np.int64: a literal 1 compiles a second signature
     return K.advance_chain(K.FEMLinks(*links), K.Attachment(*att), K.Boxes(*boxes), K.World(*world),
-                           K.Coupling(*coupling), acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
+                           K.Coupling(*coupling), acc, np.int64(1))
 
 
 register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step, carry_boxes_feet)

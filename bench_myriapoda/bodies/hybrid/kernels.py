@@ -77,28 +77,32 @@ from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, ACC_SLOW_TET
                            link_spines, place_attached_nodes, place_on_box, register_link, rigid_segments_step)
 
 
-# The FEM link element of the rigid segment chain (``rigid_chain.link_step``): x, v (n_nodes, 3) [m], [m/s]
-# UPDATED (attached rows are rewritten from the boxes every step); n_free the free nodes; tets, Dm_inv, coef, q_ws
-# (UPDATED), F_work, H_work as in ``fem.kernels.elastic_forces``; muscle: the active links (paper Sec. 7's "actively
-# contractile deformable segments"), a tuple (Dm_inv_rest (n_tets, 3, 3), vol, mu, lam (n_tets,), tet_link, tet_y,
-# tet_z (n_tets,), act_buf (n_rows, n_links, 3)): when phys[MUSCLES_ON] is set, step k rescales the links' rest
-# shapes by row k of act_buf times phys[MUSCLE_GAIN] (``fem.body_kernels.active_coefficients``, which OVERWRITES
-# Dm_inv and coef); mass (n_nodes,) [kg] lumped; inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets, for
-# ``gather_node_force``; perm, sky_*, fp_* as in ``semi_implicit_velocity`` for the mask of attached nodes
-# (``FEMSystem.solver``); pf_* the CSR of D's rows of the attached nodes [N s/m] (``fixed`` order); node_link
-# (n_nodes,) the link of each node; scratch f_work (n_nodes, 3) (its free rows), b_work (n_free, 3).
+# The FEM link element of the rigid segment chain (``rigid_chain.link_step``), a named record: x, v (n_nodes, 3)
+# [m], [m/s] UPDATED (attached rows are rewritten from the boxes every step); n_free the free nodes; tets
+# (n_tets, 4), Dm_inv (n_tets, 3, 3) [1/m], coef, q_ws (UPDATED), F_work, H_work as in ``fem.kernels.elastic_forces``;
+# muscle: the active links, an ``ActiveLinks`` as a plain tuple (named where read); mass (n_nodes,) [kg] lumped;
+# inc_ptr, inc_off: ``fem.kernels.node_incidence`` of tets, for ``gather_node_force``; perm, sky_first, sky_ptr,
+# sky_L, fp_ptr, fp_col, fp_val as in ``semi_implicit_velocity`` for the mask of attached nodes
+# (``FEMSystem.solver``); pf_ptr, pf_col, pf_val the CSR of D's rows of the attached nodes [N s/m] (``fixed``
+# order); node_link (n_nodes,) the link of each node; scratch f_work (n_nodes, 3) (its free rows), b_work (n_free, 3).
 FEMLinks = namedtuple("FEMLinks", "x v n_free tets Dm_inv coef muscle mass q_ws F_work H_work inc_ptr inc_off "
                                   "perm sky_first sky_ptr sky_L fp_ptr fp_col fp_val pf_ptr pf_col pf_val node_link "
                                   "f_work b_work")
+# The active links (paper Sec. 7's "actively contractile deformable segments"): Dm_inv_rest (n_tets, 3, 3) [1/m],
+# vol [m^3], mu, lam [Pa] (n_tets,), tet_link (n_tets,) int, tet_y, tet_z (n_tets,) [-], act_buf (n_rows, n_links, 3)
+# [-]: when phys[MUSCLES_ON] is set, step k rescales the links' rest shapes by row k of act_buf times
+# phys[MUSCLE_GAIN] (``fem.body_kernels.active_coefficients``, which OVERWRITES FEMLinks.Dm_inv and coef).
+ActiveLinks = namedtuple("ActiveLinks", "Dm_inv_rest vol mu lam tet_link tet_y tet_z act_buf")
 
 
 def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
     """``rigid_chain.link_step`` of the FEM links: step 1 of the module docstring."""
-    (x, v, n_free, tets, Dm_inv, coef, muscle, mass, q_ws, F_work, H_work, inc_ptr, inc_off,
-     perm, sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val, pf_ptr, pf_col, pf_val, node_link, f_work, b_work) = L
-    fixed, att_body, att_local = A
+    x, v, n_free, tets, coef, mass, q_ws = L.x, L.v, L.n_free, L.tets, L.coef, L.mass, L.q_ws
+    inc_ptr, inc_off, perm, pf_ptr, pf_col, pf_val = L.inc_ptr, L.inc_off, L.perm, L.pf_ptr, L.pf_col, L.pf_val
+    node_link, f_work, b_work, F_work, H_work = L.node_link, L.f_work, L.b_work, L.F_work, L.H_work
+    fixed, att_body = A.fixed, A.att_body
     kinematic = B.kinematic
-    gravity, terr_kind, terr, fric_model, fric, phys = W
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
     f_att, x_att, x_pred, spine = C.f_att, C.x_att, C.x_pred, C.spine
     n_fixed = fixed.shape[0]
     dt, r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
@@ -106,10 +110,11 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     status = OK
     if phys[MUSCLES_ON] != 0.0:
-        act_buf = muscle[7]
-        active_coefficients(muscle[0], muscle[1], muscle[2], muscle[3], muscle[4], muscle[5], muscle[6],
+        M = ActiveLinks(*L.muscle)
+        act_buf = M.act_buf
+        active_coefficients(M.Dm_inv_rest, M.vol, M.mu, M.lam, M.tet_link, M.tet_y, M.tet_z,
                             act_buf[min(step, act_buf.shape[0] - 1)], phys[MUSCLE_GAIN], phys[VOLUME] != 0.0,
-                            Dm_inv, coef)
+                            L.Dm_inv, coef)
     # Every tet's nodal forces (eqs. 7-11), then each node's sum, gathered in the scatter's order
     # (bit for bit ``elastic_forces``), for the nodes that use it: the free nodes, and the attached
     # nodes of the boxes that take a rigid step.  A kinematic box is not integrated (the forces on
@@ -137,8 +142,8 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
         x_att[a, 0] = x[p, 0]
         x_att[a, 1] = x[p, 1]
         x_att[a, 2] = x[p, 2]
-    semi_implicit_velocity(v, mass, f_work, dt, perm, sky_first, sky_ptr, sky_L,
-                           fp_ptr, fp_col, fp_val, b_work)
+    semi_implicit_velocity(v, mass, f_work, dt, perm, L.sky_first, L.sky_ptr, L.sky_L,
+                           L.fp_ptr, L.fp_col, L.fp_val, b_work)
     # Damping reaction on the attached nodes, -(D v^{n+1})_p, with the same
     # prescribed v_p the solve used: total internal force exactly zero.
     # (each row summed in registers, in the order of its entries: the same doubles as in memory;
@@ -216,9 +221,9 @@ register_link(FEMLinks, _fem_links_step)
 
 @njit(cache=True, error_model="numpy")
 def advance(links, att, boxes, world, coupling, acc, n_steps):
-    """``rigid_chain.advance_chain`` of the FEM-linked chain from Python: the packs as plain tuples in the fields'
-    order of ``FEMLinks``, ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` (``rigid_chain``'s note on
-    why); returns (steps, status)."""
+    """``rigid_chain.advance_chain`` of the FEM-linked chain from Python: the records ``FEMLinks``, ``Attachment``,
+    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; returns (steps,
+    status)."""
     return advance_chain(FEMLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling), acc,
                          n_steps)
 

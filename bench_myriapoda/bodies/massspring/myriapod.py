@@ -49,11 +49,13 @@ from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
 from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, Attachment, Boxes, Coupling, World,
-                           advance_chain, chain_phys, chain_scalars, link_spines, place_attached_nodes, register_link)
+                           advance_chain, boxes_of, chain_phys, chain_scalars, coupling_of, link_spines,
+                           place_attached_nodes, register_link)
 from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
                              carry_boxes_feet, sample_boxes)
 from ..kinematic_targets import drive_to_targets
 from ..legged_chunk import register
+from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_box_chain
 from ..rigid import ContactSettings, RigidBoxes
@@ -130,9 +132,9 @@ def build_chain(lay: SegmentChainLayout, density: float) -> ChainMesh:
                      np.concatenate(attached), np.concatenate(att_body), centres)
 
 
-# The spring link element of the rigid segment chain (``rigid_chain.link_step``): x, v (n_nodes, 3) [m], [m/s]
-# UPDATED (attached rows rewritten from the boxes every step); n_free the free nodes; mass (n_nodes,) [kg]; free
-# (n_free,) node ids; node_link (n_nodes,); springs (n_springs, 2), stiffness [N/m], damping [N s/m], rest [m]
+# The spring link element of the rigid segment chain (``rigid_chain.link_step``), a named record: x, v (n_nodes, 3)
+# [m], [m/s] UPDATED (attached rows rewritten from the boxes every step); n_free the free nodes; mass (n_nodes,) [kg];
+# free (n_free,) node ids; node_link (n_nodes,); springs (n_springs, 2), stiffness [N/m], damping [N s/m], rest [m]
 # (n_springs,); scratch f_work (n_nodes, 3).
 SpringLinks = namedtuple("SpringLinks", "x v n_free mass free node_link springs stiffness damping rest f_work")
 
@@ -140,9 +142,10 @@ SpringLinks = namedtuple("SpringLinks", "x v n_free mass free node_link springs 
 def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
     """``rigid_chain.link_step`` of the spring links: step 1 of the module docstring (spring forces at
     (x^n, v^n); free nodes: v += dt (f/m + g), ground contact, x += dt v)."""
-    x, v, n_free, mass, free, node_link, springs, stiffness, damping, rest, f_work = L
+    x, v, n_free, mass, free, node_link, f_work = L.x, L.v, L.n_free, L.mass, L.free, L.node_link, L.f_work
+    springs, stiffness, damping, rest = L.springs, L.stiffness, L.damping, L.rest
     fixed = A.fixed
-    gravity, terr_kind, terr, fric_model, fric, phys = W
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
     f_att, x_att, x_pred, spine = C.f_att, C.x_att, C.x_pred, C.spine
     n_fixed = fixed.shape[0]
     dt, r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
@@ -188,9 +191,9 @@ register_link(SpringLinks, _spring_links_step)
 
 @njit(cache=True, error_model="numpy")
 def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
-    """``rigid_chain.advance_chain`` of the spring-linked chain from Python: the packs as plain tuples in the
-    fields' order of ``SpringLinks``, ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` (``rigid_chain``'s
-    note on why); returns (steps, status)."""
+    """``rigid_chain.advance_chain`` of the spring-linked chain from Python: the records ``SpringLinks``,
+    ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here;
+    returns (steps, status)."""
     return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
                          acc, n_steps)
 
@@ -266,18 +269,24 @@ class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        return advance_spring_chain(*self._chain_args(), self.acc, int(n_steps))
+        return advance_spring_chain(*self._chain_args, self.acc, int(n_steps))
 
+    @cached_property
     def _chain_args(self) -> tuple:
-        """``advance_spring_chain``'s packs, plain tuples (links, attachment, boxes, world, coupling scratch)."""
-        links = (self.x, self.v, len(self.free), self.mass, self.free, self.mesh.node_link, self.springs,
-                            self.stiffness, self.damping, self.rest, self._f_work)
-        return (links, (self.fixed, self.att_body, self.att_local), self.rigid.pack(),
-                (self.gravity, self.terr_kind, self.terr, self.fric_model, self.fric, self.phys), self.scratch.coupling())
+        """``advance_spring_chain``'s records (``SpringLinks``, ``rigid_chain``'s ``Attachment``, ``Boxes``,
+        ``World``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), built once by field
+        name: they refer to the body's own arrays, which are changed in place only."""
+        links = SpringLinks(x=self.x, v=self.v, n_free=len(self.free), mass=self.mass, free=self.free,
+                            node_link=self.mesh.node_link, springs=self.springs, stiffness=self.stiffness,
+                            damping=self.damping, rest=self.rest, f_work=self._f_work)
+        world = World(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr, fric_model=self.fric_model,
+                      fric=self.fric, phys=self.phys)
+        return (plain(links), plain(Attachment(fixed=self.fixed, att_body=self.att_body, att_local=self.att_local)),
+                plain(boxes_of(self.rigid)), plain(world), plain(coupling_of(self.scratch)))
 
     def legged_pack(self) -> "SpringChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
-        return SpringChainLegs(self._carried(), self._chain_args() + (self.acc,))
+        return SpringChainLegs(self._carried(), self._chain_args + (self.acc,))
 
     def _carried(self):
         """The boxes' ``carried_boxes.CarriedBoxes`` (legged_pack, push_support)."""
@@ -415,8 +424,9 @@ def _spring_chain_legged_step(P):
     """``legged_chunk.step``: one coupled step, ``rigid_chain.advance_chain`` on the packs named here (not
     through ``advance_spring_chain``: ``hybrid.body._hybrid_legged_step`` says why)."""
     links, att, boxes, world, coupling, acc = P.chain
+    # np.int64: a literal 1 compiles a second signature
     return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
-                         acc, np.int64(1))  # np.int64: a literal 1 compiles a second signature
+                         acc, np.int64(1))
 
 
 register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step,
