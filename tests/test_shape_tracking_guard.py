@@ -131,7 +131,12 @@ def key_space(max_segments: int, frequencies):
 @settings(max_examples=15 if LONG else 10, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate],
           suppress_health_check=[HealthCheck.too_slow])
 @given(**key_space(100, st.sampled_from([0.1, 0.25, 0.5, 1.0])))
+@example(wavelength=1.5, amplitude=5.0, frequency=1.0, model="coulomb", ratio=5.0, segments=25)
 def test_the_lattice_snake_never_runs_away_over_the_key_space(wavelength, amplitude, frequency, model, ratio, segments):
+    """Run first: the counterexample of the guard that did not watch the body's roll (a BENCH_LONG_TESTS=1 example):
+    the loop's command at 3 times the feed-forward rolled the middle segments over (15 to 145 degrees in 0.1 s, the
+    calibrated open loop: 4) and the body onto its back; it ended controller_unstable with shape_harmonic_content
+    2.83 (open loop 0.05).  The twist test (``segment_twist_deg``) now backs it off to the open loop."""
     case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
     check_no_runaway(run_case(case), amplitude)
 
@@ -221,3 +226,24 @@ def test_the_loop_margin_is_that_of_the_gains_the_run_used():
     rho = smoothing_response(0.1, 0.75)
     smoothed = PlantMargin(gain, lag, kp=2.0, smoothing=rho)
     assert smoothed.margin_deg != pytest.approx(used.margin_deg)
+
+
+def test_the_twist_of_a_segment_is_read_against_the_body_and_not_the_ground():
+    """``segment_twist_deg``: the largest roll of a segment about its own axis away from the body's median roll,
+    whatever the segment's heading and pitch; a body rolled as a whole (lying across a slope) reads 0."""
+    from bench_myriapoda.controllers.shape_tracking import segment_twist_deg
+
+    def frame(heading, pitch, roll):  # segment -> world: heading about +y, then pitch about z, then roll about x
+        ch, sh, cp, sp, cr, sr = (f(np.radians(a)) for a in (heading, pitch, roll) for f in (np.cos, np.sin))
+        yaw = np.array([[ch, 0, sh], [0, 1, 0], [-sh, 0, ch]])
+        pit = np.array([[cp, -sp, 0], [sp, cp, 0], [0, 0, 1]])
+        rol = np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]])
+        return yaw @ pit @ rol
+
+    headings = np.linspace(-170.0, 170.0, 9)
+    flat = np.array([frame(h, 5.0 * np.sin(h), 0.0) for h in headings])
+    assert segment_twist_deg(flat) == pytest.approx(0.0, abs=1e-9)
+    twisted = np.array([frame(h, 10.0, 40.0 if j == 4 else 0.0) for j, h in enumerate(headings)])
+    assert segment_twist_deg(twisted) == pytest.approx(40.0)
+    sloped = np.array([frame(h, 0.0, 20.0) for h in headings])
+    assert segment_twist_deg(sloped) == pytest.approx(0.0, abs=1e-9)

@@ -207,6 +207,15 @@ def track_tick(kappa, s_muscle, waves, t, counting, track_gains, track_state):
             counts[2] = max(counts[2], abs(u))
 
 
+def segment_twist_deg(seg_rot) -> float:
+    """The largest roll [deg] of a segment about its own axis away from the body's median roll, from the segment frames
+    seg_rot (n, 3, 3) segment -> world (x: the body's axis, y: dorsal): the roll of a frame is the angle of its dorsal
+    axis from the vertical about the x axis, atan2(-R[1, 2], R[1, 1]) (independent of the segment's pitch).  A body
+    lying on a slope rolls as a whole and reads 0."""
+    roll = np.degrees(np.arctan2(-seg_rot[:, 1, 2], seg_rot[:, 1, 1]))
+    return float(np.max(np.abs(_wrap_deg(roll - np.median(roll))))) if roll.size else 0.0
+
+
 def _wrap_deg(x):
     return (np.asarray(x, float) + 180.0) % 360.0 - 180.0
 
@@ -296,6 +305,10 @@ GUARD_AMPLITUDE_RATIO = 1.2
 GUARD_SATURATION = 0.5
 GUARD_BACKOFF = 0.5
 GUARD_MAX_BACKOFFS = 2
+# The guard's twist test: a segment rolled about the body's axis by more than GUARD_TWIST_DEG from the body's median
+# roll while the loop commands more than the feed-forward (``segment_twist_deg``; ``LoopGuard``): the loop is driving
+# the body out of its plane, and the calibrated open loop stays for the rest of the run
+GUARD_TWIST_DEG = 15.0
 # The guard's waveform test (``WaveformWatch``): the centre line's bend, demodulated over the last whole period at
 # every interior centre, carries more than GUARD_HARMONIC of the commanded amplitude in the wave's temporal harmonics
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
@@ -425,6 +438,7 @@ class LoopGuard:
         self.sat = 0.0             # share of clipped commands, low-passed
         self.reasons: list[str] = []  # what each back-off saw
         self.integral_off = False  # the integrals switched off by a waveform back-off
+        self.open_for_good = False  # the twist test tripped: the calibrated open loop for the rest of the run
         self.harmonic_limit = GUARD_HARMONIC  # the waveform test's threshold (``set_open_loop_harmonics``)
         self.waveform.clear()
 
@@ -438,7 +452,7 @@ class LoopGuard:
     @property
     def fallen_back(self) -> bool:
         """The open loop for good: the loop lost its margin ``GUARD_MAX_BACKOFFS`` + 1 times."""
-        return self.backoffs > GUARD_MAX_BACKOFFS
+        return self.open_for_good or self.backoffs > GUARD_MAX_BACKOFFS
 
     def gain_scale(self, t: float) -> float:
         """The loop's gain scale at t [s]: 0 while backed off, else the scale it resumed at."""
@@ -449,7 +463,8 @@ class LoopGuard:
         s = self.gain_scale(t)
         return s, 0.0 if self.integral_off else s
 
-    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None) -> bool:
+    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None,
+              twist: float = 0.0) -> bool:
         """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
         command; ramp_s [s]: the start ramp; bend: (n_p,) the centre line's bend [strain] at rest arc positions
         s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None); True when the loop lost its margin
@@ -466,7 +481,10 @@ class LoopGuard:
         self.p_cmd += a_fast * (float(np.mean(ref * ref)) - self.p_cmd)
         self.p_out += a_fast * (float(np.mean(lateral * lateral)) - self.p_out)
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
-        if self.fallen_back or t < self.hold_until or r < 1.0:
+        if self.fallen_back or t < self.hold_until:
+            return False
+        twisted = twist > GUARD_TWIST_DEG and self.p_out > self.p_cmd
+        if r < 1.0 and not twisted:
             return False
         harmonic = float("nan")
         if bend is not None:
@@ -481,15 +499,18 @@ class LoopGuard:
         saturated = self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd
         # the waveform: the bend's harmonics over the last period beyond the open loop's own (``WaveformWatch``)
         distorted = harmonic > self.harmonic_limit and self.waveform.growing()
-        if not (overshoot or saturated or distorted):
+        if not (overshoot or saturated or distorted or twisted):
             return False
         self.backoffs += 1
         self.times.append(float(t))
-        self.reasons.append("bend over the command" if overshoot else "most muscles saturated" if saturated else
+        self.reasons.append("segments twisted over" if twisted else "bend over the command" if overshoot else "most muscles saturated" if saturated else
                             f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
                             ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
         self.sat = 0.0
+        if twisted:
+            self.open_for_good = True
+            return True
         if distorted and not (overshoot or saturated) and not self.integral_off:
             # the waveform ran away with the bend's amplitude held: the integrals' doing (on the hybrid at 0.3 BL,
             # Miller's friction, mu_t / mu_f 1, the loop without its fundamental's integral tracked, shape error
@@ -596,7 +617,8 @@ class ShapeTracker:
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
             bend = self._bend
         if self.guard is not None and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state,
-                                                       self.umax, bend, self.s_centre[1:-1]):
+                                                       self.umax, bend, self.s_centre[1:-1],
+                                                       segment_twist_deg(obs.seg_rot)):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
             for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
