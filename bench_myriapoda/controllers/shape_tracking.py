@@ -71,6 +71,13 @@ _LATERAL = 1
 # cos(pi / P)^16 to a profile of period P segments passes the commanded wave (P = 50 or 25 on the snake:
 # 0.97, 0.88) and stops the element-scale bending waves (P = 6: 0.10; P <= 4: < 0.004)
 SMOOTHING_PASSES = 8
+# The loop corrects a commanded wave its smoothing passes at LOOP_MIN_SMOOTHING or more: cos(pi / P)^16 >= 0.1, P >= 6
+# muscle segments a wave.  A shorter wave is at the scale of the body's own element waves the smoothing is there to
+# stop; the loop cannot see it, its terms would act only on what the body does beyond the command (on a 12-segment
+# lattice at 0.3 BL, 3.6 segments a wave, the loop added 6 % to the feed-forward and its guard, tripped by a segment
+# flailing over, left the run with harmonic content 1.6 where the calibrated open loop carried 0.012), so the
+# calibrated open loop runs and the run says so (``ShapeTracker.run_status``)
+LOOP_MIN_SMOOTHING = 0.1
 
 
 @njit(cache=True, error_model="numpy")
@@ -306,9 +313,12 @@ GUARD_SATURATION = 0.5
 GUARD_BACKOFF = 0.5
 GUARD_MAX_BACKOFFS = 2
 # The guard's twist test: a segment rolled about the body's axis by more than GUARD_TWIST_DEG from the body's median
-# roll while the loop commands more than the feed-forward (``segment_twist_deg``; ``LoopGuard``): the loop is driving
-# the body out of its plane, and the calibrated open loop stays for the rest of the run
+# roll while the loop commands GUARD_TWIST_COMMAND_RATIO times the feed-forward or more, in RMS over the last quarter
+# cycle (``segment_twist_deg``; ``LoopGuard``): the loop is driving the body out of its plane, and the calibrated open
+# loop stays for the rest of the run.  A body that twists while the loop adds little to the feed-forward twists of
+# its own accord, and switching to the open loop there only jolts it
 GUARD_TWIST_DEG = 15.0
+GUARD_TWIST_COMMAND_RATIO = 1.5
 # The guard's waveform test (``WaveformWatch``): the centre line's bend, demodulated over the last whole period at
 # every interior centre, carries more than GUARD_HARMONIC of the commanded amplitude in the wave's temporal harmonics
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
@@ -483,7 +493,7 @@ class LoopGuard:
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
         if self.fallen_back or t < self.hold_until:
             return False
-        twisted = twist > GUARD_TWIST_DEG and self.p_out > self.p_cmd
+        twisted = twist > GUARD_TWIST_DEG and self.p_out > GUARD_TWIST_COMMAND_RATIO ** 2 * self.p_cmd
         if r < 1.0 and not twisted:
             return False
         harmonic = float("nan")
@@ -503,7 +513,8 @@ class LoopGuard:
             return False
         self.backoffs += 1
         self.times.append(float(t))
-        self.reasons.append("segments twisted over" if twisted else "bend over the command" if overshoot else "most muscles saturated" if saturated else
+        self.reasons.append("segments twisted over" if twisted else "bend over the command" if overshoot else
+                            "most muscles saturated" if saturated else
                             f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
                             ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
@@ -575,8 +586,10 @@ class ShapeTracker:
         # reported, not acted on (``PlantMargin`` says why)
         wavelength_m = float(self.wavelength_bl) * self.body_length
         pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
+        self.wave_smoothing = smoothing_response(pitch_m, wavelength_m)
+        self.muscles_per_wave = wavelength_m / pitch_m if pitch_m > 0.0 else math.inf
         self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
-                                    smoothing_response(pitch_m, wavelength_m))
+                                    self.wave_smoothing)
         self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,
                                 kp=self.kp, ki=self.ki, umax=self.umax, passes=SMOOTHING_PASSES,
                                 harmonics=self.harmonics, ki_h=self.ki_h, lead_cos=self.lead_cos,
@@ -586,6 +599,11 @@ class ShapeTracker:
                                 err=np.zeros(n), tmp=np.zeros(n), ah=np.zeros((n_h, n)), bh=np.zeros((n_h, n)))
         self.s_centre = None
         self._bend = None  # the guard's bend buffer (n - 2,) [strain]
+        # a commanded wave the error's smoothing does not pass is not the loop's to correct (``LOOP_MIN_SMOOTHING``):
+        # the calibrated open loop, held per tick like a back-off's, and the guard has nothing to watch
+        self.loop_off = self.wave_smoothing < LOOP_MIN_SMOOTHING
+        if self.loop_off:
+            self.gains = scaled_gains(self.gains, 0.0)
         self.full_gains, self.scale = self.gains, (1.0, 1.0)
         if self.guard is not None:
             self.guard.reset()
@@ -603,22 +621,22 @@ class ShapeTracker:
             self.full_gains = self.full_gains._replace(ramp_s=float(ramp_s))
             self.gains = self.gains._replace(ramp_s=float(ramp_s))
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
-        if self.guard is not None:
-            scale = self.guard.gain_scales(t)
+        guard = None if self.loop_off else self.guard
+        if guard is not None:
+            scale = guard.gain_scales(t)
             if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
                 self.gains, self.scale = scaled_gains(self.full_gains, *scale), scale
         track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, plain(self.gains), plain(self.state))
         bend = None
-        if self.guard is not None and obs.seg_pos.shape[0] >= 3:
+        if guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
             pos = np.ascontiguousarray(obs.seg_pos, dtype=np.float64)  # one compiled signature for every body
             if self._bend is None or self._bend.shape[0] != pos.shape[0] - 2:
                 self._bend = np.zeros(pos.shape[0] - 2)
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
             bend = self._bend
-        if self.guard is not None and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state,
-                                                       self.umax, bend, self.s_centre[1:-1],
-                                                       segment_twist_deg(obs.seg_rot)):
+        if guard is not None and guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state, self.umax, bend,
+                                             self.s_centre[1:-1], segment_twist_deg(obs.seg_rot)):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
             for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
@@ -646,14 +664,20 @@ class ShapeTracker:
         if self.guard is not None:
             gd = self.guard
             out.update({"shape_control_backoffs": float(gd.backoffs),
-                        "shape_control_gain_scale": 0.0 if gd.fallen_back else float(gd.scale),
+                        "shape_control_gain_scale": 0.0 if gd.fallen_back or self.loop_off else float(gd.scale),
                         "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
         return out
 
     def run_status(self) -> tuple[str, str] | None:
         """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good
         (the open loop, or the integrals off): the motion measured there is the open loop's (or a lower gain's, or
-        the proportional loop's), because the loop drove the shape away; None otherwise."""
+        the proportional loop's), because the loop drove the shape away; ("ok", why) when the loop left a commanded
+        wave it cannot see to the calibrated open loop (``LOOP_MIN_SMOOTHING``); None otherwise."""
+        if self.loop_off:
+            return ("ok", f"the shape loop left the commanded wave to the calibrated open loop: "
+                          f"{self.muscles_per_wave:.1f} muscle segments a wave, which the loop's smoothing along the "
+                          f"body passes at {self.wave_smoothing:.3f}, under {LOOP_MIN_SMOOTHING:g} (it cannot see "
+                          f"that wave)")
         gd = self.guard
         if gd is None or not gd.acted_in_window():
             return None
@@ -662,6 +686,6 @@ class ShapeTracker:
             f"resumed at {gd.scale:g} of its gains" + (", its integrals off" if gd.integral_off else "")
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
-                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, or the waveform's "
-                f"harmonics beyond the open loop's) and was backed off (to the calibrated open loop for a period, or "
-                f"its integrals off) at t = {when} s; it {end}")
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, segments twisted out of "
+                f"the plane, or the waveform's harmonics beyond the open loop's) and was backed off (to the calibrated "
+                f"open loop for a period, or its integrals off) at t = {when} s; it {end}")
