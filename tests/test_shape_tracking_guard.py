@@ -251,3 +251,25 @@ def test_the_twist_of_a_segment_is_read_against_the_body_and_not_the_ground():
     assert segment_twist_deg(twisted) == pytest.approx(40.0)
     sloped = np.array([frame(h, 0.0, 20.0) for h in headings])
     assert segment_twist_deg(sloped) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_a_matrix_with_controller_unstable_runs_is_read_by_the_report(tmp_path):
+    """The report's reader (``report.inputs``) takes ``controller_unstable`` as a run status, as the runner writes it:
+    the tracking map (tools/tracking_map.py) and the report read a matrix directory holding such runs (before, every
+    one of them was refused as 'not written by bench-myriapoda matrix').  A real two-case matrix of 0.05 s worm runs,
+    one of its rows given the status the guard's runs carry."""
+    import sqlite3
+
+    from bench_myriapoda.cli import main
+    from bench_myriapoda.report.matrix_data import load_matrix_dir
+
+    f = tmp_path / "m.toml"
+    f.write_text('[matrix]\nname = "m44"\ncreatures = ["worm"]\nbodies = ["massspring"]\nscenarios = ["flat"]\n'
+                 'duration = 0.05\ngrid = { "friction.mu_transverse" = [0.2, 0.5] }\n')
+    out = tmp_path / "M"
+    assert main(["matrix", str(f), "--out", str(out), "--workers", "1"]) == 0
+    with sqlite3.connect(out / "results.sqlite") as con:
+        con.execute("update runs set status = 'controller_unstable' where id = 1")
+    df = load_matrix_dir(out).df
+    assert sorted(df["status"]) == ["controller_unstable", "ok"]
+    assert main(["report", str(out)]) == 0 and (out / "index.html").exists()
