@@ -131,17 +131,34 @@ def key_space(max_segments: int, frequencies):
 @settings(max_examples=15 if LONG else 10, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate],
           suppress_health_check=[HealthCheck.too_slow])
 @given(**key_space(100, st.sampled_from([0.1, 0.25, 0.5, 1.0])))
-@example(wavelength=1.5, amplitude=5.0, frequency=1.0, model="coulomb", ratio=5.0, segments=25)
-@example(wavelength=0.3, amplitude=14.0, frequency=1.0, model="miller", ratio=5.0, segments=12)
-@example(wavelength=0.5, amplitude=14.0, frequency=1.0, model="miller", ratio=10.0, segments=12)
 def test_the_lattice_snake_never_runs_away_over_the_key_space(wavelength, amplitude, frequency, model, ratio, segments):
-    """Run first, three counterexamples of the guard before it watched the body's roll and the commanded wave's
-    resolution (BENCH_LONG_TESTS=1 examples).  At 1.5 BL, 1 Hz, Coulomb friction: the loop's command at 3 times the
-    feed-forward rolled the middle segments over (15 to 145 degrees in 0.1 s; the calibrated open loop: 4) and the
-    body onto its back, shape_harmonic_content 2.83 (open loop 0.05); the twist test (``segment_twist_deg``) now puts
-    it in the open loop.  On 12 segments at 0.3 and 0.5 BL (3.6 and 6 segments a wave, which the loop's smoothing
-    passes at 0.001 and 0.10) the loop ended with harmonic content 1.6 (open loop 0.012) and a bend of 52.7 of 14
-    (open loop 11.3); such waves are now left to the calibrated open loop (``LOOP_MIN_SMOOTHING``)."""
+    case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
+    check_no_runaway(run_case(case), amplitude)
+
+
+# Counterexamples the BENCH_LONG_TESTS=1 property test found with other example sets (hypothesis derandomizes on the
+# test's source, so each edit of it draws other examples): (wavelength, amplitude, frequency, model, ratio, segments).
+LATTICE_COUNTEREXAMPLES = (
+    # the loop's command at 3 times the feed-forward rolled the middle segments over (15 to 145 degrees in 0.1 s; the
+    # calibrated open loop: 4) and the body onto its back: shape_harmonic_content 2.83 (open loop 0.05); the twist
+    # test (``segment_twist_deg``) now puts it in the open loop
+    (1.5, 5.0, 1.0, "coulomb", 5.0, 25),
+    # 3.6 and 6 segments a wave, which the loop's smoothing passes at 0.001 and 0.10: the loop ended with harmonic
+    # content 1.6 (open loop 0.012) and a bend of 52.7 of 14 (open loop 11.3); such waves are now left to the
+    # calibrated open loop (``LOOP_MIN_SMOOTHING``)
+    (0.3, 14.0, 1.0, "miller", 5.0, 12),
+    (0.5, 14.0, 1.0, "miller", 10.0, 12),
+    # not solved: the loop overshoots at so small a bend, the guard backs it off to the open loop, and the body keeps
+    # the larger swing: 2.94 of 2 where the open loop from the start reaches 2.39 (docs/explanation/shape-tracking.md,
+    # "Known counterexample, not solved")
+    pytest.param(0.75, 2.0, 0.5, "miller", 5.0, 25, marks=pytest.mark.xfail(
+        strict=True, reason="the body keeps the swing the loop put into it after the guard's back-off (issue 44)")),
+)
+
+
+@pytest.mark.parametrize("wavelength, amplitude, frequency, model, ratio, segments", LATTICE_COUNTEREXAMPLES)
+def test_the_lattice_counterexamples_of_the_key_space_track_or_are_flagged(wavelength, amplitude, frequency, model,
+                                                                          ratio, segments):
     case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
     check_no_runaway(run_case(case), amplitude)
 

@@ -431,6 +431,13 @@ class LoopGuard:
     is growing (``WaveformWatch.growing``: a settling loop's transient decays), the integrals (the fundamental's
     and the harmonics') are dropped and switched off for the rest of the run, and the proportional loop goes on
     (gain scheduling: the part of the loop that lost its margin goes); a second trip of any test backs off as above.
+
+    And the body's roll (``segment_twist_deg``): under a command several times the feed-forward (a Coulomb-friction
+    body that hardly bends until the muscles' moment passes the friction's) the lattice at 1.5 BL, 1 Hz rolled its
+    middle segments over, 10 to 145 degrees in 0.14 s, while the bend low-passed over a quarter cycle was still short
+    of the command, and then onto its back.  A segment rolled ``GUARD_TWIST_DEG`` beyond the body's median roll
+    while the loop commands ``GUARD_TWIST_COMMAND_RATIO`` times the feed-forward puts the run in the calibrated open
+    loop for good (resumed at half the gains, the loop rolled the same body again a second later).
     The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
     ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
     in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
