@@ -484,10 +484,11 @@ class LoopGuard:
         return s, 0.0 if self.integral_off else s
 
     def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None,
-              twist: float = 0.0) -> bool:
+              seg_rot=None) -> bool:
         """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
         command; ramp_s [s]: the start ramp; bend: (n_p,) the centre line's bend [strain] at rest arc positions
-        s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None); True when the loop lost its margin
+        s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None; seg_rot: (n, 3, 3) the segment frames,
+        for the twist test (``segment_twist_deg``), or None); True when the loop lost its margin
         at this tick (the caller drops the integral state)."""
         amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
             waves[_LATERAL, _PHASE]
@@ -503,7 +504,10 @@ class LoopGuard:
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
         if self.fallen_back or t < self.hold_until:
             return False
-        twisted = twist > GUARD_TWIST_DEG and self.p_out > GUARD_TWIST_COMMAND_RATIO ** 2 * self.p_cmd
+        # the body rolled out of its plane while the loop commands well beyond the feed-forward (the roll is read only
+        # then: it costs a few microseconds a tick)
+        twisted = (seg_rot is not None and self.p_out > GUARD_TWIST_COMMAND_RATIO ** 2 * self.p_cmd
+                   and segment_twist_deg(seg_rot) > GUARD_TWIST_DEG)
         if r < 1.0 and not twisted:
             return False
         harmonic = float("nan")
@@ -610,8 +614,9 @@ class ShapeTracker:
         self.s_centre = None
         self._bend = None  # the guard's bend buffer (n - 2,) [strain]
         # a commanded wave the error's smoothing does not pass is not the loop's to correct (``LOOP_MIN_SMOOTHING``):
-        # the calibrated open loop, held per tick like a back-off's, and the guard has nothing to watch
-        self.loop_off = self.wave_smoothing < LOOP_MIN_SMOOTHING
+        # the calibrated open loop, held per tick like a back-off's, and the guard has nothing to watch (part of the
+        # loop's protection: ``gait.shape_guard = false`` keeps the loop as it was)
+        self.loop_off = self.guard is not None and self.wave_smoothing < LOOP_MIN_SMOOTHING
         if self.loop_off:
             self.gains = scaled_gains(self.gains, 0.0)
         self.full_gains, self.scale = self.gains, (1.0, 1.0)
@@ -646,7 +651,7 @@ class ShapeTracker:
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
             bend = self._bend
         if guard is not None and guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state, self.umax, bend,
-                                             self.s_centre[1:-1], segment_twist_deg(obs.seg_rot)):
+                                             self.s_centre[1:-1], obs.seg_rot):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
             for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
