@@ -136,12 +136,41 @@ def test_the_lattice_snake_never_runs_away_over_the_key_space(wavelength, amplit
     check_no_runaway(run_case(case), amplitude)
 
 
+# Counterexamples the BENCH_LONG_TESTS=1 property test found with other example sets (hypothesis derandomizes on the
+# test's source, so each edit of it draws other examples): (wavelength, amplitude, frequency, model, ratio, segments).
+LATTICE_COUNTEREXAMPLES = (
+    # the loop's command at 3 times the feed-forward rolled the middle segments over (15 to 145 degrees in 0.1 s; the
+    # calibrated open loop: 4) and the body onto its back: shape_harmonic_content 2.83 (open loop 0.05); the twist
+    # test (``segment_twist_deg``) now puts it in the open loop
+    (1.5, 5.0, 1.0, "coulomb", 5.0, 25),
+    # 3.6 and 6 segments a wave, which the loop's smoothing passes at 0.001 and 0.10: the loop ended with harmonic
+    # content 1.6 (open loop 0.012) and a bend of 52.7 of 14 (open loop 11.3); such waves are now left to the
+    # calibrated open loop (``LOOP_MIN_SMOOTHING``)
+    (0.3, 14.0, 1.0, "miller", 5.0, 12),
+    (0.5, 14.0, 1.0, "miller", 10.0, 12),
+    # not solved: the loop overshoots at so small a bend, the guard backs it off to the open loop, and the body keeps
+    # the larger swing: 2.94 of 2 where the open loop from the start reaches 2.39 (docs/explanation/shape-tracking.md,
+    # "Known counterexample, not solved")
+    pytest.param(0.75, 2.0, 0.5, "miller", 5.0, 25, marks=pytest.mark.xfail(
+        strict=True, reason="the body keeps the swing the loop put into it after the guard's back-off (issue 44)")),
+)
+
+
+@pytest.mark.parametrize("wavelength, amplitude, frequency, model, ratio, segments", LATTICE_COUNTEREXAMPLES)
+def test_the_lattice_counterexamples_of_the_key_space_track_or_are_flagged(wavelength, amplitude, frequency, model,
+                                                                          ratio, segments):
+    case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
+    check_no_runaway(run_case(case), amplitude)
+
+
 @pytest.mark.parametrize("body", ["fem", "hybrid"])
 def test_the_fem_and_hybrid_snakes_never_run_away_over_the_key_space(body):
     """A few examples by default (the higher frequencies: the shortest runs), more with BENCH_LONG_TESTS=1, and the
     known counterexample of the guard that watched the amplitude alone, run first on both bodies: the hybrid at
     wavelength 0.3 BL, curvature 10, 0.5 Hz, Miller friction, mu_t / mu_f 1, 25 segments ended controller_unstable
-    with shape_harmonic_content 0.23 (open loop 0.009); the loop's waveform is now watched (``WaveformWatch``)."""
+    with shape_harmonic_content 0.23 (open loop 0.009); the loop's waveform was then watched (``WaveformWatch``), and
+    its wave (7.5 segments, which the loop's smoothing passes at 0.24) is now left to the calibrated open loop
+    (``LOOP_MIN_SMOOTHING``)."""
 
     @settings(max_examples=12 if LONG else 3, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate],
               suppress_health_check=[HealthCheck.too_slow])
@@ -221,3 +250,46 @@ def test_the_loop_margin_is_that_of_the_gains_the_run_used():
     rho = smoothing_response(0.1, 0.75)
     smoothed = PlantMargin(gain, lag, kp=2.0, smoothing=rho)
     assert smoothed.margin_deg != pytest.approx(used.margin_deg)
+
+
+def test_the_twist_of_a_segment_is_read_against_the_body_and_not_the_ground():
+    """``segment_twist_deg``: the largest roll of a segment about its own axis away from the body's median roll,
+    whatever the segment's heading and pitch; a body rolled as a whole (lying across a slope) reads 0."""
+    from bench_myriapoda.controllers.shape_tracking import segment_twist_deg
+
+    def frame(heading, pitch, roll):  # segment -> world: heading about +y, then pitch about z, then roll about x
+        ch, sh, cp, sp, cr, sr = (f(np.radians(a)) for a in (heading, pitch, roll) for f in (np.cos, np.sin))
+        yaw = np.array([[ch, 0, sh], [0, 1, 0], [-sh, 0, ch]])
+        pit = np.array([[cp, -sp, 0], [sp, cp, 0], [0, 0, 1]])
+        rol = np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]])
+        return yaw @ pit @ rol
+
+    headings = np.linspace(-170.0, 170.0, 9)
+    flat = np.array([frame(h, 5.0 * np.sin(h), 0.0) for h in headings])
+    assert segment_twist_deg(flat) == pytest.approx(0.0, abs=1e-9)
+    twisted = np.array([frame(h, 10.0, 40.0 if j == 4 else 0.0) for j, h in enumerate(headings)])
+    assert segment_twist_deg(twisted) == pytest.approx(40.0)
+    sloped = np.array([frame(h, 0.0, 20.0) for h in headings])
+    assert segment_twist_deg(sloped) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_a_matrix_with_controller_unstable_runs_is_read_by_the_report(tmp_path):
+    """The report's reader (``report.inputs``) takes ``controller_unstable`` as a run status, as the runner writes it:
+    the tracking map (tools/tracking_map.py) and the report read a matrix directory holding such runs (before, every
+    one of them was refused as 'not written by bench-myriapoda matrix').  A real two-case matrix of 0.05 s worm runs,
+    one of its rows given the status the guard's runs carry."""
+    import sqlite3
+
+    from bench_myriapoda.cli import main
+    from bench_myriapoda.report.matrix_data import load_matrix_dir
+
+    f = tmp_path / "m.toml"
+    f.write_text('[matrix]\nname = "m44"\ncreatures = ["worm"]\nbodies = ["massspring"]\nscenarios = ["flat"]\n'
+                 'duration = 0.05\ngrid = { "friction.mu_transverse" = [0.2, 0.5] }\n')
+    out = tmp_path / "M"
+    assert main(["matrix", str(f), "--out", str(out), "--workers", "1"]) == 0
+    with sqlite3.connect(out / "results.sqlite") as con:
+        con.execute("update runs set status = 'controller_unstable' where id = 1")
+    df = load_matrix_dir(out).df
+    assert sorted(df["status"]) == ["controller_unstable", "ok"]
+    assert main(["report", str(out)]) == 0 and (out / "index.html").exists()

@@ -71,6 +71,16 @@ _LATERAL = 1
 # cos(pi / P)^16 to a profile of period P segments passes the commanded wave (P = 50 or 25 on the snake:
 # 0.97, 0.88) and stops the element-scale bending waves (P = 6: 0.10; P <= 4: < 0.004)
 SMOOTHING_PASSES = 8
+# The loop corrects a commanded wave its smoothing passes at LOOP_MIN_SMOOTHING or more, half its amplitude:
+# cos(pi / P)^16 >= 0.5, P >= 10.7 muscle segments a wave (on n segments: waves of 10.7 / n body lengths or longer).
+# Below it the loop sees little of the wave it is to correct, and its terms act mostly on what the body does beyond
+# the command.  On 12-segment lattices (BENCH_LONG_TESTS=1 examples of the property test), with the loop closed:
+# at 0.3 BL (P = 3.6, passed at 0.001), curvature 14, 1 Hz, Miller's friction, mu_t / mu_f 5, the loop added 6 % to
+# the feed-forward, a segment flailed over and the guard's waveform test left harmonic content 1.6 (the calibrated
+# open loop: 0.012); at 0.5 BL (P = 6, 0.10), mu_t / mu_f 10, the loop's push at a bend flung the body into flailing
+# that the open loop, once backed off to, did not undo: curvature 52.7 of 14 (open loop: 11.3).  So the calibrated
+# open loop runs there, and the run says so (``ShapeTracker.run_status``)
+LOOP_MIN_SMOOTHING = 0.5
 
 
 @njit(cache=True, error_model="numpy")
@@ -207,6 +217,15 @@ def track_tick(kappa, s_muscle, waves, t, counting, track_gains, track_state):
             counts[2] = max(counts[2], abs(u))
 
 
+def segment_twist_deg(seg_rot) -> float:
+    """The largest roll [deg] of a segment about its own axis away from the body's median roll, from the segment frames
+    seg_rot (n, 3, 3) segment -> world (x: the body's axis, y: dorsal): the roll of a frame is the angle of its dorsal
+    axis from the vertical about the x axis, atan2(-R[1, 2], R[1, 1]) (independent of the segment's pitch).  A body
+    lying on a slope rolls as a whole and reads 0."""
+    roll = np.degrees(np.arctan2(-seg_rot[:, 1, 2], seg_rot[:, 1, 1]))
+    return float(np.max(np.abs(_wrap_deg(roll - np.median(roll))))) if roll.size else 0.0
+
+
 def _wrap_deg(x):
     return (np.asarray(x, float) + 180.0) % 360.0 - 180.0
 
@@ -296,6 +315,13 @@ GUARD_AMPLITUDE_RATIO = 1.2
 GUARD_SATURATION = 0.5
 GUARD_BACKOFF = 0.5
 GUARD_MAX_BACKOFFS = 2
+# The guard's twist test: a segment rolled about the body's axis by more than GUARD_TWIST_DEG from the body's median
+# roll while the loop commands GUARD_TWIST_COMMAND_RATIO times the feed-forward or more, in RMS over the last quarter
+# cycle (``segment_twist_deg``; ``LoopGuard``): the loop is driving the body out of its plane, and the calibrated open
+# loop stays for the rest of the run.  A body that twists while the loop adds little to the feed-forward twists of
+# its own accord, and switching to the open loop there only jolts it
+GUARD_TWIST_DEG = 15.0
+GUARD_TWIST_COMMAND_RATIO = 1.5
 # The guard's waveform test (``WaveformWatch``): the centre line's bend, demodulated over the last whole period at
 # every interior centre, carries more than GUARD_HARMONIC of the commanded amplitude in the wave's temporal harmonics
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
@@ -405,6 +431,13 @@ class LoopGuard:
     is growing (``WaveformWatch.growing``: a settling loop's transient decays), the integrals (the fundamental's
     and the harmonics') are dropped and switched off for the rest of the run, and the proportional loop goes on
     (gain scheduling: the part of the loop that lost its margin goes); a second trip of any test backs off as above.
+
+    And the body's roll (``segment_twist_deg``): under a command several times the feed-forward (a Coulomb-friction
+    body that hardly bends until the muscles' moment passes the friction's) the lattice at 1.5 BL, 1 Hz rolled its
+    middle segments over, 10 to 145 degrees in 0.14 s, while the bend low-passed over a quarter cycle was still short
+    of the command, and then onto its back.  A segment rolled ``GUARD_TWIST_DEG`` beyond the body's median roll
+    while the loop commands ``GUARD_TWIST_COMMAND_RATIO`` times the feed-forward puts the run in the calibrated open
+    loop for good (resumed at half the gains, the loop rolled the same body again a second later).
     The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
     ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
     in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
@@ -425,6 +458,7 @@ class LoopGuard:
         self.sat = 0.0             # share of clipped commands, low-passed
         self.reasons: list[str] = []  # what each back-off saw
         self.integral_off = False  # the integrals switched off by a waveform back-off
+        self.open_for_good = False  # the twist test tripped: the calibrated open loop for the rest of the run
         self.harmonic_limit = GUARD_HARMONIC  # the waveform test's threshold (``set_open_loop_harmonics``)
         self.waveform.clear()
 
@@ -438,7 +472,7 @@ class LoopGuard:
     @property
     def fallen_back(self) -> bool:
         """The open loop for good: the loop lost its margin ``GUARD_MAX_BACKOFFS`` + 1 times."""
-        return self.backoffs > GUARD_MAX_BACKOFFS
+        return self.open_for_good or self.backoffs > GUARD_MAX_BACKOFFS
 
     def gain_scale(self, t: float) -> float:
         """The loop's gain scale at t [s]: 0 while backed off, else the scale it resumed at."""
@@ -449,10 +483,12 @@ class LoopGuard:
         s = self.gain_scale(t)
         return s, 0.0 if self.integral_off else s
 
-    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None) -> bool:
+    def watch(self, t: float, ramp_s: float, waves, s_muscle, state, umax: float, bend=None, s_bend=None,
+              seg_rot=None) -> bool:
         """Update the guard with the tick just computed at t [s] (``track_tick``'s state: its smoothed error and its
         command; ramp_s [s]: the start ramp; bend: (n_p,) the centre line's bend [strain] at rest arc positions
-        s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None); True when the loop lost its margin
+        s_bend (n_p,) [m], for the waveform test (``WaveformWatch``), or None; seg_rot: (n, 3, 3) the segment frames,
+        for the twist test (``segment_twist_deg``), or None); True when the loop lost its margin
         at this tick (the caller drops the integral state)."""
         amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
             waves[_LATERAL, _PHASE]
@@ -466,7 +502,13 @@ class LoopGuard:
         self.p_cmd += a_fast * (float(np.mean(ref * ref)) - self.p_cmd)
         self.p_out += a_fast * (float(np.mean(lateral * lateral)) - self.p_out)
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
-        if self.fallen_back or t < self.hold_until or r < 1.0:
+        if self.fallen_back or t < self.hold_until:
+            return False
+        # the body rolled out of its plane while the loop commands well beyond the feed-forward (the roll is read only
+        # then: it costs a few microseconds a tick)
+        twisted = (seg_rot is not None and self.p_out > GUARD_TWIST_COMMAND_RATIO ** 2 * self.p_cmd
+                   and segment_twist_deg(seg_rot) > GUARD_TWIST_DEG)
+        if r < 1.0 and not twisted:
             return False
         harmonic = float("nan")
         if bend is not None:
@@ -481,15 +523,19 @@ class LoopGuard:
         saturated = self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd
         # the waveform: the bend's harmonics over the last period beyond the open loop's own (``WaveformWatch``)
         distorted = harmonic > self.harmonic_limit and self.waveform.growing()
-        if not (overshoot or saturated or distorted):
+        if not (overshoot or saturated or distorted or twisted):
             return False
         self.backoffs += 1
         self.times.append(float(t))
-        self.reasons.append("bend over the command" if overshoot else "most muscles saturated" if saturated else
+        self.reasons.append("segments twisted over" if twisted else "bend over the command" if overshoot else
+                            "most muscles saturated" if saturated else
                             f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
                             ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
         self.sat = 0.0
+        if twisted:
+            self.open_for_good = True
+            return True
         if distorted and not (overshoot or saturated) and not self.integral_off:
             # the waveform ran away with the bend's amplitude held: the integrals' doing (on the hybrid at 0.3 BL,
             # Miller's friction, mu_t / mu_f 1, the loop without its fundamental's integral tracked, shape error
@@ -554,8 +600,10 @@ class ShapeTracker:
         # reported, not acted on (``PlantMargin`` says why)
         wavelength_m = float(self.wavelength_bl) * self.body_length
         pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
+        self.wave_smoothing = smoothing_response(pitch_m, wavelength_m)
+        self.muscles_per_wave = wavelength_m / pitch_m if pitch_m > 0.0 else math.inf
         self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
-                                    smoothing_response(pitch_m, wavelength_m))
+                                    self.wave_smoothing)
         self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,
                                 kp=self.kp, ki=self.ki, umax=self.umax, passes=SMOOTHING_PASSES,
                                 harmonics=self.harmonics, ki_h=self.ki_h, lead_cos=self.lead_cos,
@@ -565,6 +613,12 @@ class ShapeTracker:
                                 err=np.zeros(n), tmp=np.zeros(n), ah=np.zeros((n_h, n)), bh=np.zeros((n_h, n)))
         self.s_centre = None
         self._bend = None  # the guard's bend buffer (n - 2,) [strain]
+        # a commanded wave the error's smoothing does not pass is not the loop's to correct (``LOOP_MIN_SMOOTHING``):
+        # the calibrated open loop, held per tick like a back-off's, and the guard has nothing to watch (part of the
+        # loop's protection: ``gait.shape_guard = false`` keeps the loop as it was)
+        self.loop_off = self.guard is not None and self.wave_smoothing < LOOP_MIN_SMOOTHING
+        if self.loop_off:
+            self.gains = scaled_gains(self.gains, 0.0)
         self.full_gains, self.scale = self.gains, (1.0, 1.0)
         if self.guard is not None:
             self.guard.reset()
@@ -582,21 +636,22 @@ class ShapeTracker:
             self.full_gains = self.full_gains._replace(ramp_s=float(ramp_s))
             self.gains = self.gains._replace(ramp_s=float(ramp_s))
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
-        if self.guard is not None:
-            scale = self.guard.gain_scales(t)
+        guard = None if self.loop_off else self.guard
+        if guard is not None:
+            scale = guard.gain_scales(t)
             if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
                 self.gains, self.scale = scaled_gains(self.full_gains, *scale), scale
         track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, plain(self.gains), plain(self.state))
         bend = None
-        if self.guard is not None and obs.seg_pos.shape[0] >= 3:
+        if guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
             pos = np.ascontiguousarray(obs.seg_pos, dtype=np.float64)  # one compiled signature for every body
             if self._bend is None or self._bend.shape[0] != pos.shape[0] - 2:
                 self._bend = np.zeros(pos.shape[0] - 2)
             ground_bend(pos, self.strain_per_kappa, self._bend)  # the ring copies it (WaveformWatch.push)
             bend = self._bend
-        if self.guard is not None and self.guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state,
-                                                       self.umax, bend, self.s_centre[1:-1]):
+        if guard is not None and guard.watch(t, self.gains.ramp_s, waves, self.s_muscle, self.state, self.umax, bend,
+                                             self.s_centre[1:-1], obs.seg_rot):
             # the loop lost its margin: its corrections are dropped, and from the next tick the command is the
             # calibrated open loop's until the guard resumes at a lower gain (``LoopGuard``)
             for arr in (self.state.a, self.state.b, self.state.ah, self.state.bh):
@@ -624,14 +679,20 @@ class ShapeTracker:
         if self.guard is not None:
             gd = self.guard
             out.update({"shape_control_backoffs": float(gd.backoffs),
-                        "shape_control_gain_scale": 0.0 if gd.fallen_back else float(gd.scale),
+                        "shape_control_gain_scale": 0.0 if gd.fallen_back or self.loop_off else float(gd.scale),
                         "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
         return out
 
     def run_status(self) -> tuple[str, str] | None:
         """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good
         (the open loop, or the integrals off): the motion measured there is the open loop's (or a lower gain's, or
-        the proportional loop's), because the loop drove the shape away; None otherwise."""
+        the proportional loop's), because the loop drove the shape away; ("ok", why) when the loop left a commanded
+        wave it cannot see to the calibrated open loop (``LOOP_MIN_SMOOTHING``); None otherwise."""
+        if self.loop_off:
+            return ("ok", f"the shape loop left the commanded wave to the calibrated open loop: "
+                          f"{self.muscles_per_wave:.1f} muscle segments a wave, which the loop's smoothing along the "
+                          f"body passes at {self.wave_smoothing:.3f}, under {LOOP_MIN_SMOOTHING:g} (it cannot see "
+                          f"that wave)")
         gd = self.guard
         if gd is None or not gd.acted_in_window():
             return None
@@ -640,6 +701,6 @@ class ShapeTracker:
             f"resumed at {gd.scale:g} of its gains" + (", its integrals off" if gd.integral_off else "")
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
-                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, or the waveform's "
-                f"harmonics beyond the open loop's) and was backed off (to the calibrated open loop for a period, or "
-                f"its integrals off) at t = {when} s; it {end}")
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, segments twisted out of "
+                f"the plane, or the waveform's harmonics beyond the open loop's) and was backed off (to the calibrated "
+                f"open loop for a period, or its integrals off) at t = {when} s; it {end}")

@@ -32,7 +32,8 @@ from ..core.errors import InputError
 
 MAX_JSON_DEPTH = 64  # objects and arrays nested deeper than anything the suite writes (case_json: 4)
 MAX_JSON_BYTES = 512_000_000  # a 20,000-case matrix.json is a few MB; a results row a few kB
-STATUSES = ("ok", "unstable", "error", "timeout")  # runner.RunResult.status, and executors' "timeout"
+STATUSES = ("ok", "unstable", "error", "timeout", "controller_unstable")  # runner.RunResult.status (the shape guard's
+# "controller_unstable", issue 44), and executors' "timeout"
 AXES = ("creature", "body", "gait", "scenario", "seed")
 CASE_SECTIONS = ("creature", "body", "gait", "scenario")  # Case.to_dict() sections the report reads
 
