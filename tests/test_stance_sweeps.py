@@ -39,11 +39,16 @@ def _case_json(head=0.5, control=0.5, wave="retrograde"):
                        "scenario": {"brain": "control", "control_speed_m_s": [control]}})
 
 
+# each body's stiffness key in the shipped sweeps (the report reads it from the grid, naming no body)
+STIFFNESS_KEYS = {"hybrid": "body.youngs_modulus_pa", "fem": "body.youngs_modulus_pa",
+                  "massspring": "body.link_stiffness_n_m"}
+
+
 def _frame(rows):
     """Matrix rows (``report.matrix_data``'s columns) from dicts of body, stiffness, x, metrics, status."""
     out = []
     for r in rows:
-        key = S.STIFFNESS_KEYS[r["body"]]
+        key = STIFFNESS_KEYS[r["body"]]
         out.append({"creature": "centipede", "body": r["body"], "status": r.get("status", "ok"),
                     f"grid.{key}": r["k"], "case_json": _case_json(control=r.get("v", 0.5), wave=r.get("wave", "retrograde")),
                     f"grid.{S.SWING_KEY}": r.get("swing", 4.0), f"grid.{S.SPEED_KEY}": [r.get("v", 0.5)],
