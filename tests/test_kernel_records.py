@@ -70,9 +70,6 @@ NOT_YET_CONVERTED: Counter = Counter({
     ("controllers/myriapod/compiled.py", "controller_step", "unpacks 44"): 1,
     ("fused/legged_walk.py", "FusedLeggedWalk.advance", "builds 9"): 1,
     ("fused/legged_walk.py", "_control", "unpacks 9"): 1,
-    # the hybrid's dynamic state as a list of 12 arrays (save and restore around ``compile``; Python only): issue
-    # 42, not yet converted (the body's State record)
-    ("bodies/hybrid/body.py", "BodyHybrid._state_arrays", "builds 12"): 1,
 })
 
 
