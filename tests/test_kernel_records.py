@@ -33,34 +33,6 @@ _REGISTERS = {"register", "register_link"}
 # converted.  A ratchet: a new site fails the test, and so does a listed one that is gone (remove it here), so
 # the list only shrinks.
 NOT_YET_CONVERTED: Counter = Counter({
-    # The FEM elasticity's per-tet helpers (inlined into the tet loops): the nine scalars of a 3x3 matrix (F, R, U,
-    # P) with a quaternion, invariants or flags, passed and returned in registers.  A matrix's elements are
-    # positional by nature, but 10 to 21 values returned as one tuple are still counted by position: issue 42,
-    # not yet converted (a named record of scalars, e.g. ``TetF(i0, i1, i2, i3, F)``, compiles to the same
-    # registers; to be measured on the FEM bodies' regress entries).
-    ("bodies/fem/kernels.py", "_fcr_rotation", "builds 14"): 2,
-    ("bodies/fem/kernels.py", "_fcr_rotation", "unpacks 21"): 1,
-    ("bodies/fem/kernels.py", "_fcr_rotation", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_fcr_stress", "builds 10"): 1,
-    ("bodies/fem/kernels.py", "_fcr_stress", "unpacks 9"): 2,
-    ("bodies/fem/kernels.py", "_fixup_tet", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "_fixup_tet", "unpacks 14"): 1,
-    ("bodies/fem/kernels.py", "_newton_step", "unpacks 10"): 1,
-    ("bodies/fem/kernels.py", "_newton_step_h", "builds 10"): 1,
-    ("bodies/fem/kernels.py", "_newton_step_h", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_quat_to_rot", "builds 9"): 1,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "unpacks 10"): 2,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_store_nodal_forces", "unpacks 10"): 1,
-    ("bodies/fem/kernels.py", "_svd3_core", "builds 21"): 1,
-    ("bodies/fem/kernels.py", "_tet_F", "builds 13"): 1,
-    ("bodies/fem/kernels.py", "deformation_gradients", "unpacks 13"): 1,
-    ("bodies/fem/kernels.py", "elastic_energy", "unpacks 13"): 1,
-    ("bodies/fem/kernels.py", "fcr_rotation", "unpacks 14"): 1,
-    ("bodies/fem/kernels.py", "first_piola", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "first_piola", "unpacks 21"): 1,
-    ("bodies/fem/kernels.py", "tet_invariants", "unpacks 13"): 1,
     # The fused legged walk's controller arrays (44, ``ControllerState.pack``) and timeline buffers (9), positional:
     # issue 42, not yet converted.  Named records built in ``legged_chunk`` and read in the inlined ``_control``
     # gave a timeline of zeros (times, then brain modes) under numba 0.68.1, which was not understood in time.
