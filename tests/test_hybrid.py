@@ -213,6 +213,23 @@ def test_place_attached_and_momenta_kernels_match_numpy():
     np.testing.assert_allclose(L_k, L, rtol=1e-13)
 
 
+def test_compile_snapshot_restores_every_dynamic_array_by_name():
+    """``compile``'s save/restore (``HybridDynamicState``): every named array written after the snapshot is
+    back to its saved value, in place (the kernels' packs hold the live arrays)."""
+    case = resolve_case("chain", "hybrid", "fig4-drop")
+    b = BodyHybrid(case, build_world(case))
+    saved = b._state()
+    live = b._state_arrays()
+    ids = {name: id(a) for name, a in live._asdict().items()}
+    for a in live:
+        a[...] = a + 1 if a.dtype != bool else ~a
+    b._restore(saved)
+    for name, a in b._state_arrays()._asdict().items():
+        assert id(a) == ids[name], name
+        np.testing.assert_array_equal(a, getattr(saved, name), err_msg=name)
+        assert not np.shares_memory(a, getattr(saved, name)), name
+
+
 # ------------------------------------------------------------------------------------
 # Fig. 4: the chain dropped onto a slippery plane
 # ------------------------------------------------------------------------------------

@@ -29,51 +29,10 @@ PACK_PACKAGES = ("bodies", "controllers", "fused", "kinematics", "world")
 _KERNEL_DECORATORS = {"njit", "jit"}
 _REGISTERS = {"register", "register_link"}
 
-# Sites not converted yet, each (file, function, what) with how many times it occurs: issue 42, not yet
-# converted.  A ratchet: a new site fails the test, and so does a listed one that is gone (remove it here), so
-# the list only shrinks.
-NOT_YET_CONVERTED: Counter = Counter({
-    # The FEM elasticity's per-tet helpers (inlined into the tet loops): the nine scalars of a 3x3 matrix (F, R, U,
-    # P) with a quaternion, invariants or flags, passed and returned in registers.  A matrix's elements are
-    # positional by nature, but 10 to 21 values returned as one tuple are still counted by position: issue 42,
-    # not yet converted (a named record of scalars, e.g. ``TetF(i0, i1, i2, i3, F)``, compiles to the same
-    # registers; to be measured on the FEM bodies' regress entries).
-    ("bodies/fem/kernels.py", "_fcr_rotation", "builds 14"): 2,
-    ("bodies/fem/kernels.py", "_fcr_rotation", "unpacks 21"): 1,
-    ("bodies/fem/kernels.py", "_fcr_rotation", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_fcr_stress", "builds 10"): 1,
-    ("bodies/fem/kernels.py", "_fcr_stress", "unpacks 9"): 2,
-    ("bodies/fem/kernels.py", "_fixup_tet", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "_fixup_tet", "unpacks 14"): 1,
-    ("bodies/fem/kernels.py", "_newton_step", "unpacks 10"): 1,
-    ("bodies/fem/kernels.py", "_newton_step_h", "builds 10"): 1,
-    ("bodies/fem/kernels.py", "_newton_step_h", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_quat_to_rot", "builds 9"): 1,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "unpacks 10"): 2,
-    ("bodies/fem/kernels.py", "_rotation_stress_pass", "unpacks 9"): 1,
-    ("bodies/fem/kernels.py", "_store_nodal_forces", "unpacks 10"): 1,
-    ("bodies/fem/kernels.py", "_svd3_core", "builds 21"): 1,
-    ("bodies/fem/kernels.py", "_tet_F", "builds 13"): 1,
-    ("bodies/fem/kernels.py", "deformation_gradients", "unpacks 13"): 1,
-    ("bodies/fem/kernels.py", "elastic_energy", "unpacks 13"): 1,
-    ("bodies/fem/kernels.py", "fcr_rotation", "unpacks 14"): 1,
-    ("bodies/fem/kernels.py", "first_piola", "builds 9"): 2,
-    ("bodies/fem/kernels.py", "first_piola", "unpacks 21"): 1,
-    ("bodies/fem/kernels.py", "tet_invariants", "unpacks 13"): 1,
-    # The fused legged walk's controller arrays (44, ``ControllerState.pack``) and timeline buffers (9), positional:
-    # issue 42, not yet converted.  Named records built in ``legged_chunk`` and read in the inlined ``_control``
-    # gave a timeline of zeros (times, then brain modes) under numba 0.68.1, which was not understood in time.
-    ("controllers/myriapod/compiled.py", "ControllerState.__init__", "builds 15"): 1,
-    ("controllers/myriapod/compiled.py", "ControllerState.pack", "builds 15"): 1,
-    ("controllers/myriapod/compiled.py", "ControllerState.pack", "builds 23"): 1,
-    ("controllers/myriapod/compiled.py", "controller_step", "unpacks 44"): 1,
-    ("fused/legged_walk.py", "FusedLeggedWalk.advance", "builds 9"): 1,
-    ("fused/legged_walk.py", "_control", "unpacks 9"): 1,
-    # the hybrid's dynamic state as a list of 12 arrays (save and restore around ``compile``; Python only): issue
-    # 42, not yet converted (the body's State record)
-    ("bodies/hybrid/body.py", "BodyHybrid._state_arrays", "builds 12"): 1,
-})
+# Sites not converted yet, each (file, function, what) with how many times it occurs.  A ratchet: a new site fails
+# the test, and so does a listed one that is gone (remove it here), so the list only shrinks.  Empty: every site
+# the scan found on 1cefd33 is converted (issue 42 item 1).
+NOT_YET_CONVERTED: Counter = Counter()
 
 
 def _decorator_name(d: ast.expr) -> str:

@@ -38,6 +38,8 @@ controller ticking slower than every step, a controller of another class, a body
 """
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numpy as np
 from numba import njit
 
@@ -46,6 +48,22 @@ from ..bodies.legged_chunk import LeggedChunkBody, copy_rows
 from ..bodies.step_status import OK
 from ..controllers.myriapod import compiled as CC
 from ..controllers.myriapod.controller import MyriapodController
+from ..core.kernel_records import plain
+
+# The chunk's timeline buffers, one row per sample (step 4), capacity n_steps // record_every + 1 rows: the
+# controller's record t [s], states (n_legs,) int8, tips (n_legs, 3) [m], brain mode, antenna contact (2,) bool
+# and the segment centres (n_seg, 3) [m] before the support; the monitor's segment poses c (n_seg, 3) [m],
+# R (n_seg, 3, 3) and link centres (n_seg - 1, 3) [m] after it.  Crosses into ``legged_chunk`` as a plain tuple
+# (``plain``) and is named again there.
+Timeline = namedtuple("Timeline", "t states tips brain contact centres c R links")
+# Where the controller's fields of a Timeline sit in the plain tuple REC.  ``_control`` stores its row through
+# REC's items, not through ``Timeline(*REC)``: numba's dead-code elimination (run on a kernel that inlines
+# overloads, as ``legged_chunk`` inlines the body's functions) does not see that a record built in compiled code
+# aliases the arrays it was built from, and dropped the stores into them (the timeline came back as zeros; numba
+# 0.68.1, its alias analysis follows getitem, not a constructor call).  Reads, and arrays handed to a call
+# (``copy_rows``, ``LC.sample``), are not affected.
+_REC_T, _REC_STATES, _REC_TIPS, _REC_BRAIN, _REC_CONTACT, _REC_CENTRES = (
+    Timeline._fields.index(f) for f in ("t", "states", "tips", "brain", "contact", "centres"))
 
 
 def unsupported_reason(body, controller, steps_per_tick: int, act) -> str | None:
@@ -65,18 +83,20 @@ def unsupported_reason(body, controller, steps_per_tick: int, act) -> str | None
 # the whole controller's machine code once per layer (each compiled function links its callees' code and
 # compiles it again), about 10 s of a cold start (README Development notes).
 @njit(cache=True, error_model="numpy", inline="always")
-def _control(t, C, c, R, REC, n_rec):
+def _control(t, C, ca, c, R, REC, n_rec):
     """Step 2 of the module docstring on the segment poses c (n_seg, 3) [m], R (n_seg, 3, 3) for the step
     starting at t [s], and the controller's half of step 4 (row n_rec of REC); returns whether recorded.
 
-    C = (fs, ints, A, rnd, ant_rnd, err_scratch): the controller (``compiled.controller_step``).
-    REC: the timeline buffers (``legged_chunk``).
+    C = (fs, ints, A, rnd, ant_rnd, err_scratch): the controller (``compiled.controller_step``; A its
+    ``ControllerArrays`` as a plain tuple, ca the same named).  REC: the ``Timeline`` as a plain tuple
+    (``legged_chunk``), written through its items (``_REC_T``...).
     """
     fs, ints, A, rnd, ant_rnd, err_scratch = C
-    rec_t, rec_states, rec_tips, rec_brain, rec_contact, rec_centres, rec_c, rec_R, rec_links = REC
-    states, tips, contact = A[CC.A_STATES], A[CC.A_TIPS], A[CC.A_CONTACT]
+    states, tips, contact = ca.states, ca.tips, ca.contact
     recorded = CC.controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch)
     if recorded:
+        rec_t, rec_states, rec_tips = REC[_REC_T], REC[_REC_STATES], REC[_REC_TIPS]
+        rec_brain, rec_contact, rec_centres = REC[_REC_BRAIN], REC[_REC_CONTACT], REC[_REC_CENTRES]
         rec_t[n_rec] = t
         for j in range(states.shape[0]):
             rec_states[n_rec, j] = states[j]
@@ -94,23 +114,21 @@ def legged_chunk(t0, dt, n_steps, C, P, REC):
     """n_steps of the module docstring's steps 1-5 from t0 [s], time step dt [s].
 
     C: the controller (``_control``); P: the body's pack (``bodies.legged_chunk``, its ``legged_pack``).
-    Timeline buffers REC = (rec_t [s], rec_states (int8), rec_tips [m], rec_brain, rec_contact (bool, 2),
-    rec_centres (n_seg, 3) [m] before the support, rec_c (n_seg, 3) [m], rec_R (n_seg, 3, 3), rec_links
-    (n_links, 3) [m] after it), capacity n_steps // record_every + 1 rows.
+    REC: the timeline buffers, a ``Timeline`` as a plain tuple.
     Returns (steps done, status code, rows recorded); a blow-up ends the chunk after its step.
     """
-    A = C[2]
-    seg_kin, c_T, R_T = A[CC.A_KINEMATIC], A[CC.A_C_T], A[CC.A_R_T]
-    rec_c, rec_R, rec_links = REC[6], REC[7], REC[8]
+    ca = CC.ControllerArrays(*C[2])
+    seg_kin, c_T, R_T = ca.kinematic, ca.c_T, ca.R_T
+    rec = Timeline(*REC)
     n_rec = np.int64(0)
     for k in range(n_steps):
         c, R = LC.poses(P)                                     # 1. sense
-        recorded = _control(t0 + k * dt, C, c, R, REC, n_rec)  # 2. controller (and its timeline row)
-        if LC.carry_feet(P, seg_kin, c_T, R_T, A[CC.A_STATES], A[CC.A_TIPS]):  # 3. support
+        recorded = _control(t0 + k * dt, C, ca, c, R, REC, n_rec)  # 2. controller (and its timeline row)
+        if LC.carry_feet(P, seg_kin, c_T, R_T, ca.states, ca.tips):  # 3. support
             # feet slid (dynamic stance): the tips' distances the controller keeps are no longer theirs
             C[1][CC.I_TIP_PHI_OK] = 0
         if recorded:                                           # 4. the monitor's sample
-            LC.sample(P, rec_c[n_rec], rec_R[n_rec], rec_links[n_rec])
+            LC.sample(P, rec.c[n_rec], rec.R[n_rec], rec.links[n_rec])
             n_rec += 1
         done, status = LC.step(P)                              # 5. one body step
         if status != OK:
@@ -154,8 +172,9 @@ class FusedLeggedWalk:
         A = cs.pack()
         cs.draws(n)
         C = (cs.fs, cs.ints, A, cs.rnd, cs.ant_rnd, self.err_scratch)
-        REC = (self.rec_t, self.rec_states, self.rec_tips, self.rec_brain, self.rec_contact, self.rec_centres,
-               self.rec_c, self.rec_R, self.rec_links)
+        REC = plain(Timeline(t=self.rec_t, states=self.rec_states, tips=self.rec_tips, brain=self.rec_brain,
+                             contact=self.rec_contact, centres=self.rec_centres, c=self.rec_c, R=self.rec_R,
+                             links=self.rec_links))
         k, code, n_rec = legged_chunk(float(t0), float(ctrl.dt), int(n), C, self.body.legged_pack(), REC)
         cs.unpack()
         cs.settle()

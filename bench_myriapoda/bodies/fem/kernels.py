@@ -62,7 +62,7 @@ That SVD costs a few hundred ns per element, and a warm start does not help it:
 near rest F^T F ~ I, so its eigenvectors are ill-defined and jump from step to
 step.  The time step therefore gets R another way.  R = U V^T is the maximiser of
 tr(R^T F) over SO(3) (Procrustes with the det constraint); it is unique whenever
-sigma_2 + sigma_3 > 0, even where the singular vectors are not.  ``_newton_step``
+sigma_2 + sigma_3 > 0, even where the singular vectors are not.  ``_newton_step_h``
 is one Newton step of that maximisation in exponential coordinates,
 R <- R exp([w]), w = -(tr(M) I - sym(M))^-1 axial(M - M^T), M = R^T F, applied to
 a quaternion (q <- q (1, w/2)).  Started near the maximum it converges
@@ -145,6 +145,23 @@ NEWTON_ERR = 1e-12
 _NEWTON_ERR2 = NEWTON_ERR * NEWTON_ERR
 _NEWTON_MAX_HH = 0.25 * _NEWTON_MAX_STEP * _NEWTON_MAX_STEP
 
+# Named records of the per-tet helpers' scalars (issue 42: no positional packs).  They are built and read inside
+# compiled code only, where numba keeps a namedtuple's fields in registers as it keeps a plain tuple's or single
+# scalars: the same instructions in the same order, so the results are bit for bit those of the scalars.
+# A 3x3 matrix, row-major (m01: row 0, column 1).
+Mat3 = namedtuple("Mat3", "m00 m01 m02 m10 m11 m12 m20 m21 m22")
+# A quaternion (w, x, y, z), w the scalar part.
+Quat = namedtuple("Quat", "w x y z")
+# ``_svd3_core``'s signed SVD F = U diag(s0, s1, s2) V^T: U, V Mat3 proper rotations, s0 >= s1 >= |s2|.
+SVD3 = namedtuple("SVD3", "U s0 s1 s2 V")
+# ``_newton_step_h``'s step: the new (unnormalised) quaternion (w, x, y, z), hh = |h|^2, ok, the half step
+# (hx, hy, hz) and small (flat, so that its fields unpack as the scalars they are).
+NewtonStep = namedtuple("NewtonStep", "w x y z hh ok hx hy hz small")
+# ``_fcr_rotation``'s result: R (Mat3), q (Quat, unit) and n_iter (Newton steps, -1: the SVD decided).
+FCRRotation = namedtuple("FCRRotation", "R q n_iter")
+# ``_fcr_stress``'s result: the first Piola-Kirchhoff stress P (Mat3) [Pa] and J = det F.
+FCRStress = namedtuple("FCRStress", "P J")
+
 
 # --------------------------------------------------------------------------------------
 # 3x3 SVD / polar decomposition
@@ -173,8 +190,7 @@ def _needs_rotation(app, aqq, apq, floor):
 def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
     """Signed SVD F = U diag(s) V^T of a 3x3 matrix held in scalars.
 
-    Returns (u00..u22, s0, s1, s2, v00..v22) row-major: U, V proper rotations,
-    s0 >= s1 >= |s2|, s2 < 0 iff det F < 0.
+    Returns an ``SVD3`` record: U, V (``Mat3``) proper rotations, s0 >= s1 >= |s2|, s2 < 0 iff det F < 0.
     """
     # S = F^T F
     a00 = f00 * f00 + f10 * f10 + f20 * f20
@@ -330,9 +346,43 @@ def _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22):
     sg0 = u00 * b00 + u10 * b10 + u20 * b20
     sg1 = u01 * b01 + u11 * b11 + u21 * b21
     sg2 = u02 * b02 + u12 * b12 + u22 * b22
-    return (u00, u01, u02, u10, u11, u12, u20, u21, u22,
-            sg0, sg1, sg2,
-            v00, v01, v02, v10, v11, v12, v20, v21, v22)
+    return SVD3(U=Mat3(u00, u01, u02, u10, u11, u12, u20, u21, u22), s0=sg0, s1=sg1, s2=sg2,
+                V=Mat3(v00, v01, v02, v10, v11, v12, v20, v21, v22))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _u_vt(svd):
+    """R = U V^T of an ``SVD3`` (``Mat3``): r_ij = u_i0 v_j0 + u_i1 v_j1 + u_i2 v_j2, summed left to right."""
+    U, V = svd.U, svd.V
+    return Mat3(U.m00 * V.m00 + U.m01 * V.m01 + U.m02 * V.m02,
+                U.m00 * V.m10 + U.m01 * V.m11 + U.m02 * V.m12,
+                U.m00 * V.m20 + U.m01 * V.m21 + U.m02 * V.m22,
+                U.m10 * V.m00 + U.m11 * V.m01 + U.m12 * V.m02,
+                U.m10 * V.m10 + U.m11 * V.m11 + U.m12 * V.m12,
+                U.m10 * V.m20 + U.m11 * V.m21 + U.m12 * V.m22,
+                U.m20 * V.m00 + U.m21 * V.m01 + U.m22 * V.m02,
+                U.m20 * V.m10 + U.m21 * V.m11 + U.m22 * V.m12,
+                U.m20 * V.m20 + U.m21 * V.m21 + U.m22 * V.m22)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _mat3_of(A):
+    """The (3, 3) array A as a ``Mat3``."""
+    return Mat3(A[0, 0], A[0, 1], A[0, 2], A[1, 0], A[1, 1], A[1, 2], A[2, 0], A[2, 1], A[2, 2])
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _mat3_into(M, A):
+    """Write the ``Mat3`` M into the (3, 3) array A (overwritten)."""
+    A[0, 0] = M.m00
+    A[0, 1] = M.m01
+    A[0, 2] = M.m02
+    A[1, 0] = M.m10
+    A[1, 1] = M.m11
+    A[1, 2] = M.m12
+    A[2, 0] = M.m20
+    A[2, 1] = M.m21
+    A[2, 2] = M.m22
 
 
 @njit(cache=True, error_model="numpy")
@@ -343,13 +393,11 @@ def svd3(F, U, sigma, V):
     rotations; sigma[0] >= sigma[1] >= |sigma[2]| and sigma[2] < 0 iff det F < 0.
     """
     r = _svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
-    for i in range(3):
-        for j in range(3):
-            U[i, j] = r[3 * i + j]
-            V[i, j] = r[12 + 3 * i + j]
-    sigma[0] = r[9]
-    sigma[1] = r[10]
-    sigma[2] = r[11]
+    _mat3_into(r.U, U)
+    _mat3_into(r.V, V)
+    sigma[0] = r.s0
+    sigma[1] = r.s1
+    sigma[2] = r.s2
 
 
 @njit(cache=True, error_model="numpy")
@@ -367,10 +415,7 @@ def polar_rotation(F, R):
     F = R S; for inverted F it is the rotation closest to F (the inversion is
     carried by S, Irving et al. 2004).
     """
-    r = _svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
-    for i in range(3):
-        for j in range(3):
-            R[i, j] = r[3 * i] * r[12 + 3 * j] + r[3 * i + 1] * r[12 + 3 * j + 1] + r[3 * i + 2] * r[12 + 3 * j + 2]
+    _mat3_into(_u_vt(_svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])), R)
 
 
 # --------------------------------------------------------------------------------------
@@ -378,7 +423,7 @@ def polar_rotation(F, R):
 # --------------------------------------------------------------------------------------
 @njit(cache=True, inline="always", error_model="numpy")
 def _quat_to_rot(w, x, y, z):
-    """Rotation matrix (row-major 9-tuple) of the quaternion (w, x, y, z).
+    """Rotation matrix (``Mat3``) of the quaternion (w, x, y, z).
 
     Homogeneous form: exact for any non-zero quaternion, so |q| need not be 1.
     """
@@ -395,14 +440,14 @@ def _quat_to_rot(w, x, y, z):
     yy = y * ys
     yz = y * zs
     zz = z * zs
-    return (1.0 - (yy + zz), xy - wz, xz + wy,
-            xy + wz, 1.0 - (xx + zz), yz - wx,
-            xz - wy, yz + wx, 1.0 - (xx + yy))
+    return Mat3(1.0 - (yy + zz), xy - wz, xz + wy,
+                xy + wz, 1.0 - (xx + zz), yz - wx,
+                xz - wy, yz + wx, 1.0 - (xx + yy))
 
 
 @njit(cache=True, error_model="numpy")
 def _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22):
-    """Unit quaternion (w, x, y, z) of a rotation matrix (Shepperd's method)."""
+    """Unit quaternion (``Quat``) of a rotation matrix given row-major (Shepperd's method)."""
     tr = r00 + r11 + r22
     if tr > 0.0:
         s = 2.0 * math.sqrt(tr + 1.0)
@@ -417,14 +462,14 @@ def _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22):
         s = 2.0 * math.sqrt(1.0 + r22 - r00 - r11)
         w, x, y, z = (r10 - r01) / s, (r02 + r20) / s, (r12 + r21) / s, 0.25 * s
     n = 1.0 / math.sqrt(w * w + x * x + y * y + z * z)
-    return w * n, x * n, y * n, z * n
+    return Quat(w * n, x * n, y * n, z * n)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     """One Newton step towards argmax_R tr(R^T F) from the rotation of q (module docstring).
 
-    Branch-free so that loops over tets vectorise.  Returns (q', hh, ok, h, small):
+    Branch-free so that loops over tets vectorise.  Returns a ``NewtonStep`` (q', hh, ok, h, small):
     the updated (unnormalised) quaternion q (1, h), h = w/2 the half step (3
     scalars), hh = |h|^2, ok = the Newton Hessian is positive definite and the step
     is below _NEWTON_MAX_STEP, and small = ok and twice the rotation error left
@@ -444,16 +489,17 @@ def _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     SVD): |e| matched the error left within 0.4 % wherever it exceeded 1e-13 rad
     (within 14 % above 1e-14, where the reference's round-off counts).
     """
-    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
-    m00 = r00 * f00 + r10 * f10 + r20 * f20
-    m01 = r00 * f01 + r10 * f11 + r20 * f21
-    m02 = r00 * f02 + r10 * f12 + r20 * f22
-    m10 = r01 * f00 + r11 * f10 + r21 * f20
-    m11 = r01 * f01 + r11 * f11 + r21 * f21
-    m12 = r01 * f02 + r11 * f12 + r21 * f22
-    m20 = r02 * f00 + r12 * f10 + r22 * f20
-    m21 = r02 * f01 + r12 * f11 + r22 * f21
-    m22 = r02 * f02 + r12 * f12 + r22 * f22
+    R = _quat_to_rot(qw, qx, qy, qz)
+    # M = R^T F
+    m00 = R.m00 * f00 + R.m10 * f10 + R.m20 * f20
+    m01 = R.m00 * f01 + R.m10 * f11 + R.m20 * f21
+    m02 = R.m00 * f02 + R.m10 * f12 + R.m20 * f22
+    m10 = R.m01 * f00 + R.m11 * f10 + R.m21 * f20
+    m11 = R.m01 * f01 + R.m11 * f11 + R.m21 * f21
+    m12 = R.m01 * f02 + R.m11 * f12 + R.m21 * f22
+    m20 = R.m02 * f00 + R.m12 * f10 + R.m22 * f20
+    m21 = R.m02 * f01 + R.m12 * f11 + R.m22 * f21
+    m22 = R.m02 * f02 + R.m12 * f12 + R.m22 * f22
     # gradient axial(M - M^T) and Hessian H = tr(M) I - sym(M)
     g0 = m12 - m21
     g1 = m20 - m02
@@ -490,15 +536,7 @@ def _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     nx = qx + qw * hx + (qy * hz - qz * hy)
     ny = qy + qw * hy + (qz * hx - qx * hz)
     nz = qz + qw * hz + (qx * hy - qy * hx)
-    return nw, nx, ny, nz, hh, ok, hx, hy, hz, small
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
-    """``_newton_step_h`` without the half step h: (q', hh, ok)."""
-    nw, nx, ny, nz, hh, ok, _hx, _hy, _hz, _small = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                                  qw, qx, qy, qz)
-    return nw, nx, ny, nz, hh, ok
+    return NewtonStep(w=nw, x=nx, y=ny, z=nz, hh=hh, ok=ok, hx=hx, hy=hy, hz=hz, small=small)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -517,30 +555,19 @@ def _fcr_rotation(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz):
     """Rotation R = U V^T of the signed SVD of F: Newton from q, SVD fallback.
 
     (qw, qx, qy, qz): starting rotation (any non-zero quaternion; the previous
-    step's is best).  Returns (R row-major 9 scalars, qw, qx, qy, qz, n_iter) with
-    n_iter = -1 when the SVD fallback was used.
+    step's is best).  Returns an ``FCRRotation`` (R, q, n_iter) with n_iter = -1 when
+    the SVD fallback was used.
     """
     for it in range(_NEWTON_MAX_ITER):
-        nw, nx, ny, nz, hh, ok = _newton_step(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz)
-        if not ok:
+        s = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, qw, qx, qy, qz)
+        if not s.ok:
             break
-        qw, qx, qy, qz = _renormalize(nw, nx, ny, nz)
-        if hh < _NEWTON_TOL_HH:
-            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(qw, qx, qy, qz)
-            return r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, it + 1
-    (u00, u01, u02, u10, u11, u12, u20, u21, u22, _s0, _s1, _s2,
-     v00, v01, v02, v10, v11, v12, v20, v21, v22) = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
-    r00 = u00 * v00 + u01 * v01 + u02 * v02
-    r01 = u00 * v10 + u01 * v11 + u02 * v12
-    r02 = u00 * v20 + u01 * v21 + u02 * v22
-    r10 = u10 * v00 + u11 * v01 + u12 * v02
-    r11 = u10 * v10 + u11 * v11 + u12 * v12
-    r12 = u10 * v20 + u11 * v21 + u12 * v22
-    r20 = u20 * v00 + u21 * v01 + u22 * v02
-    r21 = u20 * v10 + u21 * v11 + u22 * v12
-    r22 = u20 * v20 + u21 * v21 + u22 * v22
-    qw, qx, qy, qz = _rot_to_quat(r00, r01, r02, r10, r11, r12, r20, r21, r22)
-    return r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, -1
+        qw, qx, qy, qz = _renormalize(s.w, s.x, s.y, s.z)
+        if s.hh < _NEWTON_TOL_HH:
+            return FCRRotation(R=_quat_to_rot(qw, qx, qy, qz), q=Quat(qw, qx, qy, qz), n_iter=it + 1)
+    R = _u_vt(_svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22))
+    return FCRRotation(R=R, q=_rot_to_quat(R.m00, R.m01, R.m02, R.m10, R.m11, R.m12, R.m20, R.m21, R.m22),
+                       n_iter=-1)
 
 
 @njit(cache=True, error_model="numpy")
@@ -551,23 +578,14 @@ def fcr_rotation(F, q, R):
     with the result; R: (3, 3) OVERWRITTEN.  Returns the number of Newton steps,
     or -1 if the SVD fallback was used.
     """
-    (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, it) = _fcr_rotation(
-        F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2],
-        q[0], q[1], q[2], q[3])
-    R[0, 0] = r00
-    R[0, 1] = r01
-    R[0, 2] = r02
-    R[1, 0] = r10
-    R[1, 1] = r11
-    R[1, 2] = r12
-    R[2, 0] = r20
-    R[2, 1] = r21
-    R[2, 2] = r22
-    q[0] = qw
-    q[1] = qx
-    q[2] = qy
-    q[3] = qz
-    return it
+    r = _fcr_rotation(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2],
+                      q[0], q[1], q[2], q[3])
+    _mat3_into(r.R, R)
+    q[0] = r.q.w
+    q[1] = r.q.x
+    q[2] = r.q.y
+    q[3] = r.q.z
+    return r.n_iter
 
 
 # --------------------------------------------------------------------------------------
@@ -612,7 +630,7 @@ def rest_shape(X, tets, Dm_inv, vol):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _tet_F(x, tets, Dm_inv, e):
-    """F = Ds Dm^-1 of tet e (eqs. 2-4): node ids, then F as 9 scalars row-major."""
+    """F = Ds Dm^-1 of tet e (eqs. 2-4), a ``Mat3``."""
     i0, i1, i2, i3 = tets[e, 0], tets[e, 1], tets[e, 2], tets[e, 3]
     x0 = x[i0, 0]
     y0 = x[i0, 1]
@@ -638,7 +656,7 @@ def _tet_F(x, tets, Dm_inv, e):
     f20 = d20 * m00 + d21 * m10 + d22 * m20
     f21 = d20 * m01 + d21 * m11 + d22 * m21
     f22 = d20 * m02 + d21 * m12 + d22 * m22
-    return i0, i1, i2, i3, f00, f01, f02, f10, f11, f12, f20, f21, f22
+    return Mat3(f00, f01, f02, f10, f11, f12, f20, f21, f22)
 
 
 @njit(cache=True, error_model="numpy")
@@ -649,16 +667,7 @@ def deformation_gradients(x, tets, Dm_inv, F):
     Overwrites F: (n_tets, 3, 3) [-].
     """
     for e in range(tets.shape[0]):
-        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
-        F[e, 0, 0] = f00
-        F[e, 0, 1] = f01
-        F[e, 0, 2] = f02
-        F[e, 1, 0] = f10
-        F[e, 1, 1] = f11
-        F[e, 1, 2] = f12
-        F[e, 2, 0] = f20
-        F[e, 2, 1] = f21
-        F[e, 2, 2] = f22
+        _mat3_into(_tet_F(x, tets, Dm_inv, e), F[e])
 
 
 @njit(cache=True, error_model="numpy")
@@ -791,11 +800,11 @@ def _fcr_stress(F, two_mu, lam, R):
 
     P = 2 mu (F - R) + lam (J - 1) cof(F), using J F^-T = cof(F) so that P stays
     finite as J -> 0.  The columns of cof(F) are f1 x f2, f2 x f0, f0 x f1 (f_k the
-    columns of F).  F, R: tuples of their 9 entries, row-major (inlined, scalars in registers).
-    Returns (P row-major, J).
+    columns of F).  F, R: ``Mat3`` (inlined, scalars in registers).  Returns an ``FCRStress`` (P, J).
     """
-    f00, f01, f02, f10, f11, f12, f20, f21, f22 = F
-    r00, r01, r02, r10, r11, r12, r20, r21, r22 = R
+    f00, f01, f02 = F.m00, F.m01, F.m02
+    f10, f11, f12 = F.m10, F.m11, F.m12
+    f20, f21, f22 = F.m20, F.m21, F.m22
     c00 = f11 * f22 - f21 * f12
     c10 = f21 * f02 - f01 * f22
     c20 = f01 * f12 - f11 * f02
@@ -807,11 +816,12 @@ def _fcr_stress(F, two_mu, lam, R):
     c22 = f00 * f11 - f10 * f01
     J = f00 * c00 + f10 * c10 + f20 * c20
     k = lam * (J - 1.0)
-    return (two_mu * (f00 - r00) + k * c00, two_mu * (f01 - r01) + k * c01,
-            two_mu * (f02 - r02) + k * c02, two_mu * (f10 - r10) + k * c10,
-            two_mu * (f11 - r11) + k * c11, two_mu * (f12 - r12) + k * c12,
-            two_mu * (f20 - r20) + k * c20, two_mu * (f21 - r21) + k * c21,
-            two_mu * (f22 - r22) + k * c22, J)
+    return FCRStress(P=Mat3(two_mu * (f00 - R.m00) + k * c00, two_mu * (f01 - R.m01) + k * c01,
+                            two_mu * (f02 - R.m02) + k * c02, two_mu * (f10 - R.m10) + k * c10,
+                            two_mu * (f11 - R.m11) + k * c11, two_mu * (f12 - R.m12) + k * c12,
+                            two_mu * (f20 - R.m20) + k * c20, two_mu * (f21 - R.m21) + k * c21,
+                            two_mu * (f22 - R.m22) + k * c22),
+                     J=J)
 
 
 @njit(cache=True, error_model="numpy")
@@ -820,32 +830,23 @@ def first_piola(F, mu, lam, P):
 
     F: (3, 3); mu, lam [Pa].  Overwrites P: (3, 3) [Pa].
     """
-    (u00, u01, u02, u10, u11, u12, u20, u21, u22, _s0, _s1, _s2,
-     v00, v01, v02, v10, v11, v12, v20, v21, v22) = _svd3_core(
-        F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2])
-    p = _fcr_stress((F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2]),
-                    2.0 * mu, lam,
-                    (u00 * v00 + u01 * v01 + u02 * v02, u00 * v10 + u01 * v11 + u02 * v12,
-                     u00 * v20 + u01 * v21 + u02 * v22, u10 * v00 + u11 * v01 + u12 * v02,
-                     u10 * v10 + u11 * v11 + u12 * v12, u10 * v20 + u11 * v21 + u12 * v22,
-                     u20 * v00 + u21 * v01 + u22 * v02, u20 * v10 + u21 * v11 + u22 * v12,
-                     u20 * v20 + u21 * v21 + u22 * v22))
-    for i in range(3):
-        for j in range(3):
-            P[i, j] = p[3 * i + j]
+    R = _u_vt(_svd3_core(F[0, 0], F[0, 1], F[0, 2], F[1, 0], F[1, 1], F[1, 2], F[2, 0], F[2, 1], F[2, 2]))
+    _mat3_into(_fcr_stress(_mat3_of(F), 2.0 * mu, lam, R).P, P)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _store_nodal_forces(F, R, coef, H, b, l):
-    """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign); F, R: tuples of the tet's
-    deformation gradient's and rotation's 9 entries, row-major (inlined, scalars in registers).
+    """H = -V P Dm^-T of the tet in block b, lane l (eq. 9 with the force sign); F, R: the tet's deformation
+    gradient and rotation, ``Mat3`` (inlined, scalars in registers).
 
     Row 3 k + i of H holds component i of the force on local node k + 1, row
     H_NODE0 + i that on local node 0, minus the sum of the three (eq. 10).
     """
     L = LANES
-    (p00, p01, p02, p10, p11, p12, p20, p21, p22, _J) = _fcr_stress(
-        F, coef[b, COEF_TWO_MU * L + l], coef[b, COEF_LAM * L + l], R)
+    P = _fcr_stress(F, coef[b, COEF_TWO_MU * L + l], coef[b, COEF_LAM * L + l], R).P
+    p00, p01, p02 = P.m00, P.m01, P.m02
+    p10, p11, p12 = P.m10, P.m11, P.m12
+    p20, p21, p22 = P.m20, P.m21, P.m22
     a00, a01, a02 = coef[b, l], coef[b, L + l], coef[b, 2 * L + l]
     a10, a11, a12 = coef[b, 3 * L + l], coef[b, 4 * L + l], coef[b, 5 * L + l]
     a20, a21, a22 = coef[b, 6 * L + l], coef[b, 7 * L + l], coef[b, 8 * L + l]
@@ -955,8 +956,10 @@ def _rotation_stress_pass(F, coef, q, H):
             px = qx + qw * dx + (qy * dz - qz * dy)
             py = qy + qw * dy + (qz * dx - qx * dz)
             pz = qz + qw * dz + (qx * dy - qy * dx)
-            aw, ax, ay, az, hh, ok, hx, hy, hz, acc = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22,
-                                                                    pw, px, py, pz)
+            s = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22, pw, px, py, pz)
+            aw, ax, ay, az = s.w, s.x, s.y, s.z
+            hx, hy, hz = s.hx, s.hy, s.hz
+            ok, acc = s.ok, s.small
             nw, nx, ny, nz = _renormalize(aw, ax, ay, az)
             q[b, l] = nw if acc else qw
             q[b, L + l] = nx if acc else qx
@@ -982,10 +985,11 @@ def _rotation_stress_pass(F, coef, q, H):
                 f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
                 f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
                 f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-                bw, bx, by, bz, _hh2, _ok2, kx, ky, kz, small2 = _newton_step_h(
-                    f00, f01, f02, f10, f11, f12, f20, f21, f22, H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
-                bw, bx, by, bz = _renormalize(bw, bx, by, bz)
-                acc = (H[b, 7 * L + l] != 0.0) & small2
+                s2 = _newton_step_h(f00, f01, f02, f10, f11, f12, f20, f21, f22,
+                                    H[b, l], H[b, L + l], H[b, 2 * L + l], H[b, 3 * L + l])
+                bw, bx, by, bz = _renormalize(s2.w, s2.x, s2.y, s2.z)
+                kx, ky, kz = s2.hx, s2.hy, s2.hz
+                acc = (H[b, 7 * L + l] != 0.0) & s2.small
                 q[b, l] = bw if acc else q[b, l]
                 q[b, L + l] = bx if acc else q[b, L + l]
                 q[b, 2 * L + l] = by if acc else q[b, 2 * L + l]
@@ -1009,10 +1013,8 @@ def _rotation_stress_pass(F, coef, q, H):
             f00, f01, f02 = F[b, l], F[b, L + l], F[b, 2 * L + l]
             f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
             f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
-            r00, r01, r02, r10, r11, r12, r20, r21, r22 = _quat_to_rot(q[b, l], q[b, L + l], q[b, 2 * L + l],
-                                                                       q[b, 3 * L + l])
-            _store_nodal_forces((f00, f01, f02, f10, f11, f12, f20, f21, f22),
-                                (r00, r01, r02, r10, r11, r12, r20, r21, r22), coef, H, b, l)
+            R = _quat_to_rot(q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l])
+            _store_nodal_forces(Mat3(f00, f01, f02, f10, f11, f12, f20, f21, f22), R, coef, H, b, l)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -1024,8 +1026,8 @@ def _fixup_tet(F, coef, q, H, b, l):
     f10, f11, f12 = F[b, 3 * L + l], F[b, 4 * L + l], F[b, 5 * L + l]
     f20, f21, f22 = F[b, 6 * L + l], F[b, 7 * L + l], F[b, 8 * L + l]
     ow, ox, oy, oz = q[b, l], q[b, L + l], q[b, 2 * L + l], q[b, 3 * L + l]
-    (r00, r01, r02, r10, r11, r12, r20, r21, r22, qw, qx, qy, qz, _it) = _fcr_rotation(
-        f00, f01, f02, f10, f11, f12, f20, f21, f22, ow, ox, oy, oz)
+    r = _fcr_rotation(f00, f01, f02, f10, f11, f12, f20, f21, f22, ow, ox, oy, oz)
+    qw, qx, qy, qz = r.q.w, r.q.x, r.q.y, r.q.z
     q[b, l] = qw
     q[b, L + l] = qx
     q[b, 2 * L + l] = qy
@@ -1041,8 +1043,7 @@ def _fixup_tet(F, coef, q, H, b, l):
     q[b, Q_D * L + l] = dx if small else 0.0
     q[b, (Q_D + 1) * L + l] = dy if small else 0.0
     q[b, (Q_D + 2) * L + l] = dz if small else 0.0
-    _store_nodal_forces((f00, f01, f02, f10, f11, f12, f20, f21, f22),
-                        (r00, r01, r02, r10, r11, r12, r20, r21, r22), coef, H, b, l)
+    _store_nodal_forces(Mat3(f00, f01, f02, f10, f11, f12, f20, f21, f22), r.R, coef, H, b, l)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1183,12 +1184,12 @@ def elastic_energy(x, tets, Dm_inv, vol, mu, lam):
     """
     E = 0.0
     for e in range(tets.shape[0]):
-        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
-        s = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
-        s0 = s[9] - 1.0
-        s1 = s[10] - 1.0
-        s2 = s[11] - 1.0
-        J = s[9] * s[10] * s[11]
+        F = _tet_F(x, tets, Dm_inv, e)
+        s = _svd3_core(F.m00, F.m01, F.m02, F.m10, F.m11, F.m12, F.m20, F.m21, F.m22)
+        s0 = s.s0 - 1.0
+        s1 = s.s1 - 1.0
+        s2 = s.s2 - 1.0
+        J = s.s0 * s.s1 * s.s2
         E += vol[e] * (mu[e] * (s0 * s0 + s1 * s1 + s2 * s2) + 0.5 * lam[e] * (J - 1.0) ** 2)
     return E
 
@@ -1200,13 +1201,13 @@ def tet_invariants(x, tets, Dm_inv, J, sigma):
     Overwrites J: (n_tets,) and sigma: (n_tets, 3) (descending, smallest signed).
     """
     for e in range(tets.shape[0]):
-        (_i0, _i1, _i2, _i3, f00, f01, f02, f10, f11, f12, f20, f21, f22) = _tet_F(x, tets, Dm_inv, e)
-        s = _svd3_core(f00, f01, f02, f10, f11, f12, f20, f21, f22)
-        sigma[e, 0] = s[9]
-        sigma[e, 1] = s[10]
-        sigma[e, 2] = s[11]
-        J[e] = (f00 * (f11 * f22 - f12 * f21) - f01 * (f10 * f22 - f12 * f20)
-                + f02 * (f10 * f21 - f11 * f20))
+        F = _tet_F(x, tets, Dm_inv, e)
+        s = _svd3_core(F.m00, F.m01, F.m02, F.m10, F.m11, F.m12, F.m20, F.m21, F.m22)
+        sigma[e, 0] = s.s0
+        sigma[e, 1] = s.s1
+        sigma[e, 2] = s.s2
+        J[e] = (F.m00 * (F.m11 * F.m22 - F.m12 * F.m21) - F.m01 * (F.m10 * F.m22 - F.m12 * F.m20)
+                + F.m02 * (F.m10 * F.m21 - F.m11 * F.m20))
 
 
 # --------------------------------------------------------------------------------------

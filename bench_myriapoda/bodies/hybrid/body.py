@@ -397,17 +397,20 @@ class BodyHybrid(PushedBoxes, SupportedSegments):
     def _no_muscle(self) -> np.ndarray:
         return np.zeros((1, self.n_muscle_segments, 3))
 
-    def _state_arrays(self):
+    def _state_arrays(self) -> HybridDynamicState:
+        """The arrays ``compile``'s trial step changes, by name (the live arrays, not copies)."""
         rb = self.rigid
-        return (self.x, self.v, self.fem.q_ws, rb.c, rb.q, rb.v, rb.w, rb.impulse_cache, rb.kinematic, self.acc,
-                self.fem.Dm_inv_eff, self.fem.coef)
+        return HybridDynamicState(x=self.x, v=self.v, q_ws=self.fem.q_ws, rigid_c=rb.c, rigid_q=rb.q, rigid_v=rb.v,
+                                  rigid_w=rb.w, impulse_cache=rb.impulse_cache, kinematic=rb.kinematic,
+                                  acc=self.acc, dm_inv_eff=self.fem.Dm_inv_eff, coef=self.fem.coef)
 
-    def _state(self):
-        return [a.copy() for a in self._state_arrays()]
+    def _state(self) -> HybridDynamicState:
+        return HybridDynamicState(*(a.copy() for a in self._state_arrays()))
 
-    def _restore(self, saved) -> None:
-        for dst, src in zip(self._state_arrays(), saved):
-            dst[...] = src
+    def _restore(self, saved: HybridDynamicState) -> None:
+        """Copy ``saved`` (from ``_state``) back into the live arrays in place (kernels and packs hold them)."""
+        for name, dst in self._state_arrays()._asdict().items():
+            dst[...] = getattr(saved, name)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""
@@ -628,6 +631,12 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
 # where ``kernels.FEMLinks`` holds the muscles, and their buffer last in ``kernels.ActiveLinks`` (``_chain_args``)
 _MUSCLE = K.FEMLinks._fields.index("muscle")
 assert K.ActiveLinks._fields[-1] == "act_buf"
+
+# The hybrid's dynamic state that ``BodyHybrid.compile`` saves before its trial step and restores after it:
+# FEM nodes (x, v, acc), the tets' rotation warm starts (q_ws), the boxes' poses, velocities, contact impulse
+# warm starts and kinematic flags (rigid_*), and the active links' Dm^-1 A^-1 and packed coefficients.
+HybridDynamicState = namedtuple("HybridDynamicState", "x v q_ws rigid_c rigid_q rigid_v rigid_w impulse_cache "
+                                "kinematic acc dm_inv_eff coef")
 
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
 # ``hybrid.kernels.advance``'s arguments without n_steps

@@ -30,10 +30,13 @@ used (``ControllerState.draws`` / ``settle``): both paths consume the same strea
 from __future__ import annotations
 
 import math
+from collections import namedtuple
+from operator import attrgetter
 
 import numpy as np
 from numba import njit
 
+from ...core.kernel_records import plain
 from ...kinematics import legs as L
 from . import antennae as AN
 from . import leg_collision as LC
@@ -58,11 +61,39 @@ N_INTS = 22
 # the roots) are computed only once per chunk, by ``finish_chunk`` after its last step, for that step's time
 # F_ANT_T (``antennae.antennae_step``'s ``links``): within a chunk nothing reads them, so the state after the
 # chunk is the same doubles.  I_ANT_PENDING: a step left them to ``finish_chunk``.  I_TIP_PHI_OK: the tips'
-# signed distances in ``tip_phi`` (``A``'s third entry from the end) are those of the tips as they stand (measured at the
-# end of the last step; the tips move only in the controller's step), so the next step's contact test reuses them.
-# positions in the array tuple ``A`` that a caller reads (``ControllerState.pack`` has the full layout)
-A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = 0, 2, 10, 11, 12, 33
-A_ANT_PARAMS, A_NOMINAL, A_OFFSETS, A_POINTS, A_FRAMES = 26, 28, 29, 39, 40
+# signed distances in ``ControllerArrays.tip_phi`` are those of the tips as they stand (measured at the end of the
+# last step; the tips move only in the controller's step), so the next step's contact test reuses them.
+
+# The controller's arrays that ``controller_step`` works on (its ``A``), by name (issue 42): the controller's own
+# arrays (the leg states to the height target; ``O``, ``M`` the legs' origins and knees, ``prev_angles`` and
+# ``stopped`` the leg collisions' scratch), the CONTROL brain's schedule (``Schedule``), the antennae's arrays
+# (``AntennaArrays``: ``antennae.antennae_step``'s parameters and state; typed stand-ins, never read, without
+# antennae), the tips' signed distances (``I_TIP_PHI_OK``), the terrain's walls and the segments' half sizes.
+# ``ControllerState.pack`` builds it by field name; it crosses into compiled code as a plain tuple of its fields
+# (``core.kernel_records.plain``: numba's dispatcher types a plain tuple of arrays several times faster than a
+# namedtuple), and the kernels name it again, ``ControllerArrays(*A)`` (compiled code: no cost).  Caution: numba's
+# dead-code elimination, which runs on a kernel that inlines overloads, does not see that such a record aliases A
+# and drops stores into its arrays whose results nothing reads later (``fused.legged_walk`` lost its timeline so);
+# ``controller_step`` and ``finish_chunk`` inline none, and tests/test_fused_walk.py compares every array they
+# write with the Python path's, bit for bit.
+_OWN = ("states angles tips O M touching airborne ik_failed entered supported kinematic c_T R_T prev_angles stopped "
+        "brain_steps geom sw_params tg_params terr terr_walk link_rest height_target").split()
+Schedule = namedtuple("Schedule", "sched_t sched_speed sched_rate")
+AntennaArrays = namedtuple("AntennaArrays", "ant_params ant_f nominal offsets root_target root_omega retracting "
+                           "contact rising contact_point contact_normal contact_depth arrived points frames")
+_TAIL = ("tip_phi", "terr_walls", "seg_half")
+ControllerArrays = namedtuple("ControllerArrays", _OWN + list(Schedule._fields) + list(AntennaArrays._fields)
+                              + list(_TAIL))
+# ``ControllerState.pack`` reads each part by name with one getter (a plain tuple in the fields' order, at the
+# cost of the positional tuple it replaces: building the namedtuple by keyword took three times as long per
+# chunk): the controller's attribute of the field's name (but those named here), the antennae's likewise
+_OWN_OF_CONTROLLER = attrgetter(*({"O": "_O", "M": "_M", "prev_angles": "_prev_angles",
+                                   "stopped": "_stopped"}.get(f, f) for f in _OWN))
+_ANTENNAE_OF_ANTENNAE = attrgetter(*({"ant_params": "params", "ant_f": "f"}.get(f, f)
+                                     for f in AntennaArrays._fields))
+# positions in the plain tuple ``A`` of the fields a caller that does not name it reads (from the record's fields)
+A_STATES, A_TIPS, A_KINEMATIC, A_C_T, A_R_T, A_CONTACT = (
+    ControllerArrays._fields.index(f) for f in ("states", "tips", "kinematic", "c_T", "R_T", "contact"))
 
 # (controller attribute, fs index) of the float scalars, (attribute, ints index) of the int ones
 _FLOATS = (("dt", F_DT), ("contact_distance", F_CONTACT_DIST), ("theta_min", F_THETA_MIN),
@@ -112,19 +143,23 @@ class ControllerState:
         ant = c.antennae
         if ant is None:  # typed stand-ins, never read (I_HAS_ANTENNAE = 0)
             n = 1
-            self._ant = (np.zeros(AN.N_ANTENNA_PARAMS), np.zeros(len(c.terr)), np.zeros((2, n, 2)),
-                         np.zeros((2, n, 2)), np.zeros((2, 2)), np.zeros(2), np.zeros(2, np.bool_),
-                         np.zeros(2, np.bool_), np.zeros(2, np.bool_), np.zeros((2, 3)), np.zeros((2, 3)),
-                         np.zeros(2), np.zeros(2, np.bool_), np.zeros((2, n + 1, 3)), np.zeros((2, n + 1, 3, 3)))
+            self._ant = plain(AntennaArrays(
+                ant_params=np.zeros(AN.N_ANTENNA_PARAMS), ant_f=np.zeros(len(c.terr)), nominal=np.zeros((2, n, 2)),
+                offsets=np.zeros((2, n, 2)), root_target=np.zeros((2, 2)), root_omega=np.zeros(2),
+                retracting=np.zeros(2, np.bool_), contact=np.zeros(2, np.bool_), rising=np.zeros(2, np.bool_),
+                contact_point=np.zeros((2, 3)), contact_normal=np.zeros((2, 3)), contact_depth=np.zeros(2),
+                arrived=np.zeros(2, np.bool_), points=np.zeros((2, n + 1, 3)), frames=np.zeros((2, n + 1, 3, 3))))
         times, speed, rate = c.schedule
-        self._schedule = (np.ascontiguousarray(times, dtype=np.float64), np.ascontiguousarray(speed, dtype=np.float64),
-                          np.ascontiguousarray(rate, dtype=np.float64))
+        self._schedule = plain(Schedule(sched_t=np.ascontiguousarray(times, dtype=np.float64),
+                                        sched_speed=np.ascontiguousarray(speed, dtype=np.float64),
+                                        sched_rate=np.ascontiguousarray(rate, dtype=np.float64)))
         self.rnd = np.zeros(1)
         self.ant_rnd = np.zeros(1)
         self.tip_phi = np.zeros(c.n_legs)  # the tips' signed distances [m] (I_TIP_PHI_OK)
 
     def pack(self) -> tuple:
-        """Scalars into ``fs``/``ints``; returns the array tuple ``A``."""
+        """Scalars into ``fs``/``ints``; returns the arrays ``A``, a ``ControllerArrays`` as a plain tuple (the
+        kernels name it again)."""
         c = self.ctrl
         fs, ints = self.fs, self.ints
         for name, k in _FLOATS:
@@ -142,16 +177,9 @@ class ControllerState:
         ints[I_ANT_DEFER] = 1   # the chunk kernels call finish_chunk
         ints[I_ANT_PENDING] = 0
         ints[I_TIP_PHI_OK] = 0   # measured afresh in a chunk's first step: the caller may have moved the tips
-        if ant is not None:
-            a = (ant.params, ant.f, ant.nominal, ant.offsets, ant.root_target, ant.root_omega, ant.retracting,
-                 ant.contact, ant.rising, ant.contact_point, ant.contact_normal, ant.contact_depth, ant.arrived,
-                 ant.points, ant.frames)
-        else:
-            a = self._ant
-        return (c.states, c.angles, c.tips, c._O, c._M, c.touching, c.airborne, c.ik_failed, c.entered, c.supported,
-                c.kinematic, c.c_T, c.R_T, c._prev_angles, c._stopped, c.brain_steps,
-                c.geom, c.sw_params, c.tg_params, c.terr, c.terr_walk, c.link_rest, c.height_target) \
-            + self._schedule + a + (self.tip_phi, c.terr_walls, c.seg_half)
+        a = _ANTENNAE_OF_ANTENNAE(ant) if ant is not None else self._ant
+        # the parts in ControllerArrays' order (_OWN, Schedule, AntennaArrays, _TAIL)
+        return _OWN_OF_CONTROLLER(c) + self._schedule + a + (self.tip_phi, c.terr_walls, c.seg_half)
 
     def draws(self, n_steps: int) -> None:
         """Pre-draw the doubles a chunk of ``n_steps`` steps may use (at most one random-walk turn and two
@@ -274,7 +302,8 @@ def finish_chunk(fs, ints, A):
     """After the last ``controller_step`` of a chunk (and before anything reads the antennae): the antennae's
     links the chunk's steps left to it (``I_ANT_DEFER``), for the last step's time."""
     if ints[I_ANT_PENDING] != 0:
-        AN.antennae_links(A[A_ANT_PARAMS], fs[F_ANT_T], A[A_NOMINAL], A[A_OFFSETS], A[A_POINTS], A[A_FRAMES])
+        ca = ControllerArrays(*A)
+        AN.antennae_links(ca.ant_params, fs[F_ANT_T], ca.nominal, ca.offsets, ca.points, ca.frames)
         ints[I_ANT_PENDING] = 0
 
 
@@ -332,19 +361,19 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     ``controller.STEP_ORDER`` (but those of ``PYTHON_ONLY``; tests/test_controller_step_order.py).
 
     c (n_seg, 3) [m], R (n_seg, 3, 3): the segments' current poses (read only).  fs, ints: the
-    scalars (``F_*``, ``I_*``), updated.  A: the controller's arrays (``ControllerState.pack``),
-    updated in place -- afterwards ``kinematic``, ``c_T``, ``R_T`` (A[10], A[11], A[12]) are the
+    scalars (``F_*``, ``I_*``), updated.  A: the controller's arrays (``ControllerArrays`` as a plain tuple,
+    ``ControllerState.pack``), updated in place -- afterwards ``kinematic``, ``c_T``, ``R_T`` are the
     support the body must carry this step.  rnd, ant_rnd: pre-drawn doubles of the controller's and
     the antennae's generators, consumed from ints[I_RND_USED], ints[I_ANT_RND_USED].
     err_scratch: (n_seg,) scratch.  Returns whether this step is recorded in the timeline.
     With ints[I_ANT_DEFER] = 1 (``ControllerState.pack`` sets it) the caller calls ``finish_chunk``
     after its last step.
     """
-    (states, angles, tips, O, M, touching, airborne, ik_failed, entered, supported, kinematic, c_T, R_T,
-     prev_angles, stopped, brain_steps, geom, sw_params, tg_params, terr, terr_walk, link_rest,
-     height_target, sched_t, sched_speed, sched_rate, ant_params, ant_f, nominal, offsets, root_target,
-     root_omega, retracting, contact, rising, contact_point, contact_normal, contact_depth, arrived, points,
-     frames, tip_phi, terr_walls, seg_half) = A
+    ca = ControllerArrays(*A)
+    # the arrays used more than once, as locals (each read by name)
+    states, angles, tips, touching, supported = ca.states, ca.angles, ca.tips, ca.touching, ca.supported
+    kinematic, c_T, R_T, geom, terr, entered = ca.kinematic, ca.c_T, ca.R_T, ca.geom, ca.terr, ca.entered
+    O, M, ant_f, root_target, arrived, ant_params = ca.O, ca.M, ca.ant_f, ca.root_target, ca.arrived, ca.ant_params
     dt = fs[F_DT]
     kind = ints[I_TERR_KIND]
     n_seg = c.shape[0]
@@ -368,10 +397,12 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     has_ant = ints[I_HAS_ANTENNAE] != 0
     if has_ant:
         links = ints[I_ANT_DEFER] == 0 or ant_f[AN.H_NOBST] > 0.0
+        # the antennae's state as the plain tuples that ``antennae_step`` is compiled for (its AntennaMotion,
+        # AntennaContact and AntennaShape fields, in their order)
         n_rising, any_arrived = AN.antennae_step(c[0], R[0], t, dt, ant_params, ant_f,
-                                                 (nominal, offsets, root_target, root_omega, retracting),
-                                                 (contact, rising, contact_point, contact_normal, contact_depth,
-                                                  arrived), (points, frames), links)
+                                                 (ca.nominal, ca.offsets, root_target, ca.root_omega, ca.retracting),
+                                                 (ca.contact, ca.rising, ca.contact_point, ca.contact_normal,
+                                                  ca.contact_depth, arrived), (ca.points, ca.frames), links)
         if not links:
             fs[F_ANT_T] = t
             ints[I_ANT_PENDING] = 1
@@ -391,7 +422,7 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     if ints[I_TIP_PHI_OK] != 0:  # legs.tips_touching on the tips' distances measured after they last moved
         cd = fs[F_CONTACT_DIST]
         for k in range(n_legs):
-            touching[k] = tip_phi[k] <= cd
+            touching[k] = ca.tip_phi[k] <= cd
     else:
         L.tips_touching(kind, terr, tips, fs[F_CONTACT_DIST], touching)
     n_touch = 0
@@ -404,10 +435,10 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
         brain = ints[I_WALK_MODE]
         fs[F_T_WALK] = t
         fs[F_TOUCH_AT_WALK] = frac
-    brain = _switch_brain(brain, t, fs, ints, has_ant, contact)
+    brain = _switch_brain(brain, t, fs, ints, has_ant, ca.contact)
     ints[I_BRAIN] = brain
-    brain_steps[brain] += 1
-    speed, rate, turn_dir = _head_command(brain, t, dt, fs, ints, rnd, sched_t, sched_speed, sched_rate)
+    ca.brain_steps[brain] += 1
+    speed, rate, turn_dir = _head_command(brain, t, dt, fs, ints, rnd, ca.sched_t, ca.sched_speed, ca.sched_rate)
     turn = turn_dir * rate * dt
     tm = fs[F_TURN_MEMORY]
     if ((brain == AVOIDANCE or brain == TROPHOTROPISM) and abs(tm + turn) > fs[F_MAX_BODY_TURN]
@@ -427,10 +458,10 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
     for i in range(n_seg):
         kinematic[i] = supported[i]
     kinematic[0] = brain != ADJUSTMENT
-    TG.targeter_step(c, R, kinematic, kind, terr_walk, tg_params, link_rest, height_target, speed, rate, turn_dir,
-                     dt, c_T, R_T)
-    if terr_walls[TG.H_NOBST] > 0.0:  # no call (and no reference counts) on a terrain without walls
-        ints[I_WALL_PUSHES] += TG.keep_clear_of_walls(c_T, R_T, kinematic, terr_walls, seg_half)
+    TG.targeter_step(c, R, kinematic, kind, ca.terr_walk, ca.tg_params, ca.link_rest, ca.height_target, speed, rate,
+                     turn_dir, dt, c_T, R_T)
+    if ca.terr_walls[TG.H_NOBST] > 0.0:  # no call (and no reference counts) on a terrain without walls
+        ints[I_WALL_PUSHES] += TG.keep_clear_of_walls(c_T, R_T, kinematic, ca.terr_walls, ca.seg_half)
     # 4. legs
     collide = ints[I_COLLIDE] != 0
     if collide:
@@ -438,23 +469,24 @@ def controller_step(c, R, t, fs, ints, A, rnd, ant_rnd, err_scratch):
         # shape-mismatch message (string formatting, seconds of compile per process; README Development notes)
         for k in range(n_legs):
             for a in range(angles.shape[1]):
-                prev_angles[k, a] = angles[k, a]
-    SW.switcher_step(states, angles, airborne, touching, ik_failed, sw_params, dt, entered)
+                ca.prev_angles[k, a] = angles[k, a]
+    SW.switcher_step(states, angles, ca.airborne, touching, ca.ik_failed, ca.sw_params, dt, entered)
     if collide:
-        ints[I_LEG_STUCK] += LC.stop_swinging_legs(states, prev_angles, angles, c_T, R_T, geom, kind, terr, stopped)
+        ints[I_LEG_STUCK] += LC.stop_swinging_legs(states, ca.prev_angles, angles, c_T, R_T, geom, kind, terr,
+                                                   ca.stopped)
         for k in range(n_legs):
-            if stopped[k]:
+            if ca.stopped[k]:
                 ints[I_LEG_STOPS] += 1
     SW.fix_stance_tips(entered, c_T, R_T, geom, angles, tips)
     if collide:
         LC.surface_touchdown_tips(entered, tips, kind, terr)
     # the STANCE legs' IK, theta_min (rule 3), the FK of all legs with planted tips kept: the controller's
     # stance_inverse_kinematics, its theta_min test and legs_forward_kinematics in one pass (same doubles)
-    L.stance_ik_and_fk(states, SW.STANCE, c_T, R_T, geom, tips, angles, ik_failed, fs[F_THETA_MIN], O, M)
+    L.stance_ik_and_fk(states, SW.STANCE, c_T, R_T, geom, tips, angles, ca.ik_failed, fs[F_THETA_MIN], O, M)
     # stance_knees_inside (with collisions) and legs_penetration, each knee's distance taken once; the tips'
     # distances kept for the next step's contact test
-    fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX],
-                            LC.knees_inside_and_penetration(states, M, tips, kind, terr, collide, ik_failed, tip_phi))
+    fs[F_LEG_PEN_MAX] = max(fs[F_LEG_PEN_MAX], LC.knees_inside_and_penetration(states, M, tips, kind, terr, collide,
+                                                                               ca.ik_failed, ca.tip_phi))
     ints[I_TIP_PHI_OK] = 1
     recorded = step % ints[I_RECORD_EVERY] == 0
     ints[I_RECORDED] = recorded
