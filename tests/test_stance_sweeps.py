@@ -121,3 +121,22 @@ def test_the_report_finds_sweeps_a_and_b_by_their_grid_keys():
     assert S.sweeps_in(df, ["body.link_stiffness_n_m", S.SPEED_KEY]) == ["speed"]
     assert S.sweeps_in(df, [S.SWING_KEY, S.SPEED_KEY]) == []           # no stiffness axis: no sweep a or b
     assert S.sweeps_in(df, ["body.youngs_modulus_pa", "dt"]) == []      # a stability sweep is not one of them
+
+
+@pytest.mark.parametrize("name, axis", [("stance-fem-stiffness", "controller.swing_speed_rad_s"),
+                                        ("stance-fem-speed", "scenario.control_speed_m_s"),
+                                        ("stance-fem-body-wave", "controller.body_wave_phase_rad")])
+def test_each_sweep_has_an_fem_matrix_with_the_same_grid(name, axis):
+    """The fem body's sweeps (its dynamic stance came after the hybrid and massspring ones): the same grid as the
+    two-body file, on fem alone."""
+    fem = expand_matrix(MATRICES / f"{name}.toml")
+    both = expand_matrix(MATRICES / f"{name.replace('-fem', '')}.toml")
+    assert not fem.unsupported and axis in fem.grid_keys
+    assert {c.case.body.name for c in fem.cases} == {"fem"}
+    assert all(c.case.legs.stance == "dynamic" and c.case.creature.name == "centipede" for c in fem.cases)
+    def grid(cases, body):
+        return sorted(json.dumps({k: v for k, v in c.axes.items() if k != "body"}, sort_keys=True)
+                      for c in cases if c.case.body.name == body)
+
+    assert grid(fem.cases, "fem") == grid(both.cases, "hybrid")
+    assert len({json.dumps(c.axes.get(axis)) for c in fem.cases} - {"null"}) >= 3
