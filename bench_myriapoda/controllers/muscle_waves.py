@@ -95,7 +95,11 @@ class MuscleWaveConfig(GaitConfig):
                                       "beyond the command while the loop pushes, or most muscles held at "
                                       "max_muscle_strain: back off to the open loop, resume at half the gains; the "
                                       "waveform's harmonics growing past 0.15 and the open loop's own: the integrals "
-                                      "off; LoopGuard, WaveformWatch; controllers/shape_tracking.py); false: the loop "
+                                      "off; a segment rolled more than 15 degrees from the body's median roll while "
+                                      "the loop commands 1.5x the feed-forward: the open loop for good, status "
+                                      "controller_unstable; a commanded wave the loop's smoothing passes under half "
+                                      "of (fewer than about 11 muscle segments a wave): the open loop from the start; "
+                                      "LoopGuard, WaveformWatch; controllers/shape_tracking.py); false: the loop "
                                       "as it was before issue 44, at the body's constant gains")
     shape_control_rate_hz: float = rng(250.0, gt=0.0, le=10000.0,
                                        doc="closed_loop: control ticks per simulated second (strain held between ticks) [Hz]")
