@@ -209,8 +209,10 @@ _CACHE_FORMAT = "tetmesh-v1"
 
 
 def tetmesh_cache_dir():
-    """Cache directory: ``tetmesh/`` under ``core.paths.cache_root()``."""
-    return cache_root() / "tetmesh"
+    """Cache directory: ``$BENCH_MYRIAPODA_CACHE`` itself when it is set (as it always was for the tetmeshes),
+    else ``tetmesh/`` under ``core.paths.cache_root()`` (which honours ``XDG_CACHE_HOME``)."""
+    env = os.environ.get("BENCH_MYRIAPODA_CACHE")
+    return Path(env) if env else cache_root() / "tetmesh"
 
 
 def _load_surface(mesh_or_path):
