@@ -62,3 +62,64 @@ def test_every_legged_body_runs_the_checks_fem_too():
     for name in ("paper.kinematic-shortcut-centipede", "paper.kinematic-shortcut-millipede"):
         for body in ("hybrid", "massspring", "fem"):
             assert registry.BODIES[body].checks.get(name) is True, (name, body)   # in validate --quick
+    name = "paper.kinematic-shortcut-worlds"   # every scenario: the full validate only (minutes a body)
+    for body in ("hybrid", "massspring", "fem"):
+        assert registry.BODIES[body].checks.get(name) is False, (name, body)
+
+
+class WorldsContext:
+    """Each world's kinematic and dynamic walks, given; records what was asked."""
+
+    quick = True
+
+    def __init__(self, runs):
+        self.runs, self.asked = runs, []
+
+    def run(self, creature, body, scenario, duration=None, overrides=()):
+        assert creature == "centipede" and duration == SC.WORLDS_QUICK_S
+        self.asked.append((scenario, tuple(overrides)))
+        return self.runs[(scenario, tuple(overrides))]
+
+
+def _worlds(deviation_m, failing=None):
+    """Straight kinematic walks, and dynamic ones whose heads end deviation_m[world] to the side; ``failing``:
+    a world whose dynamic walk blows up."""
+    x = np.linspace(0.0, 2.0, 41)
+    states = np.zeros((41, 4), np.int8)
+    runs = {}
+    for w in SC.WORLDS:
+        runs[(w, ())] = fake_run(x, np.zeros(41), states, 0.5, 0.001)
+        dyn = fake_run(x, np.linspace(0.0, deviation_m[w], 41), states, 0.4, 0.002,
+                       status="unstable" if w == failing else "ok")
+        dyn.message, dyn.metrics["t_fail_s"] = "runaway speed", 1.0
+        runs[(w, SC.DYNAMIC)] = dyn
+    return runs
+
+
+def test_the_worlds_check_takes_the_largest_deviation_over_every_myriapod_scenario():
+    dev = {w: 0.1 * (i + 1) for i, w in enumerate(SC.WORLDS)}
+    ctx = WorldsContext(_worlds(dev))
+    out = SC.worlds_shortcut(ctx, "massspring")
+    assert {s for s, _ in ctx.asked} == set(SC.WORLDS) and len(ctx.asked) == 2 * len(SC.WORLDS)
+    assert out.verdict == INFO and out.unit == "BL"
+    last = SC.WORLDS[-1]
+    assert out.measured == pytest.approx(dev[last] / 25.0)
+    for w in SC.WORLDS:
+        assert out.figures[f"{w}_deviation_bl"] == pytest.approx(dev[w] / 25.0)
+        assert out.figures[f"{w}_speed_ratio"] == pytest.approx(0.8)
+        assert out.figures[f"{w}_leg_state_agreement"] == 1.0
+    assert last in out.detail
+
+
+def test_a_world_that_fails_is_named_and_left_out_and_all_failing_is_a_failed_row():
+    dev = {w: 0.1 for w in SC.WORLDS}
+    dev["terrain"] = 5.0
+    out = SC.worlds_shortcut(WorldsContext(_worlds(dev, failing="terrain")), "hybrid")
+    assert out.verdict == INFO and out.measured == pytest.approx(0.1 / 25.0)
+    assert "terrain (dynamic: unstable)" in out.detail
+    assert math.isnan(out.figures["terrain_deviation_bl"])
+    runs = _worlds(dev)
+    for w in SC.WORLDS:
+        runs[(w, ())].status = "unstable"
+        runs[(w, ())].message, runs[(w, ())].metrics["t_fail_s"] = "blew up", 0.5
+    assert SC.worlds_shortcut(WorldsContext(runs), "fem").verdict == "FAIL"

@@ -74,6 +74,10 @@ CHECKS: tuple[Check, ...] = (
     Check("paper.kinematic-shortcut-millipede", "paper",
           "head path deviation of the kinematic from the dynamic stance [BL] (INFO)",
           "the same walk in dynamic stance (issue 43; Fang et al. 2013 Sec. 3's shortcut)", SC.millipede_shortcut),
+    Check("paper.kinematic-shortcut-worlds", "paper",
+          "largest head path deviation of the kinematic from the dynamic stance over every myriapod scenario [BL] "
+          "(INFO)", "the same walks in dynamic stance (issue 43; Fang et al. 2013 Sec. 3's shortcut)",
+          SC.worlds_shortcut),
     # ---- throughput
     Check("throughput.sec6-headline", "throughput", "steps/s, 18-segment centipede, dt = 1/3000 s",
           "Fang et al. 2013 Sec. 6: 1.7e4 steps/s on 6 cores", T.sec6_headline),

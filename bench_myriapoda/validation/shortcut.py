@@ -25,6 +25,11 @@ from .core import INFO, Context, Outcome, failed_run
 
 SCENARIO = "straight"
 DYNAMIC = ("legs.stance=dynamic",)
+# every myriapod scenario (the worlds of tests/test_dynamic_stance_walk.py), for ``worlds_shortcut``
+WORLDS = ("walk", "straight", "control", "drop-adjust", "hang", "terrain", "fig13-cylinders", "foraging",
+          "fig12-water-foraging")
+WORLDS_DURATION_S = 4.0  # each world's pair of walks [s]: the paper's brains turn, forage and avoid within it
+WORLDS_QUICK_S = 1.5  # with --quick (tests): every world built and walked in both stances
 
 
 def _deviation(kin, dyn) -> tuple[float, float]:
@@ -72,3 +77,43 @@ def centipede_shortcut(ctx: Context, body: str) -> Outcome:
 def millipede_shortcut(ctx: Context, body: str) -> Outcome:
     """The millipede's kinematic stance against its dynamic stance (module docstring)."""
     return _shortcut(ctx, "millipede", body)
+
+
+def worlds_shortcut(ctx: Context, body: str) -> Outcome:
+    """The centipede's kinematic stance against its dynamic stance in every myriapod scenario (``WORLDS``: flat
+    and straight walks, CONTROL's turn, the drop and the hang, the heightfield terrain, the cylinders, foraging,
+    shallow water), ``WORLDS_DURATION_S`` each (``WORLDS_QUICK_S`` with ``--quick``).  The measured value is the largest head path deviation over the
+    worlds [BL]; the figures give each world's deviation, speed ratio and leg-state agreement.  A world whose
+    walk fails in either stance is named in the detail and left out of the largest value; the row fails only
+    when no world gives a pair of walks."""
+    reference = "the dynamic stance's walk in each world (deviation 0)"
+    duration = WORLDS_QUICK_S if ctx.quick else WORLDS_DURATION_S
+    figures: dict[str, float] = {}
+    worst, worst_world, failed, first_failure = -1.0, "", [], None
+    for world in WORLDS:
+        kin = ctx.run("centipede", body, world, duration=duration)
+        dyn = ctx.run("centipede", body, world, duration=duration, overrides=DYNAMIC) \
+            if kin.status == "ok" else kin
+        if kin.status != "ok" or dyn.status != "ok":
+            bad = kin if kin.status != "ok" else dyn
+            failed.append(f"{world} ({'kinematic' if bad is kin else 'dynamic'}: {bad.status})")
+            first_failure = first_failure or bad
+            for name in ("deviation_bl", "speed_ratio", "leg_state_agreement"):
+                figures[f"{world}_{name}"] = float("nan")
+            continue
+        path, agree = _deviation(kin, dyn)
+        dev_bl = path / float(kin.metrics.get("body_length_m", float("nan")))
+        vk, vd = kin.metrics.get("speed_m_per_s"), dyn.metrics.get("speed_m_per_s")
+        figures[f"{world}_deviation_bl"] = dev_bl
+        figures[f"{world}_speed_ratio"] = vd / vk if vk else float("nan")
+        figures[f"{world}_leg_state_agreement"] = agree
+        if dev_bl > worst:
+            worst, worst_world = dev_bl, world
+    if worst < 0.0:
+        return failed_run(first_failure, reference)
+    detail = (f"kinematic against dynamic stance, {duration:g} s in each of {len(WORLDS)} worlds: heads "
+              f"{worst:.3g} BL apart at most ({worst_world}); "
+              + ", ".join(f"{w} {figures[w + '_deviation_bl']:.3g}" for w in WORLDS
+                          if figures[w + "_deviation_bl"] == figures[w + "_deviation_bl"])
+              + (f"; not compared: {', '.join(failed)}" if failed else ""))
+    return Outcome(INFO, worst, 0.0, "- (a measure of the shortcut, INFO)", detail, "BL", figures)

@@ -626,6 +626,7 @@ CHECKS = {"analytic.worm-eps-lambda": False, "analytic.free-fall-momentum": True
           "paper.fig10d-walk": True, "paper.wave-centipede": True, "paper.wave-millipede": False,
           "paper.control-turn": False, "paper.foraging": False, "paper.avoidance": False,
           "paper.kinematic-shortcut-centipede": True, "paper.kinematic-shortcut-millipede": True,
+          "paper.kinematic-shortcut-worlds": False,
           "throughput.sec6-headline": True}
 
 # where ``kernels.FEMLinks`` holds the muscles, and their buffer last in ``kernels.ActiveLinks`` (``_chain_args``)
