@@ -148,11 +148,10 @@ def _bodies(df: pd.DataFrame) -> list[str]:
     return list(dict.fromkeys(df["body"]))
 
 
-def _stiffness_lines(ax, d: pd.DataFrame, body: str, x: str, metric: str, order: str | None = None,
-                     mark_coordinated: bool = True) -> None:
+def _stiffness_lines(ax, d: pd.DataFrame, x: str, metric: str, order: str | None = None) -> None:
     """One line per stiffness of ``metric`` against column ``x`` on ``ax``, its points joined in the order of
-    column ``order`` (the swept knob; default ``x``): filled markers for coordinated walks, hollow ones for the
-    rest, a cross for a run that did not finish."""
+    column ``order`` (the swept knob; default ``x``): filled markers where column ``_coord`` holds, hollow ones
+    for the rest, a cross for a run that did not finish."""
     keys = stiffness_key(d)
     key = str(keys[keys != ""].iloc[0]) if (keys != "").any() else ""
     ks = sorted(d["_k"].dropna().unique())
@@ -162,7 +161,7 @@ def _stiffness_lines(ax, d: pd.DataFrame, body: str, x: str, metric: str, order:
         color = cmap(n / max(1, len(ks) - 1) * 0.9)
         y = _metric(s, metric) if metric != "_ratio" else s["_ratio"]
         ax.plot(s[x], y, "-", color=color, lw=1.2, label=STIFFNESS_LABELS.get(key, key + " = {:g}").format(k))
-        good = s["_coord"] if mark_coordinated else pd.Series(True, index=s.index)
+        good = s["_coord"]
         ax.plot(s[x][good], y[good], "o", color=color, ms=6)
         ax.plot(s[x][~good], y[~good], "o", mfc="white", mec=color, ms=6, mew=1.5)
         failed = s["status"] != "ok"
@@ -171,30 +170,40 @@ def _stiffness_lines(ax, d: pd.DataFrame, body: str, x: str, metric: str, order:
     ax.grid(alpha=0.3)
 
 
+def _stiffness_figure(d: pd.DataFrame, panels, x: str, xlabel: str, legend_title: str, path: Path,
+                      order: str | None = None, guides=None) -> Path:
+    """A row of ``panels`` ((metric, label), ...) per body, each ``_stiffness_lines`` against column ``x``;
+    ``guides(ax, metric)`` draws a panel's reference lines.  Written to ``path``."""
+    bodies = _bodies(d)
+    with report_style():
+        fig, axes = plt.subplots(len(bodies), len(panels), figsize=(11.0, 3.2 * len(bodies)), squeeze=False)
+        for i, body in enumerate(bodies):
+            sub = d[d["body"] == body]
+            for j, (metric, label) in enumerate(panels):
+                ax = axes[i, j]
+                _stiffness_lines(ax, sub, x, metric, order=order)
+                ax.set_ylabel(label)
+                ax.set_title(body)
+                if guides is not None:
+                    guides(ax, metric)
+                if i == len(bodies) - 1:
+                    ax.set_xlabel(xlabel)
+                if j == 0:
+                    ax.legend(fontsize=7, title=legend_title, title_fontsize=7)
+        fig.tight_layout()
+        return save_figure(fig, path)
+
+
 def plot_stiffness_sweep(df: pd.DataFrame, path: Path) -> Path:
     """Sweep (a): per body (rows), undulation amplitude [BL], speed per stride [BL] and the legs' cost of
     transport [-] against the measured stride frequency [Hz], one line per link stiffness joining the swing
     speeds in order; filled markers: coordinated walks (``coordinated``), hollow: not."""
     d = df.assign(_k=stiffness(df), _coord=coordinated(df), _f=_metric(df, "stride_frequency_hz"))
-    bodies = _bodies(d)
     panels = (("undulation_amplitude_bl", "undulation amplitude [BL]"),
               ("speed_bl_per_stride", "speed per stride [BL]"),
               ("cost_of_transport", "legs' cost of transport [-]"))
-    with report_style():
-        fig, axes = plt.subplots(len(bodies), 3, figsize=(11.0, 3.2 * len(bodies)), squeeze=False)
-        for i, body in enumerate(bodies):
-            sub = d[d["body"] == body]
-            for j, (metric, label) in enumerate(panels):
-                ax = axes[i, j]
-                _stiffness_lines(ax, sub, body, "_f", metric, order=f"grid.{SWING_KEY}")
-                ax.set_ylabel(label)
-                ax.set_title(body)
-                if i == len(bodies) - 1:
-                    ax.set_xlabel("stride frequency [Hz]")
-                if j == 0:
-                    ax.legend(fontsize=7, title="filled: coordinated", title_fontsize=7)
-        fig.tight_layout()
-        return save_figure(fig, path)
+    return _stiffness_figure(d, panels, "_f", "stride frequency [Hz]", "filled: coordinated", path,
+                             order=f"grid.{SWING_KEY}")
 
 
 def plot_speed_sweep(df: pd.DataFrame, path: Path) -> Path:
@@ -203,29 +212,18 @@ def plot_speed_sweep(df: pd.DataFrame, path: Path) -> Path:
     walking holds (``straight_walk_lost`` false), hollow: lost."""
     d = df.assign(_k=stiffness(df), _v=commanded_speed(df), _ratio=speed_ratio(df))
     d["_coord"] = ~straight_walk_lost(d)
-    bodies = _bodies(d)
     panels = (("undulation_amplitude_bl", "undulation amplitude [BL]"),
               ("head_yaw_osc_deg", "head yaw oscillation [deg]"),
               ("_ratio", "body speed / commanded speed"))
-    with report_style():
-        fig, axes = plt.subplots(len(bodies), 3, figsize=(11.0, 3.2 * len(bodies)), squeeze=False)
-        for i, body in enumerate(bodies):
-            sub = d[d["body"] == body]
-            for j, (metric, label) in enumerate(panels):
-                ax = axes[i, j]
-                _stiffness_lines(ax, sub, body, "_v", metric)
-                ax.set_ylabel(label)
-                ax.set_title(body)
-                if metric == "undulation_amplitude_bl":
-                    ax.axhline(UNDULATION_LOST_BL, color="0.5", ls=":", lw=1.0)
-                if metric == "_ratio":
-                    ax.axhspan(1.0 - SPEED_BAND, 1.0 + SPEED_BAND, color="0.9", zorder=0)
-                if i == len(bodies) - 1:
-                    ax.set_xlabel("commanded head speed [m/s]")
-                if j == 0:
-                    ax.legend(fontsize=7, title="filled: straight walk holds", title_fontsize=7)
-        fig.tight_layout()
-        return save_figure(fig, path)
+
+    def guides(ax, metric):
+        if metric == "undulation_amplitude_bl":
+            ax.axhline(UNDULATION_LOST_BL, color="0.5", ls=":", lw=1.0)
+        if metric == "_ratio":
+            ax.axhspan(1.0 - SPEED_BAND, 1.0 + SPEED_BAND, color="0.9", zorder=0)
+
+    return _stiffness_figure(d, panels, "_v", "commanded head speed [m/s]", "filled: straight walk holds", path,
+                             guides=guides)
 
 
 def plot_body_wave_sweep(df: pd.DataFrame, path: Path) -> Path:
