@@ -14,6 +14,7 @@ import pytest
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import Creature
+from creature_runs import run_for
 
 STIFF = ("legs.stance_frequency_hz=1000", "legs.foot_mu=1000")
 ICE = ("legs.foot_mu=0", "friction.mu_forward=0", "friction.mu_backward=0", "friction.mu_transverse=0")
@@ -23,13 +24,8 @@ WALK_START_S = 1.0   # the drop onto the legs (ADJUSTMENT) is over: the walk pro
 def walk(body, *sets, duration=4.0):
     case = resolve_case("centipede", body, "straight", overrides=["creature.segments=6", *sets])
     cr = Creature(case, fused=True)
-    n = int(round(duration / case.dt))
-    done = status = 0
     com = []
-    while done < n and status == 0:
-        k, status = cr.advance(done * case.dt, min(500, n - done))
-        done += k
-        com.append((done * case.dt, *cr.body.centre_of_mass()))
+    _, status = run_for(cr, case.dt, duration, lambda done: com.append((done * case.dt, *cr.body.centre_of_mass())))
     t, states, _ = cr.controller.leg_timeline.legs()
     return dict(t=t, c=cr.controller.leg_timeline.centre_array(), states=states, status=status,
                 stats=cr.body.stance_statistics(), com=np.array(com))

@@ -7,6 +7,7 @@ import pytest
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import Creature
+from creature_runs import run_for
 from bench_myriapoda.metrics.undulation import undulation_metrics
 
 STIFF = ("legs.stance_frequency_hz=1000", "legs.foot_mu=1000")
@@ -22,11 +23,7 @@ def walk(body, *sets, scenario="straight", segments=6, duration=4.0, creature="c
     case = resolve_case(creature, body, scenario,
                         overrides=[f"creature.segments={segments}", PAPER_FOLLOWER, *sets])
     cr = Creature(case, fused=True)
-    n = int(round(duration / case.dt))
-    done = status = 0
-    while done < n and status == 0:
-        k, status = cr.advance(done * case.dt, min(500, n - done))
-        done += k
+    _, status = run_for(cr, case.dt, duration)
     t, states, _ = cr.controller.leg_timeline.legs()
     return dict(t=t, c=cr.controller.leg_timeline.centre_array(), states=states, status=status, body=cr.body)
 
@@ -112,12 +109,8 @@ def test_every_myriapod_scenario_runs_in_dynamic_stance_at_the_default_time_step
     # the 18-segment centipede (the creature's own size) for 1.5 s at the body's default dt
     case = resolve_case("centipede", body, scenario, overrides=["legs.stance=dynamic"])
     cr = Creature(case, fused=True)
-    n = int(round(1.5 / case.dt))
-    done = 0
-    while done < n:
-        k, status = cr.advance(done * case.dt, min(500, n - done))
-        done += k
-        assert status == 0, f"{scenario} on {body}: {cr.body.status_text(status)} at {done * case.dt:.3f} s"
+    done, status = run_for(cr, case.dt, 1.5)
+    assert status == 0, f"{scenario} on {body}: {cr.body.status_text(status)} at {done * case.dt:.3f} s"
     assert np.all(np.isfinite(cr.body.rigid.c)) and np.all(np.isfinite(cr.controller.tips))
 
 
@@ -134,12 +127,8 @@ def test_every_myriapod_scenario_runs_in_dynamic_stance_on_fem_at_the_default_ti
     case = resolve_case("centipede", "fem", scenario, overrides=["legs.stance=dynamic"])
     cr = Creature(case, fused=True)
     assert cr.body.dynamic_stance
-    n = int(round(1.5 / case.dt))
-    done = 0
-    while done < n:
-        k, status = cr.advance(done * case.dt, min(500, n - done))
-        done += k
-        assert status == 0, f"{scenario} on fem: {cr.body.status_text(status)} at {done * case.dt:.3f} s"
+    done, status = run_for(cr, case.dt, 1.5)
+    assert status == 0, f"{scenario} on fem: {cr.body.status_text(status)} at {done * case.dt:.3f} s"
     assert np.all(np.isfinite(cr.body.x)) and np.all(np.isfinite(cr.controller.tips))
     if not case.scenario.suspended:            # (hanging, no foot stands on anything)
         assert cr.body.stance.acc[0] > 0       # STANCE feet pushed

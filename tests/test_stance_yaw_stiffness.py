@@ -21,6 +21,7 @@ import pytest
 
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.harness.runner import Creature
+from creature_runs import run_for
 from bench_myriapoda.metrics.undulation import _uniform, lateral_displacements, undulation_metrics
 
 WINDOW_START_S = 2.0
@@ -30,11 +31,7 @@ def undulation(body, key, value, duration=10.0):
     case = resolve_case("centipede", body, "straight",
                         overrides=["creature.segments=6", "legs.stance=dynamic", f"{key}={value}"])
     cr = Creature(case, fused=True)
-    n = int(round(duration / case.dt))
-    done = status = 0
-    while done < n and status == 0:
-        k, status = cr.advance(done * case.dt, min(500, n - done))
-        done += k
+    _, status = run_for(cr, case.dt, duration)
     assert status == 0
     t, _, _ = cr.controller.leg_timeline.legs()
     c = cr.controller.leg_timeline.centre_array()
