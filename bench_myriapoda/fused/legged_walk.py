@@ -38,7 +38,11 @@ controller ticking slower than every step, a controller of another class, a body
 """
 from __future__ import annotations
 
+import hashlib
+import sys
+import types
 from collections import namedtuple
+from pathlib import Path
 
 import numpy as np
 from numba import njit
@@ -138,6 +142,33 @@ def legged_chunk(t0, dt, n_steps, C, P, REC):
     return n_steps, OK, n_rec
 
 
+# A pack class from outside the package (a plugin's legged body, tests/test_fourth_body_legged.py) gets a copy of
+# ``legged_chunk`` with a cache index of its own.  numba keeps one index file per kernel holding every cached
+# signature's types, pickled, and reads all of it to look up any one: a plugin's pack class in the package kernel's
+# index made every process that cannot import the plugin module fail at its first fused legged run ("No module
+# named 'test_fourth_body_legged'", the hybrid's walk from a plain shell).  The copy's index is named after the
+# plugin module and a hash of its source: the body's functions are compiled into the chunk, and numba's cache only
+# watches this file, so an edited plugin must not load the chunk of its previous version.
+_PLUGIN_CHUNKS: dict[str, object] = {}
+
+
+def chunk_kernel(pack_class: type):
+    """The chunk kernel for packs of ``pack_class``: ``legged_chunk``, or for a class outside the package its copy
+    (above), compiled and cached like it (the same code, so the same results)."""
+    module = pack_class.__module__
+    if module == "bench_myriapoda" or module.startswith("bench_myriapoda."):
+        return legged_chunk
+    if module not in _PLUGIN_CHUNKS:
+        source = getattr(sys.modules.get(module), "__file__", None)
+        digest = hashlib.sha1(Path(source).read_bytes() if source else module.encode()).hexdigest()[:16]
+        f = legged_chunk.py_func
+        copy = types.FunctionType(f.__code__, f.__globals__, f.__name__, f.__defaults__, f.__closure__)
+        copy.__qualname__ = f"{f.__qualname__}__{module.replace('.', '_')}_{digest}"  # names numba's index file
+        copy.__doc__ = f.__doc__
+        _PLUGIN_CHUNKS[module] = njit(cache=True, error_model="numpy")(copy)
+    return _PLUGIN_CHUNKS[module]
+
+
 class FusedLeggedWalk:
     """``advance(t0, n) -> (steps done, status)`` of a legged body and its leg controller in one compiled call.
 
@@ -152,6 +183,7 @@ class FusedLeggedWalk:
         n_seg, n_legs = controller.n_seg, controller.n_legs
         self.err_scratch = np.zeros(n_seg)
         self._alloc(1, n_seg, n_legs)
+        self._chunk = chunk_kernel(type(body.legged_pack()))
 
     def _alloc(self, rows: int, n_seg: int, n_legs: int) -> None:
         self.rec_t = np.zeros(rows)
@@ -175,7 +207,7 @@ class FusedLeggedWalk:
         REC = plain(Timeline(t=self.rec_t, states=self.rec_states, tips=self.rec_tips, brain=self.rec_brain,
                              contact=self.rec_contact, centres=self.rec_centres, c=self.rec_c, R=self.rec_R,
                              links=self.rec_links))
-        k, code, n_rec = legged_chunk(float(t0), float(ctrl.dt), int(n), C, self.body.legged_pack(), REC)
+        k, code, n_rec = self._chunk(float(t0), float(ctrl.dt), int(n), C, self.body.legged_pack(), REC)
         cs.unpack()
         cs.settle()
         self._replay(int(n_rec))
