@@ -146,7 +146,7 @@ def legged_chunk(t0, dt, n_steps, C, P, REC):
 # ``legged_chunk`` with a cache index of its own.  numba keeps one index file per kernel holding every cached
 # signature's types, pickled, and reads all of it to look up any one: a plugin's pack class in the package kernel's
 # index made every process that cannot import the plugin module fail at its first fused legged run ("No module
-# named 'test_fourth_body_legged'", the hybrid's walk from a plain shell).  The copy's index is named after the
+# named 'test_fourth_body_legged'", a built-in body's walk from a plain shell).  The copy's index is named after the
 # plugin module and a hash of its source: the body's functions are compiled into the chunk, and numba's cache only
 # watches this file, so an edited plugin must not load the chunk of its previous version.
 _PLUGIN_CHUNKS: dict[str, object] = {}
