@@ -16,9 +16,12 @@ with ``legged_chunk.register``: its poses, support, sample and step are the same
 methods call, so the two paths give the same doubles (``test_the_fused_walk_equals_the_python_walk_bit_for_bit``).
 
 It declares everything the suite asks of a body model in one ``BodySpec`` (``BODIES`` below), read by the
-catalog as a plugin (``BENCH_MYRIAPODA_PLUGINS=test_fourth_body_legged``); no file of the package or of
-``models/`` changes: the centipede (and the millipede) run on it through ``run``, ``matrix``, the fused path and
-``validate --quick``.
+catalog as a plugin (``BENCH_MYRIAPODA_PLUGINS=test_fourth_body_legged``); no creature file and no module of the
+package names it: the centipede (and the millipede) run on it through ``run``, ``matrix``, the fused path and
+``validate --quick``.  The one package change a legged plugin needed is generic: the fused walk compiles a pack
+class from outside the package into a copy of its chunk kernel with a numba cache index of its own
+(``fused.legged_walk.chunk_kernel`` says why: in the package kernel's index this module's class broke every later
+legged run of a process that cannot import it).
 """
 from __future__ import annotations
 
@@ -544,6 +547,13 @@ def test_the_fused_walk_equals_the_python_walk_bit_for_bit(walked_both_ways):
     assert sum(CHUNKS) * case.dt >= 1.0 - 1e-9
     assert_same_record(fused, ref)  # the controllers' timelines, the monitors' samples and metrics, observations
     assert np.isfinite(fused.controller.t_walk)  # past ADJUSTMENT: the comparison covers walking
+    # the package's chunk kernel was never compiled for this module's pack class, so its numba cache index stays
+    # readable by a process that cannot import this module: the plugin's own copy was
+    from bench_myriapoda.fused import legged_walk
+    kernel = legged_walk.chunk_kernel(JointedLegs)
+    assert kernel is not legged_walk.legged_chunk
+    assert any("JointedLegs" in str(sig) for sig in kernel.signatures)
+    assert not any("JointedLegs" in str(sig) for sig in legged_walk.legged_chunk.signatures)
 
 
 def test_the_supported_segments_follow_their_kinematic_targets(walked_both_ways):
