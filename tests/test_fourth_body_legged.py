@@ -618,11 +618,11 @@ def test_the_dropped_centipede_comes_to_rest_on_the_ground(plugin):
     assert b.rigid.c[:, 1].min() > 0.3
     assert b.advance(0.0, int(round(1.5 / case.dt))) == (int(round(1.5 / case.dt)), 0)
     half_height = 0.5 * case.creature.height_m
-    assert np.abs(b.rigid.c[:, 1] - half_height).max() < 2e-3
+    assert np.abs(b.rigid.c[:, 1] - half_height).max() < 1e-4  # measured 1e-5: the contact's slop
     assert np.abs(b.rigid.v).max() < 1e-3
-    assert b.max_penetration() < 5e-3
+    assert b.max_penetration() < 2e-3  # measured 0.27 mm, on impact
     assert b.observe(1.5).seg_contact.all()
-    assert b.joint_gaps().max() < 1e-3  # the joints hold the chain together at rest
+    assert b.joint_gaps().max() < 1e-6  # the joints hold the chain together at rest (measured 7e-10 m)
 
 
 def _env(plugin: bool) -> dict:
