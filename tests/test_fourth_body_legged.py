@@ -457,10 +457,14 @@ def check_buildable(case, source: str) -> None:
                                        f"{2.0 / w:.3g} s; must be smaller (or lower body.joint_hz)")
 
 
-# The one table row: what the suite knows of this body model.  ``validate --quick`` runs these checks on it: the
-# paper's legged ones (one 10 s walk for the gait cycle and the wave, a 3 s hang).  Not ``analytic.free-fall-momentum``:
-# it drops a worm, whose crawl needs muscles (the runner refuses the pair); the momentum test below is this body's.
-CHECKS = {"paper.fig10a-hang": True, "paper.wave-centipede": True, "paper.fig10d-walk": True}
+# The one table row: what the suite knows of this body model.  ``validate --quick`` runs the first three on it: the
+# paper's legged checks of one 10 s walk (the gait cycle and the wave) and a 3 s hang.  The full ``validate`` adds the
+# brains' and the millipede's (each PASSed at its full size when this was written; in the quick set's 4 s the
+# millipede's wave read retrograde, lag +0.48 cycles, too short a window).  Not ``analytic.free-fall-momentum``: it
+# drops a worm, whose crawl needs muscles (the runner refuses the pair); the momentum test below is this body's.
+CHECKS = {"paper.fig10a-hang": True, "paper.wave-centipede": True, "paper.fig10d-walk": True,
+          "paper.wave-millipede": False, "paper.control-turn": False, "paper.foraging": False,
+          "paper.avoidance": False}
 BODIES = {NAME: BodySpec(
     name=NAME, description="rigid boxes joined by 6-DOF corner-spring joints, with the paper's kinematic legs "
                            "(tests/test_fourth_body_legged.py)",
