@@ -221,8 +221,8 @@ def support_boxes(record, supported, c_T, R_T):
     drive_to_targets(c, q, v, w, J.Rb, J.kinematic, c_T, R_T, J.phys[DT], J.qtmp)
 
 
-# The fused legged walk's pack (``legged_chunk``): J the ``Jointed`` record as a plain tuple, c_seg (n, 3) and
-# Rseg (n, 3, 3) the scratch of the rotations it hands the controller and the monitor.
+# The fused legged walk's pack (``legged_chunk``): J the ``Jointed`` record as a plain tuple (``advance_jointed``'s);
+# Rseg (n, 3, 3) scratch for the rotations it hands the controller and the monitor.
 JointedLegs = namedtuple("JointedLegs", "J Rseg")
 
 
