@@ -34,7 +34,7 @@ import numpy as np
 
 from ..core import registry
 from ..core.config import resolve_case
-from .throughput_suite import SETUPS, SuiteEntry
+from .throughput_suite import SuiteEntry, setup_of
 
 # import name -> pip name of the optional ``[peers]`` extra
 PEER_PACKAGES = {"mujoco": "mujoco", "elastica": "pyelastica"}
@@ -156,7 +156,7 @@ def setup_elastica_snake(steps: int):
 
 # --------------------------------------------------------------------------- ours, and the entries
 
-# the peer scenes: (points per edge, steps per repetition) of MuJoCo's flex blocks, and their tets
+# the peer scenes: (points per edge, steps per repetition) of MuJoCo's flex blocks
 FLEX_SCENES = ((3, 600), (4, 200))
 
 
@@ -174,9 +174,8 @@ def our_entries() -> dict[str, PeerEntry]:
             sc = pc.case
             dt = pc.dt if pc.dt is not None else resolve_case(sc.creature, body, sc.scenario,
                                                                 overrides=list(sc.overrides)).dt
-            out[pc.entry] = PeerEntry(SuiteEntry(pc.entry, pc.description,
-                                                 lambda b=body, c=sc: SETUPS[c.run](b, c)),
-                                      pc.elements, pc.element_kind, dt, pc.group)
+            out[pc.entry] = PeerEntry(SuiteEntry(pc.entry, pc.description, setup_of(body, sc)), pc.elements,
+                                      pc.element_kind, dt, pc.group)
     return out
 
 

@@ -189,6 +189,9 @@ def setup_of(body: str, sc: SuiteCase) -> Callable[[], tuple[Step, int]]:
     """The ``setup()`` of a published scene: builds, compiles and returns (step, steps) as ``sc.run`` says."""
     if sc.run not in SETUPS:
         raise ValueError(f"suite entry {sc.entry!r} of {body}: unknown run {sc.run!r}; known: {', '.join(SETUPS)}")
+    needs = {RESTART: "restart_state", BARE: "restart_state", KERNEL: "kernel"}.get(sc.run)
+    if needs and getattr(sc, needs) is None:
+        raise ValueError(f"suite entry {sc.entry!r} of {body}: a {sc.run!r} scene needs {needs}")
     return lambda: SETUPS[sc.run](body, sc)
 
 
