@@ -20,6 +20,8 @@ import trimesh
 from PIL import Image
 
 from bench_myriapoda.bodies import scene as SC
+from bench_myriapoda.bodies.fem.surfaces import FEM_BLOCK_SURFACE, FEM_SURFACE
+from bench_myriapoda.bodies.massspring.lattice import LATTICE_SURFACE
 from bench_myriapoda.kinematics.legs import FEMUR, ROOT_X, ROOT_Z, TIBIA
 from bench_myriapoda.harness.runner import Creature
 from bench_myriapoda.cli import main
@@ -81,7 +83,7 @@ def test_scene_faces_index_their_vertices_and_every_surface_is_closed_and_outwar
         assert np.array_equal(np.unique(faces), np.arange(len(verts)))  # no vertex off the surface
         assert np.all(np.isfinite(verts))
         # the legged FEM chain splits one boundary into its blocks' and its links' faces: rejoin them
-        groups.setdefault("fem" if kind in (SC.FEM_SURFACE, SC.FEM_BLOCK_SURFACE) else kind, []).append((verts, faces))
+        groups.setdefault("fem" if kind in (FEM_SURFACE, FEM_BLOCK_SURFACE) else kind, []).append((verts, faces))
     for parts in groups.values():
         mesh = trimesh.util.concatenate([trimesh.Trimesh(v, f, process=False) for v, f in parts])
         if len(parts) > 1:
@@ -108,11 +110,11 @@ def test_scene_surfaces_sit_on_the_bodys_nodes_boxes_and_segment_centres(moved_b
         np.testing.assert_array_equal(v, seg.box_corners())
     name = type(seg).__name__
     if name == "BodyMassSpring":  # every lattice node is on the surface; the springs join the nodes
-        v, _ = kinds[SC.LATTICE_SURFACE]
+        v, _ = kinds[LATTICE_SURFACE]
         np.testing.assert_array_equal(v, seg.x)
         np.testing.assert_array_equal(scene.springs, seg.x[seg.lattice.springs])
     elif name == "BodyRigidSpringChain":
-        v, _ = kinds[SC.LATTICE_SURFACE]
+        v, _ = kinds[LATTICE_SURFACE]
         np.testing.assert_array_equal(v, seg.x)
         assert scene.springs.shape == (len(seg.springs), 2, 3)
     else:
@@ -128,7 +130,7 @@ def test_scene_surfaces_sit_on_the_bodys_nodes_boxes_and_segment_centres(moved_b
         hi = np.array([boxes[o][1] for o in owner])
         on_face = np.any(np.isclose(rest, lo, atol=1e-9) | np.isclose(rest, hi, atol=1e-9), axis=1)
         ids = np.flatnonzero(on_face)
-        fem_kinds = [k for k in kinds if k in (SC.FEM_SURFACE, SC.FEM_BLOCK_SURFACE)]
+        fem_kinds = [k for k in kinds if k in (FEM_SURFACE, FEM_BLOCK_SURFACE)]
         got = np.unique(np.concatenate([kinds[k][0] for k in fem_kinds]), axis=0)
         np.testing.assert_array_equal(got, np.unique(seg.x[ids], axis=0))
     assert scene.springs is None or scene.springs.shape[1:] == (2, 3)

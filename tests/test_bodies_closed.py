@@ -5,9 +5,9 @@ estimates, benchmark scenes, references) is declared in its ``BodySpec`` or publ
 A module names a body model when its code (docstrings and comments are prose and do not count) holds a string
 that is a body's name or starts with one and a dash (a throughput-suite entry such as ``"fem-worm"``), imports
 from ``bench_myriapoda.bodies.<name>``, or reads one of a body's internals (``BODY_INTERNALS``) off an object.
-The generated compile data (``jit/compile_plans.json``) is data, not a module, and is not read.  What remains is listed in
-``KNOWN_NAMING`` with what removes it: a new one fails the test and a listed one that is gone fails it too, so
-the list only shrinks (a ratchet: this is the state at issue 42's first stage, not the goal).
+The generated compile data (``jit/compile_plans.json``) is data, not a module, and is not read.  What remains would
+be listed in ``KNOWN_NAMING`` with what removes it: a new one fails the test and a listed one that is gone fails it
+too, so the list only shrinks (a ratchet; empty since issue 42 item 4).
 """
 from __future__ import annotations
 
@@ -21,41 +21,11 @@ EXCLUDED = {"catalog.py"}
 # attributes that only a body model has (its own geometry and sub-systems), read off another object
 BODY_INTERNALS = frozenset({"layout", "rigid", "fem", "lattice", "system", "free", "stiffness"})
 
-# What still names a body outside its subpackage, each with what removes it (issue 42).
-KNOWN_NAMING: set[tuple[str, str]] = {
-    # issue 42: the scene's kinds of surface are named after the bodies that draw them; each body should
-    # declare its own kinds (and styles) instead
-    ("bodies/scene.py", "'fem-block-surface'"),
-    ("bodies/scene.py", "'fem-surface'"),
-    # issue 42: the segment frames' polar decomposition is the FEM kernels' SVD; it moves to a shared kernel
-    # module with the SVD (the compile plans name it, so they are re-recorded with it)
-    ("bodies/segment_frames.py", "import fem.kernels"),
-    # issue 42: the throughput suite's and the peers' scenes are body-specific benchmarks; each body should
-    # publish its own (BodySpec) and the suite list them
-    ("harness/peers.py", "'massspring'"),
-    ("harness/peers.py", "f'ours:fem-chain-'"),
-    ("harness/peers.py", "'ours:massspring-snake'"),
-    ("harness/peers.py", "import fem.system"),
-    ("harness/throughput_suite.py", "'fem'"),
-    ("harness/throughput_suite.py", "'fem-centipede'"),
-    ("harness/throughput_suite.py", "'fem-chain'"),
-    ("harness/throughput_suite.py", "'fem-worm'"),
-    ("harness/throughput_suite.py", "'hybrid'"),
-    ("harness/throughput_suite.py", "'hybrid-centipede'"),
-    ("harness/throughput_suite.py", "'hybrid-centipede-python'"),
-    ("harness/throughput_suite.py", "'hybrid-chain'"),
-    ("harness/throughput_suite.py", "'massspring'"),
-    ("harness/throughput_suite.py", "'massspring-centipede'"),
-    ("harness/throughput_suite.py", "'massspring-snake'"),
-    ("harness/throughput_suite.py", "import fem.mesh"),
-    ("harness/throughput_suite.py", "import fem.system"),
-    ("harness/throughput_suite.py", ".fem"),
-    ("harness/throughput_suite.py", ".free"),
-    ("harness/throughput_suite.py", ".rigid"),
-    ("harness/throughput_suite.py", ".system"),
-    # issue 42: the worker-cost probe's case ("the cheapest kernels to load") should be declared by a body
-    ("harness/worker_costs.py", "'massspring'"),
-}
+# What still names a body outside its subpackage, each with what removes it (issue 42).  Empty since issue 42
+# item 4: the scene's surface kinds are the bodies' (BodySpec.surface_kinds), the SVD is a shared kernel module
+# (bodies/svd_kernels.py), and the throughput suite's, the peers' and the worker-cost probe's scenes are published
+# by the bodies (BodySpec.benchmarks).  A new naming fails the test.
+KNOWN_NAMING: set[tuple[str, str]] = set()
 
 
 def _docstrings(tree: ast.AST) -> set[int]:
@@ -151,3 +121,56 @@ def test_the_specs_declare_what_the_harness_and_validation_read():
     from bench_myriapoda.validation.cross_body import hanging_pair
 
     assert hanging_pair() == ("fem", "hybrid")  # the hanging comparison's pair, found through the specs
+
+
+# The entry names of the throughput suite and the peers as regress_history stores them: the history compares by
+# name, so publishing the scenes from the bodies (BodySpec.benchmarks) must keep every one.
+SUITE_ENTRIES = {"massspring-snake", "fem-chain", "fem-worm", "hybrid-chain", "hybrid-centipede",
+                 "hybrid-centipede-python", "massspring-centipede", "fem-centipede", "rigid-boxes"}
+PEER_ENTRIES = ["peer:mujoco-flex-816", "ours:fem-chain-816", "peer:mujoco-flex-2754", "ours:fem-chain-2754",
+                "peer:pyelastica-snake", "ours:massspring-snake"]
+
+
+def test_the_suite_and_the_peers_list_the_bodies_published_entries_under_their_old_names():
+    from bench_myriapoda.harness import peers as P
+    from bench_myriapoda.harness import throughput_suite as TS
+
+    assert set(TS.SUITE) == SUITE_ENTRIES
+    entries = P.peer_entries()
+    assert list(entries) == PEER_ENTRIES  # each peer, then ours of its group
+    assert P.peer_pairs(entries) == {"peer:mujoco-flex-816": "ours:fem-chain-816",
+                                     "peer:mujoco-flex-2754": "ours:fem-chain-2754",
+                                     "peer:pyelastica-snake": "ours:massspring-snake"}
+    # ours of the snake group is the regress entry's own scene, at the snake's own time step
+    from bench_myriapoda.bodies.massspring import benchmarks as MB
+    from bench_myriapoda.core.config import resolve_case
+
+    snake = entries["ours:massspring-snake"]
+    assert snake.dt == resolve_case("snake", "massspring", "flat").dt and snake.elements == 50
+    assert MB.BENCHMARKS.peers[0].case is MB.SNAKE
+    assert set(TS.scaling_cases()) == {"snake", "centipede"}
+
+
+def test_the_worker_cost_probe_takes_the_case_a_body_declares():
+    from bench_myriapoda.harness import worker_costs as W
+
+    assert W.probe_case() == ("worm", "massspring", "flat")
+
+
+def test_each_kind_of_scene_surface_has_one_style():
+    """The animations read the styles from the specs and the shared kinds (report.scene_style): a kind two bodies
+    declare must be drawn alike, and no body redeclares a shared kind."""
+    from bench_myriapoda.bodies import scene as SC
+    from bench_myriapoda.core import registry
+    from bench_myriapoda.report.scene_style import surface_style
+
+    registry.load_all()
+    seen = {}
+    for name, spec in registry.BODIES.items():
+        assert spec.surface_kinds, name
+        for kind, style in spec.surface_kinds.items():
+            assert kind not in SC.SHARED_SURFACE_KINDS
+            assert seen.setdefault(kind, style) == style, kind
+            assert surface_style(kind) == style
+    assert surface_style(SC.RIGID_BOX).edges_in_face_color
+    assert surface_style("no-such-kind").color == "#aaaaaa"

@@ -14,7 +14,9 @@ This module also holds the topology helpers the bodies share: the outward
 triangles of a box (``BOX_FACES``) and of a tetrahedral mesh's boundary
 (``tet_boundary_faces``), read-only face arrays (``static_topology``) and their
 outward winding (``orient_outward``); a body's own topology lives with it (the
-Miller lattice's surface: ``massspring.lattice.lattice_surface_faces``).
+Miller lattice's surface: ``massspring.lattice.lattice_surface_faces``), and so do its
+own kinds of surface and their styles (``BodySpec.surface_kinds``): this module
+names only the kind the bodies share, the rigid box.
 """
 from __future__ import annotations
 
@@ -23,13 +25,14 @@ from functools import lru_cache
 
 import numpy as np
 
+from ..core.specs import SurfaceStyle
 from .rigid import CORNER_SIGNS
 
-# Kinds of triangle surfaces (the animation colours by kind).
-RIGID_BOX = "rigid-box"                  # a rigid segment box (hybrid, legged mass-spring chain)
-FEM_SURFACE = "fem-surface"              # the boundary of an FEM tet mesh (fem body, hybrid links)
-FEM_BLOCK_SURFACE = "fem-block-surface"  # legged FEM chain: boundary faces of the stiff segment blocks
-LATTICE_SURFACE = "lattice-surface"      # the outer faces of a Miller cube lattice (quads split in two)
+# The kind of triangle surface the bodies share (the animation colours by kind; each body declares its own
+# kinds in ``BodySpec.surface_kinds``): a rigid segment box (``box_triangles``), drawn by every body with boxes.
+RIGID_BOX = "rigid-box"
+# kind -> style of the shared kinds; a box side is two triangles, outlined in its own colour (no diagonal)
+SHARED_SURFACE_KINDS = {RIGID_BOX: SurfaceStyle("#b08850", edges_in_face_color=True)}
 
 
 @dataclass

@@ -17,7 +17,7 @@ from numba import njit
 
 from ..world.terrain_kernels import signed_distance
 from ..core.protocols import Actuation
-from .fem.kernels import polar_rotation
+from .svd_kernels import polar_rotation
 from .friction_kernels import CONTACT_DISTANCE
 
 

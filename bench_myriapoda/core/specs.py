@@ -28,6 +28,17 @@ class Footprint:
 
 
 @dataclass(frozen=True)
+class SurfaceStyle:
+    """How the animations (``report.animate``, ``report.animate3d``) draw one kind of triangle surface of a
+    body's scene (``bodies.scene.Scene``): ``color`` its faces' colour (a matplotlib colour, shaded per face);
+    ``edges_in_face_color``: its triangles' edges drawn in the face's own colour (a box side, two triangles,
+    shows no diagonal) instead of the thin dark edge that shows a mesh."""
+
+    color: str
+    edges_in_face_color: bool = False
+
+
+@dataclass(frozen=True)
 class HangingBar:
     """A legged chain body as the 1-D bar it is when hanging by its head (``validation.cross_body``).
 
@@ -88,6 +99,83 @@ class BodyProbes:
     density_and_modulus: Callable[[Any], tuple[float, float] | None] | None = None
 
 
+# How a suite scene is built and timed (``SuiteCase.run``; ``harness.throughput_suite`` runs each).
+RESTART, BARE, WALK_ON, KERNEL = "restart", "bare", "walk-on", "kernel"
+
+
+@dataclass(frozen=True)
+class SuiteCase:
+    """One entry of the throughput suite of ``bench-myriapoda regress`` (``harness.throughput_suite``), published
+    by the body it times (``BodyBenchmarks.suite``) so that the suite names no body.
+
+    - ``entry``: its name in ``regress_history`` (the history compares by name: never renamed); ``description``.
+    - ``steps``: steps of one timed repetition.
+    - ``creature``, ``scenario``, ``overrides``: the scene, a case of this body (``core.config.resolve_case``).
+    - ``run``: how it is built and timed:
+      ``RESTART``: with its gait's controller as a run builds it (``harness.runner.Creature``), compiled, advanced
+      ``settle_steps`` in the runner's chunks; every repetition restores ``restart_state(creature)`` (name ->
+      array, copied after the settling) and advances from the settled time in chunks;
+      ``BARE``: the body alone (``harness.runner.build_body``, no controller), ``prepare(body)`` setting its start
+      state, ``restart_state(body)`` copied, compiled; every repetition restores it and advances in one call;
+      ``WALK_ON``: with its controller (``fused``: one compiled call per chunk, False: the Python path), compiled,
+      walked in ``settle_steps`` in one call; every repetition walks on in one call;
+      ``KERNEL``: ``kernel(steps) -> (step, steps)`` builds a kernel of the body's own (no case, no world), and
+      its ``step(n)`` restarts it and runs n steps.
+    - ``scaling_settle_steps``: > 0: this scene at other numbers of segments is the suite's cost-against-size
+      fit of its creature (``throughput_suite.scaling_scene``), settled that many steps in chunks; a ``RESTART``
+      scene restores ``restart_state`` between the timed runs, a ``WALK_ON`` one walks on.
+    """
+
+    entry: str
+    description: str
+    steps: int
+    run: str
+    creature: str = ""
+    scenario: str = "flat"
+    overrides: tuple[str, ...] = ()
+    settle_steps: int = 0
+    fused: bool = True
+    restart_state: Callable[[Any], Mapping[str, Any]] | None = None
+    prepare: Callable[[Any], None] | None = None
+    kernel: Callable[[int], tuple[Callable[[int], None], int]] | None = None
+    scaling_settle_steps: int = 0
+
+
+@dataclass(frozen=True)
+class PeerCase:
+    """One of our entries of ``bench-myriapoda peers`` (``harness.peers``), published by the body it times.
+
+    ``entry``: its name in ``regress_history`` (never renamed); ``group``: the peer scene it is compared with
+    (``harness.peers``: ``soft-<tets>``, ``snake``); ``elements`` per step of kind ``element_kind`` (``"tet"``,
+    ``"segment"``); ``case``: what is timed, a ``SuiteCase`` (the same work as that suite entry where it is one);
+    ``dt``: the time step [s] of one step (None: the step of ``case``'s scene).
+    """
+
+    entry: str
+    description: str
+    group: str
+    elements: int
+    element_kind: str
+    case: SuiteCase
+    dt: float | None = None
+
+
+@dataclass(frozen=True)
+class BodyBenchmarks:
+    """What the harness's benchmarks time of a body, published by the body (issue 42; ``bodies/<name>/benchmarks.py``).
+
+    - ``suite``: its entries of the throughput suite (``SuiteCase``).
+    - ``peers``: its entries of ``bench-myriapoda peers`` (``PeerCase``).
+    - ``probe_scene``: (creature, scenario) of a short case of this body whose kernels are the cheapest of the
+      catalog's to load: the worker-cost probe's case (``harness.worker_costs`` takes the first body that
+      declares one); None: not this body.
+    """
+
+    suite: tuple[SuiteCase, ...] = ()
+    peers: tuple[PeerCase, ...] = ()
+    probe_scene: tuple[str, str] | None = None
+
+
 @dataclass(frozen=True)
 class BodySpec:
     """A body model backend.
@@ -121,6 +209,11 @@ class BodySpec:
       is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
       ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
     - ``probes``: what validation's analytic checks measure of the body's own systems (``BodyProbes`` above).
+    - ``benchmarks``: what the throughput suite, the peers and the worker-cost probe time of it
+      (``BodyBenchmarks`` above).
+    - ``surface_kinds``: kind -> ``SurfaceStyle`` of the kinds of triangle surface the body's ``scene()`` draws
+      that are its own (a kind the bodies share, the rigid box, is ``bodies.scene``'s); the animations read the
+      styles from the specs and name no body.
     """
 
     name: str
@@ -140,6 +233,8 @@ class BodySpec:
     hanging_bar: Callable[[Any, Any], HangingBar] | None = None
     hang_dt_s: float | None = None
     probes: BodyProbes = field(default_factory=BodyProbes)
+    benchmarks: BodyBenchmarks = field(default_factory=BodyBenchmarks)
+    surface_kinds: Mapping[str, SurfaceStyle] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

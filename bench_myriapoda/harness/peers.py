@@ -15,10 +15,12 @@ from the same machine state.  Entries (names as stored in ``regress_history``):
 - ``peer:pyelastica-snake``: PyElastica's continuum snake example (one Cosserat rod of 50
   elements, 0.35 m, E = 1 MPa, muscle torques as a travelling spline wave, anisotropic Coulomb
   friction on a plane, gravity, analytical linear damping), position Verlet at dt = 1e-4 s.
-- ``ours:fem-chain-816`` / ``ours:fem-chain-2754``: this suite's FEM (``fem.system.FEMSystem``)
-  on the 17-segment chain (resolution 3 or 4 nodes per edge: 48 or 162 tets per segment), resting
-  on the plane (settled before timing), dt = 1/3000 s, Coulomb friction 0.5.
-- ``ours:massspring-snake``: Miller's 50-segment snake (the ``massspring-snake`` regress entry).
+- ours: the bodies publish their entries (``BodySpec.benchmarks.peers``, a ``core.specs.PeerCase`` each, in
+  ``bodies/<name>/benchmarks.py``) with the peer group they are compared with, so this module names no body
+  (issue 42): the FEM's 17-segment chain resting on the plane (``ours:fem-chain-816`` /
+  ``ours:fem-chain-2754``, resolution 3 or 4 nodes per edge, dt = 1/3000 s, Coulomb friction 0.5) in the
+  groups ``soft-816`` / ``soft-2754``, and Miller's 50-segment snake (``ours:massspring-snake``, the same work
+  as its regress entry) in the group ``snake``.
 
 ``ratios(results)`` turns the timings into ns per element-step, steps/s and real-time factors, and
 ours / peer ratios.  Import errors of the optional packages are reported by ``missing_packages``.
@@ -30,7 +32,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .throughput_suite import SuiteEntry
+from ..core import registry
+from ..core.config import resolve_case
+from .throughput_suite import SuiteEntry, setup_of
 
 # import name -> pip name of the optional ``[peers]`` extra
 PEER_PACKAGES = {"mujoco": "mujoco", "elastica": "pyelastica"}
@@ -44,12 +48,6 @@ FLEX_DAMPING = 0.001  # [s] MuJoCo flex elasticity damping (stiffness-proportion
 FLEX_SETTLE_STEPS = 600
 ELASTICA_DT = 1.0e-4  # [s]
 ELASTICA_ELEMENTS = 50
-OURS_SETTLE_STEPS = 3000
-
-
-# peer entry -> our entry it is compared with (same scene size, ``ratios`` and the report's history)
-PEER_PAIRS = {f"peer:mujoco-flex-{n}": f"ours:fem-chain-{n}" for n in (48 * FLEX_BLOCKS, 162 * FLEX_BLOCKS)}
-PEER_PAIRS["peer:pyelastica-snake"] = "ours:massspring-snake"
 
 
 def missing_packages() -> list[str]:
@@ -156,64 +154,73 @@ def setup_elastica_snake(steps: int):
     return step, steps
 
 
-# --------------------------------------------------------------------------- ours
+# --------------------------------------------------------------------------- ours, and the entries
 
-def setup_fem_chain_resting(resolution: int, steps: int):
-    """Our FEM chain (17 segments, resolution nodes per edge) settled on the plane, restarted at every call."""
-    from ..bodies.fem.system import DT_PAPER
-    from .throughput_suite import fem_chain, fem_terrain
+# the peer scenes: (points per edge, steps per repetition) of MuJoCo's flex blocks
+FLEX_SCENES = ((3, 600), (4, 200))
 
-    system, x0, _v0 = fem_chain(resolution=resolution)
-    terrain = fem_terrain()
-    system.x[:] = x0 - [0.0, x0[:, 1].min(), 0.0]  # underside on the plane, at rest
-    r = system.advance(OURS_SETTLE_STEPS, dt=DT_PAPER, terrain=terrain, friction=0.5)
-    if r.status != 0:
-        raise RuntimeError("our FEM chain went unstable while settling")
-    state = [a.copy() for a in (system.x, system.v, system.q_ws)]
 
-    def step(n: int) -> None:
-        for dst, src in zip((system.x, system.v, system.q_ws), state):
-            dst[...] = src
-        r = system.advance(n, dt=DT_PAPER, terrain=terrain, friction=0.5)
-        if r.status != 0 or r.steps != n:
-            raise RuntimeError("our FEM chain stopped early")
+def flex_tets(points_per_edge: int) -> int:
+    """Tets of the ``FLEX_BLOCKS`` flex blocks of ``points_per_edge``^3 vertices (6 per cell, as our chain's)."""
+    return 6 * (points_per_edge - 1) ** 3 * FLEX_BLOCKS
 
-    return step, steps, int(system.n_tets)
+
+def our_entries() -> dict[str, PeerEntry]:
+    """Our entries of ``peers``, as the catalogued bodies publish them (``BodySpec.benchmarks.peers``)."""
+    registry.load_all()
+    out: dict[str, PeerEntry] = {}
+    for body, spec in registry.BODIES.items():
+        for pc in spec.benchmarks.peers:
+            sc = pc.case
+            dt = pc.dt if pc.dt is not None else resolve_case(sc.creature, body, sc.scenario,
+                                                                overrides=list(sc.overrides)).dt
+            out[pc.entry] = PeerEntry(SuiteEntry(pc.entry, pc.description, setup_of(body, sc)), pc.elements,
+                                      pc.element_kind, dt, pc.group)
+    return out
 
 
 def peer_entries() -> dict[str, PeerEntry]:
-    """The entries of ``peers`` in run order (peers first within each group)."""
-    from .throughput_suite import setup_massspring_snake
-
-    tets = {3: 48 * FLEX_BLOCKS, 4: 162 * FLEX_BLOCKS}
+    """The entries of ``peers`` in run order (peers first within each group, then ours of that group)."""
     out: dict[str, PeerEntry] = {}
 
     def add(name, desc, setup, elements, kind, dt, group):
         out[name] = PeerEntry(SuiteEntry(name, desc, setup), elements, kind, dt, group)
 
-    for ppe, steps in ((3, 600), (4, 200)):
-        n = tets[ppe]
+    for ppe, steps in FLEX_SCENES:
+        n = flex_tets(ppe)
         add(f"peer:mujoco-flex-{n}", f"MuJoCo flex, {FLEX_BLOCKS} resting blocks, {n} tets",
             lambda p=ppe, s=steps: setup_mujoco_flex(p, s)[:2], n, "tet", FLEX_DT, f"soft-{n}")
-        add(f"ours:fem-chain-{n}", f"our FEM chain resting on the plane, {n} tets",
-            lambda p=ppe, s=10 * steps: setup_fem_chain_resting(p, s)[:2], n, "tet", FLEX_DT, f"soft-{n}")
     add("peer:pyelastica-snake", f"PyElastica continuum snake, {ELASTICA_ELEMENTS} elements, dt 1e-4 s",
         lambda: setup_elastica_snake(2000), ELASTICA_ELEMENTS, "element", ELASTICA_DT, "snake")
-    add("ours:massspring-snake", "Miller's 50-segment snake (massspring-snake)", setup_massspring_snake,
-        50, "segment", None, "snake")
-    return out
+    ours = our_entries()
+    ordered: dict[str, PeerEntry] = {}
+    for name, e in out.items():  # each peer, then ours of its group
+        ordered[name] = e
+        ordered.update({k: o for k, o in ours.items() if o.group == e.group and k not in ordered})
+    ordered.update({k: o for k, o in ours.items() if k not in ordered})  # ours without a peer, last
+    return ordered
+
+
+def peer_pairs(entries: dict[str, PeerEntry] | None = None) -> dict[str, str]:
+    """Peer entry -> our entry it is compared with (the same group: the same scene size), for ``ratios`` and the
+    report's history; the first of ours where a group has more than one."""
+    entries = peer_entries() if entries is None else entries
+    pairs: dict[str, str] = {}
+    for peer, e in entries.items():
+        if peer.startswith("peer:"):
+            ours = [k for k, o in entries.items() if k.startswith("ours:") and o.group == e.group]
+            if ours:
+                pairs[peer] = ours[0]
+    return pairs
 
 
 def ratios(entries: dict[str, PeerEntry], results) -> list[dict]:
     """Per timed entry: steps/s, ns per element-step, real-time factor, and in each group the
     ratio ours / peer of steps/s and peer / ours of ns per element-step (> 1: ours is faster)."""
-    from ..core.config import resolve_case
-
-    snake_dt = resolve_case("snake", "massspring", "flat").dt
     rows = []
     for r in results:
         e = entries[r.name]
-        dt = e.dt if e.dt is not None else snake_dt
+        dt = e.dt
         rows.append({"entry": r.name, "group": e.group, "elements": e.elements, "element_kind": e.element_kind,
                      "dt_s": dt, "steps_per_s": r.steps_per_s, "spread": r.spread,
                      "ns_per_element_step": 1e9 / (r.steps_per_s * e.elements),

@@ -39,11 +39,10 @@ from matplotlib.colors import to_rgb  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle, Polygon, Rectangle  # noqa: E402
 
-from ..bodies import scene as SC  # noqa: E402
 from ..bodies.scene import Scene  # noqa: E402
 from .scene_style import (  # noqa: E402,F401  (re-exported: the tests and callers name them here)
-    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, GROUND_EDGE, KIND_COLORS, SLAB_COLOR,
-    add_leg_state_legend, surface_height,
+    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, DEFAULT_STYLE, GROUND_COLOR, GROUND_EDGE, SLAB_COLOR,
+    add_leg_state_legend, surface_height, surface_styles,
 )
 from ..metrics.gait import STATE_COLORS, STATE_NAMES  # noqa: E402
 from .terrain_drawing import draw_terrain_shape  # noqa: E402
@@ -174,6 +173,7 @@ def _project_triangles(scene: Scene, view: str) -> tuple[np.ndarray, np.ndarray,
     toward, (a, b) = VIEWS[view]
     depth_axis = 1 if view == "top" else 2
     polys, depth, colors, edges = [], [], [], []
+    styles = surface_styles()
     for verts, faces, kind in scene.triangles:
         if not len(faces):
             continue
@@ -189,12 +189,13 @@ def _project_triangles(scene: Scene, view: str) -> tuple[np.ndarray, np.ndarray,
         polys.append(p[:, :, [a, b]])
         depth.append(p[:, :, depth_axis].mean(axis=1))
         shade = 0.45 + 0.55 * cos                               # flat shading, light from the viewer
-        rgb = np.asarray(to_rgb(KIND_COLORS.get(kind, DEFAULT_COLOR)))
+        style = styles.get(kind, DEFAULT_STYLE)
+        rgb = np.asarray(to_rgb(style.color))
         face = np.column_stack([shade[:, None] * rgb, np.ones(len(p))])
         colors.append(face)
-        # a box face is two triangles: outline them in their own colour so the diagonal does not show;
-        # FEM and lattice triangles keep a dark edge, which shows the mesh
-        edges.append(face if kind == SC.RIGID_BOX else np.tile(EDGE_RGBA, (len(p), 1)))
+        # a box face is two triangles: outlined in their own colour, the diagonal does not show; a mesh's
+        # triangles keep a dark edge, which shows the mesh (``SurfaceStyle.edges_in_face_color``)
+        edges.append(face if style.edges_in_face_color else np.tile(EDGE_RGBA, (len(p), 1)))
     if not polys:
         return np.zeros((0, 3, 2)), np.zeros((0, 4)), np.zeros((0, 4))
     order = np.argsort(np.concatenate(depth), kind="stable")   # far first, near last

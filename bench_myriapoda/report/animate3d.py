@@ -37,8 +37,8 @@ from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noq
 from ..bodies.scene import Scene  # noqa: E402
 from ..world.terrain_kernels import H_NOBST, OBST_CYLINDER, SLAB, obstacle_records  # noqa: E402
 from .scene_style import (  # noqa: E402
-    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR, KIND_COLORS,
-    add_leg_state_legend, surface_height,
+    ANTENNA_COLOR, ANTENNA_CONTACT_COLOR, DEFAULT_COLOR, GROUND_COLOR,
+    add_leg_state_legend, surface_height, surface_style,
 )
 from ..metrics.gait import STATE_COLORS  # noqa: E402
 
@@ -95,7 +95,7 @@ def body_polygons(scene: Scene, toward_camera: np.ndarray) -> tuple[np.ndarray, 
         # a little slack: with perspective, faces near the silhouette are seen although they turn slightly away
         keep = ok & (n @ toward_camera > -0.15)
         polys.append(p[keep])
-        colors.append(shade(n[keep], to_rgb(KIND_COLORS.get(kind, DEFAULT_COLOR))))
+        colors.append(shade(n[keep], to_rgb(surface_style(kind).color)))
     if not polys:
         return np.zeros((0, 3, 3)), np.zeros((0, 4))
     return np.concatenate(polys), np.concatenate(colors)

@@ -74,17 +74,18 @@ def plot_regress_history(df, path: Path | str, title: str | None = None) -> Path
 def peer_ratio_history(df):
     """Ours / peer speed-ups per ``peers`` run: a DataFrame with columns run_id, commit_short, timestamp,
     pair (``ours vs peer``) and speedup (ours steps/s / peer steps/s, > 1: ours is faster), one row
-    per pair present in a run (``harness.peers.PEER_PAIRS``); empty when no run holds a pair."""
+    per pair present in a run (``harness.peers.peer_pairs``); empty when no run holds a pair."""
     import pandas as pd
 
-    from ..harness.peers import PEER_PAIRS
+    from ..harness.peers import peer_pairs
 
     rows = []
     if df is not None and len(df):
+        pairs = peer_pairs()
         for run_id, g in df.groupby("run_id", sort=True):
             sps = dict(zip(g["entry"], g["steps_per_s"]))
             first = g.iloc[0]
-            for peer, ours in PEER_PAIRS.items():
+            for peer, ours in pairs.items():
                 if peer in sps and ours in sps and sps[peer] > 0:
                     rows.append({"run_id": int(run_id), "commit_short": first.get("commit_short", "?"),
                                  "timestamp": first["timestamp"], "pair": f"{ours} vs {peer}",

@@ -5,15 +5,33 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from ..bodies import scene as SC
+from ..core import registry
+from ..core.specs import SurfaceStyle
 from ..metrics.gait import STATE_COLORS, STATE_NAMES
 from ..world.terrain_kernels import terrain_phi_numpy
 
-KIND_COLORS = {SC.RIGID_BOX: "#b08850", SC.FEM_SURFACE: "#7fb3d5", SC.FEM_BLOCK_SURFACE: "#b08850",
-               SC.LATTICE_SURFACE: "#e39c9c"}
 DEFAULT_COLOR = "#aaaaaa"
+DEFAULT_STYLE = SurfaceStyle(DEFAULT_COLOR)  # a kind nobody declares: grey with dark edges
 GROUND_COLOR, GROUND_EDGE, SLAB_COLOR = "#ece2cf", "#8c7a5b", "#d2bf99"
 ANTENNA_COLOR = (0.35, 0.2, 0.05, 1.0)
 ANTENNA_CONTACT_COLOR = (0.85, 0.1, 0.1, 1.0)
+
+
+def surface_styles() -> dict[str, SurfaceStyle]:
+    """Kind -> ``SurfaceStyle`` of every kind of triangle surface a scene may hold: the kinds the bodies share
+    (``bodies.scene.SHARED_SURFACE_KINDS``) and each catalogued body's own (``BodySpec.surface_kinds``), so
+    that the drawing names no body (issue 42)."""
+    registry.load_all()
+    styles = dict(SC.SHARED_SURFACE_KINDS)
+    for spec in registry.BODIES.values():
+        for kind, style in spec.surface_kinds.items():
+            styles.setdefault(kind, style)
+    return styles
+
+
+def surface_style(kind: str) -> SurfaceStyle:
+    """How ``kind`` is drawn (``surface_styles``; ``DEFAULT_STYLE`` for a kind nobody declares)."""
+    return surface_styles().get(kind, DEFAULT_STYLE)
 
 
 def surface_height(kind: int, f: np.ndarray, x: np.ndarray, z: float = 0.0) -> np.ndarray:

@@ -17,7 +17,7 @@ import time
 import pytest
 
 from bench_myriapoda.bodies.fem.system import DT_PAPER
-from bench_myriapoda.harness.throughput_suite import fem_chain, fem_terrain
+from bench_myriapoda.bodies.fem.benchmarks import fem_chain, fem_terrain
 
 N_STEPS = 200
 TERRAIN = fem_terrain()

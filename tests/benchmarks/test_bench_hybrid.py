@@ -16,17 +16,18 @@ import time
 
 from bench_myriapoda.bodies.friction_kernels import CONTACT_DISTANCE
 from bench_myriapoda.bodies.hybrid import kernels as K
-from bench_myriapoda.harness.throughput_suite import HYBRID_RIGID as N_RIGID
-from bench_myriapoda.harness.throughput_suite import hybrid_chain, hybrid_state_fields
+from bench_myriapoda.bodies.hybrid.benchmarks import CHAIN, chain_state
+from bench_myriapoda.bodies.hybrid.benchmarks import HYBRID_RIGID as N_RIGID
+from bench_myriapoda.harness.throughput_suite import bare_body
 
 N_TETS = 816
 N_STEPS = 300
 
 
 def test_bench_hybrid_18_segment_chain_coupled_step(benchmark):
-    body = hybrid_chain()  # the scene of `bench-myriapoda regress`
+    _case, body = bare_body("hybrid", CHAIN)  # the scene of `bench-myriapoda regress`
     assert body.fem.n_tets == N_TETS and body.rigid.n == N_RIGID
-    fields = hybrid_state_fields(body)
+    fields = list(chain_state(body).values())  # every array of its dynamic state, by name
     start = [a.copy() for a in fields]
 
     t0 = time.perf_counter()

@@ -4,7 +4,8 @@ Time it with:
     python -m pytest tests/benchmarks/test_bench_massspring.py --benchmark-enable --benchmark-only
 In the normal test run (--benchmark-disable) it runs once as a smoke test.
 """
-from bench_myriapoda.harness.throughput_suite import SNAKE_SETTLE_STEPS, snake_body
+from bench_myriapoda.bodies.massspring.benchmarks import SNAKE, SNAKE_SETTLE_STEPS
+from bench_myriapoda.harness.throughput_suite import settled_creature
 
 STEPS_PER_CALL = 5000
 
@@ -12,7 +13,7 @@ STEPS_PER_CALL = 5000
 def test_snake_50_segment_step_loop(benchmark):
     # lateral undulation, anisotropic Coulomb friction; compiled, and settled into a moving gait first
     # so the timed steps see contacts, friction and muscles (the scene of `bench-myriapoda regress`)
-    case, body, t_settled = snake_body()
+    case, body, t_settled = settled_creature("massspring", SNAKE)
     assert case.creature.segments == 50 and t_settled == SNAKE_SETTLE_STEPS * case.dt
     t = [t_settled]
 

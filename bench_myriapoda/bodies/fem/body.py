@@ -36,14 +36,16 @@ from .. import step_status as S
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..point_masses import point_mass_momentum_probes
-from ..scene import FEM_SURFACE, Scene, compact, tet_boundary_faces
+from ..scene import Scene, compact, tet_boundary_faces
 from ..segment_chain import check_chain_segments, check_legged_gait
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import analytic_systems as AS
+from . import benchmarks
 from . import body_kernels as BK
 from . import kernels as FK
 from .element_quality import ElementQuality
 from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volumes, tetrahedralize_surface
+from .surfaces import FEM_SURFACE, SURFACE_KINDS
 from .system import DT_PAPER, FEMSystem
 
 FROM_CREATURE = -1.0
@@ -442,9 +444,10 @@ BACKEND = BodySpec(
     # what validation.cross_body's hanging-bar reference reads of a built chain
     hanging_bar=hanging_bar,
     hang_dt_s=1.0 / 6000.0,  # the chain at 5 nodes per edge blows up at 1/3000 s within 1 s
-    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
-    suite_scenes={"worm": ("fem-worm", 20.0 * 27.0),  # the default 20-segment worm, resolution 3
-                  "centipede": ("fem-centipede", 18.0 * 27.0)},
+    # the throughput suite's scenes of this body and their sizes, and what the benchmarks time (benchmarks.py)
+    suite_scenes=benchmarks.SUITE_SCENES, benchmarks=benchmarks.BENCHMARKS,
+    # its kinds of scene surface (surfaces.py)
+    surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the FEM method's own systems (analytic_systems.py)
     probes=BodyProbes(
         rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="mu V^(2/3)",

@@ -79,7 +79,8 @@ from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_points
 from ..segment_chain import LeggedSegments
-from ..scene import FEM_BLOCK_SURFACE, FEM_SURFACE, Scene, compact, tet_boundary_faces
+from ..scene import Scene, compact, tet_boundary_faces
+from .surfaces import FEM_BLOCK_SURFACE, FEM_SURFACE
 from . import kernels as FK
 from .kernels import elastic_forces_gathered, semi_implicit_velocity
 from .element_quality import ElementQuality

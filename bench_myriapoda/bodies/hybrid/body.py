@@ -92,9 +92,11 @@ from ..legged_chunk import register
 from ..placement import place_box_chain
 from ..rigid_chain import boxes_of, chain_phys, coupling_of
 from ..rigid import ContactSettings, RigidBoxes
-from ..scene import FEM_SURFACE, RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
+from ..fem.surfaces import FEM_SURFACE, SURFACE_KINDS as FEM_SURFACE_KINDS
+from ..scene import RIGID_BOX, Scene, box_triangles, compact, tet_boundary_faces
 from ..segment_chain import (CouplingScratch, SegmentChainLayout, SupportedSegments, chain_sizes, check_chain_segments,
                              check_link_fit)
+from . import benchmarks
 from . import kernels as K
 
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
@@ -692,9 +694,10 @@ BACKEND = BodySpec(
     step_cost_s={False: 5.0e-7, True: 3.2e-7},
     # what validation.cross_body's hanging-bar reference reads of a built chain
     hanging_bar=hanging_bar,
-    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
-    suite_scenes={"chain": ("hybrid-chain", 18.0 * 27.0),  # 18 boxes, 17 links at resolution 3
-                  "centipede": ("hybrid-centipede", 18.0 * 27.0)},
+    # the throughput suite's scenes of this body and their sizes, and what the benchmarks time (benchmarks.py)
+    suite_scenes=benchmarks.SUITE_SCENES, benchmarks=benchmarks.BENCHMARKS,
+    # its own kind of scene surface: the links, drawn as the fem body's meshes (its boxes are a shared kind)
+    surface_kinds={FEM_SURFACE: FEM_SURFACE_KINDS[FEM_SURFACE]},
     # what validation's analytic checks measure: the momenta of boxes and free nodes together
     probes=BodyProbes(
         rigid_motion_not_applicable="the hybrid's links are the fem body's FEMSystem (checked on fem); its boxes "

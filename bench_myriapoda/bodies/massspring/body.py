@@ -24,12 +24,13 @@ from ..case_scalars import contact_scalars
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..placement import place_points
 from ..point_masses import point_mass_momentum_probes
-from ..scene import LATTICE_SURFACE, Scene
-from .lattice import lattice_surface_faces
+from ..scene import Scene
+from .lattice import LATTICE_SURFACE, SURFACE_KINDS, lattice_surface_faces
 from .. import step_status as S
 from ..segment_chain import chain_sizes, check_chain_segments, check_legged_gait, check_link_fit
 from ..segment_frames import NodeSegments, csr_rest_offsets
 from . import analytic_systems as AS
+from . import benchmarks
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
 
@@ -294,9 +295,10 @@ BACKEND = BodySpec(
     # the median over its cases of (wall - compile) / steps / size, divided by 10, the ratio of that run's
     # summed case times (235 s) to the issue's quiet 16-core machine's (23 s, 1 worker)
     step_cost_s={False: 1.0e-6, True: 2.2e-5},
-    # the throughput suite's scenes of this body (harness/throughput_suite.py) and their sizes
-    suite_scenes={"snake": ("massspring-snake", 50.0),  # Miller's 50-segment snake
-                  "centipede": ("massspring-centipede", 18.0)},
+    # the throughput suite's scenes of this body and their sizes, and what the benchmarks time (benchmarks.py)
+    suite_scenes=benchmarks.SUITE_SCENES, benchmarks=benchmarks.BENCHMARKS,
+    # its kind of scene surface, the lattice's (lattice.py; its legged chain's boxes are a shared kind)
+    surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the lattice (analytic_systems.py); body.damping=0 takes its
     # springs' damping off for the undamped stable-dt limit
     probes=BodyProbes(rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="k L",

@@ -24,7 +24,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.specs import SurfaceStyle
 from ..scene import orient_outward, static_topology
+
+# The lattice's kind of triangle surface in a scene (its outer faces, quads split in two) and how the
+# animations draw it (``BodySpec.surface_kinds``): dark triangle edges, which show the lattice
+LATTICE_SURFACE = "lattice-surface"
+SURFACE_KINDS = {LATTICE_SURFACE: SurfaceStyle("#e39c9c")}
 
 AXIAL, CROSS, SIDE_DIAG = 0, 1, 2
 

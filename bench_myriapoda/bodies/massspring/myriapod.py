@@ -59,8 +59,8 @@ from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_box_chain
 from ..rigid import ContactSettings, RigidBoxes
-from ..scene import LATTICE_SURFACE, RIGID_BOX, Scene, box_triangles
-from .lattice import lattice_surface_faces
+from ..scene import RIGID_BOX, Scene, box_triangles
+from .lattice import LATTICE_SURFACE, lattice_surface_faces
 from ..segment_chain import CouplingScratch, LeggedSegments, SegmentChainLayout, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
