@@ -332,21 +332,26 @@ GUARD_TWIST_COMMAND_RATIO = 1.5
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
 # GUARD_HARMONIC_EXCESS above what the calibrated open loop carried on the same ground (the plant identification's
 # own harmonic content: the body's and the friction's, not the loop's), and more than at every check of the last
-# half period (growing: ``WaveformWatch.growing``).  Checked GUARD_CHECKS_PER_PERIOD times a period.
+# half period and GUARD_HARMONIC_GROWTH times the least of them (growing: ``WaveformWatch.growing``; a runaway grew
+# 1.3 to 1.4 times a check, 1.7 to 2 over a half period; the fem snake settling at mu_t / mu_f = 1, 1.13 at most).
+# Checked GUARD_CHECKS_PER_PERIOD times a period.
 GUARD_HARMONIC = 0.15
 GUARD_HARMONIC_EXCESS = 0.05
 GUARD_HARMONICS = 5
 GUARD_CHECKS_PER_PERIOD = 4
+GUARD_HARMONIC_GROWTH = 1.25
 # The open loop's trim (``LoopGuard.trim``): while the guard holds the loop off, the calibrated open loop's command is
 # scaled by a trim that follows the centre line's bend against the command, RMS over the last quarter cycle, on a log
 # scale at GUARD_TRIM_PER_CYCLE per gait cycle: d ln(trim) / dt = -GUARD_TRIM_PER_CYCLE f (bend / command - 1), held
 # between GUARD_TRIM_MIN and 1.  It only ever lowers the open loop's amplitude (raising it is the loop's work, and
 # what ran away); it changes nothing of a run the guard never backs off.  Measured on the lattice at 0.75 BL,
 # curvature 2, 0.5 Hz, Miller's friction, mu_t / mu_f 5, 25 segments (8 s): the loop's swing outlived its back-offs
-# and the untrimmed open loop ended at 2.94 of 2 (the open loop from the start: 2.39); at 0.5, 1 and 2 per cycle the
-# trim left 2.62, 2.56 and 2.35 (trimmed to 0.84, 0.78 and 0.65 of the feed-forward)
+# and the untrimmed open loop ended at 2.94 of 2, shape error 0.70, harmonic content 0.09 (the open loop from the
+# start: 2.39).  Trimmed at 0.5, 1 and 2 per cycle down to 0.5: 2.58, 2.37 and 2.22, but harmonic content 0.11, 0.13
+# and 0.18 (the trim lowers the commanded wave, not the body's other one, docs/explanation/shape-tracking.md); at 2
+# per cycle down to 0.7: 2.35, shape error 0.68, harmonic content 0.08
 GUARD_TRIM_PER_CYCLE = 2.0
-GUARD_TRIM_MIN = 0.5
+GUARD_TRIM_MIN = 0.7
 
 
 class WaveformWatch:
@@ -414,14 +419,20 @@ class WaveformWatch:
 
     def growing(self) -> bool:
         """True when the last check's content is above every other check's of the last half period (and there is
-        one): a runaway grows, where a settling loop's transient decays (on the slithering grid the first checks
-        after the ramp read 0.15 to 0.22 while the loop brought the bend to the command, and fell to 0.03-0.07 over
-        the next cycles; the hybrid's runaway read 0.13, 0.18, 0.26, 0.37 a quarter period apart)."""
+        one), and ``GUARD_HARMONIC_GROWTH`` times the smallest of them or more: a runaway grows, where a settling
+        loop's transient levels off and decays.  On the slithering grid the first checks after the ramp read 0.15 to
+        0.22 while the loop brought the bend to the command, and fell to 0.03-0.07 over the next cycles; the fem
+        snake at mu_t / mu_f = 1 read 0.245, 0.258, 0.278 (1.05 and 1.08 a check), then 0.228, 0.211 down to 0.05,
+        and growth alone had switched its integrals off at the second check (78.5 s: shape error 0.16, flagged, where
+        it tracks at 0.04).  The hybrid's runaway read 0.13, 0.18, 0.26, 0.37 a quarter period apart (1.4 a check),
+        on 50 segments 0.04 to 0.30 over 8 checks (1.29 a check).  The half period is read with half a check's
+        slack, so the check a half period back, whose time drifts by a tick or two, is among them."""
         if len(self.checks) < 2:
             return False
         t, c = self.checks[-1]
-        before = [cc for tt, cc in self.checks[:-1] if tt >= t - 0.5 * self.period_s - 1e-9]
-        return bool(before) and c > max(before)
+        since = t - (0.5 + 0.5 / GUARD_CHECKS_PER_PERIOD) * self.period_s
+        before = [cc for tt, cc in self.checks[:-1] if tt >= since]
+        return bool(before) and c > max(before) and c >= GUARD_HARMONIC_GROWTH * min(before)
 
 
 class LoopGuard:
