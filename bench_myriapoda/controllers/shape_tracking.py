@@ -226,6 +226,11 @@ def segment_twist_deg(seg_rot) -> float:
     return float(np.max(np.abs(_wrap_deg(roll - np.median(roll))))) if roll.size else 0.0
 
 
+def _ramp(t: float, ramp_s: float) -> float:
+    """The start ramp r(t) [-] (module docstring): t / ramp_s up to 1."""
+    return 1.0 if ramp_s <= 0.0 or t >= ramp_s else max(t, 0.0) / ramp_s
+
+
 def _wrap_deg(x):
     return (np.asarray(x, float) + 180.0) % 360.0 - 180.0
 
@@ -327,11 +332,26 @@ GUARD_TWIST_COMMAND_RATIO = 1.5
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
 # GUARD_HARMONIC_EXCESS above what the calibrated open loop carried on the same ground (the plant identification's
 # own harmonic content: the body's and the friction's, not the loop's), and more than at every check of the last
-# half period (growing: ``WaveformWatch.growing``).  Checked GUARD_CHECKS_PER_PERIOD times a period.
+# half period and GUARD_HARMONIC_GROWTH times the least of them (growing: ``WaveformWatch.growing``; a runaway grew
+# 1.3 to 1.4 times a check, 1.7 to 2 over a half period; the fem snake settling at mu_t / mu_f = 1, 1.13 at most).
+# Checked GUARD_CHECKS_PER_PERIOD times a period.
 GUARD_HARMONIC = 0.15
 GUARD_HARMONIC_EXCESS = 0.05
 GUARD_HARMONICS = 5
 GUARD_CHECKS_PER_PERIOD = 4
+GUARD_HARMONIC_GROWTH = 1.25
+# The open loop's trim (``LoopGuard.trim``): while the guard holds the loop off, the calibrated open loop's command is
+# scaled by a trim that follows the centre line's bend against the command, RMS over the last quarter cycle, on a log
+# scale at GUARD_TRIM_PER_CYCLE per gait cycle: d ln(trim) / dt = -GUARD_TRIM_PER_CYCLE f (bend / command - 1), held
+# between GUARD_TRIM_MIN and 1.  It only ever lowers the open loop's amplitude (raising it is the loop's work, and
+# what ran away); it changes nothing of a run the guard never backs off.  Measured on the lattice at 0.75 BL,
+# curvature 2, 0.5 Hz, Miller's friction, mu_t / mu_f 5, 25 segments (8 s): the loop's swing outlived its back-offs
+# and the untrimmed open loop ended at 2.94 of 2, shape error 0.70, harmonic content 0.09 (the open loop from the
+# start: 2.39).  Trimmed at 0.5, 1 and 2 per cycle down to 0.5: 2.58, 2.37 and 2.22, but harmonic content 0.11, 0.13
+# and 0.18 (the trim lowers the commanded wave, not the body's other one, docs/explanation/shape-tracking.md); at 2
+# per cycle down to 0.7: 2.35, shape error 0.68, harmonic content 0.08
+GUARD_TRIM_PER_CYCLE = 2.0
+GUARD_TRIM_MIN = 0.7
 
 
 class WaveformWatch:
@@ -399,14 +419,20 @@ class WaveformWatch:
 
     def growing(self) -> bool:
         """True when the last check's content is above every other check's of the last half period (and there is
-        one): a runaway grows, where a settling loop's transient decays (on the slithering grid the first checks
-        after the ramp read 0.15 to 0.22 while the loop brought the bend to the command, and fell to 0.03-0.07 over
-        the next cycles; the hybrid's runaway read 0.13, 0.18, 0.26, 0.37 a quarter period apart)."""
+        one), and ``GUARD_HARMONIC_GROWTH`` times the smallest of them or more: a runaway grows, where a settling
+        loop's transient levels off and decays.  On the slithering grid the first checks after the ramp read 0.15 to
+        0.22 while the loop brought the bend to the command, and fell to 0.03-0.07 over the next cycles; the fem
+        snake at mu_t / mu_f = 1 read 0.245, 0.258, 0.278 (1.05 and 1.08 a check), then 0.228, 0.211 down to 0.05,
+        and growth alone had switched its integrals off at the second check (78.5 s: shape error 0.16, flagged, where
+        it tracks at 0.04).  The hybrid's runaway read 0.13, 0.18, 0.26, 0.37 a quarter period apart (1.4 a check),
+        on 50 segments 0.04 to 0.30 over 8 checks (1.29 a check).  The half period is read with half a check's
+        slack, so the check a half period back, whose time drifts by a tick or two, is among them."""
         if len(self.checks) < 2:
             return False
         t, c = self.checks[-1]
-        before = [cc for tt, cc in self.checks[:-1] if tt >= t - 0.5 * self.period_s - 1e-9]
-        return bool(before) and c > max(before)
+        since = t - (0.5 + 0.5 / GUARD_CHECKS_PER_PERIOD) * self.period_s
+        before = [cc for tt, cc in self.checks[:-1] if tt >= since]
+        return bool(before) and c > max(before) and c >= GUARD_HARMONIC_GROWTH * min(before)
 
 
 class LoopGuard:
@@ -438,7 +464,15 @@ class LoopGuard:
     of the command, and then onto its back.  A segment rolled ``GUARD_TWIST_DEG`` beyond the body's median roll
     while the loop commands ``GUARD_TWIST_COMMAND_RATIO`` times the feed-forward puts the run in the calibrated open
     loop for good (resumed at half the gains, the loop rolled the same body again a second later).
-    The run's ``shape_control_backoffs``, ``shape_control_gain_scale`` and
+
+    While it holds the loop off, the open loop's amplitude is trimmed (``trim``, ``GUARD_TRIM_PER_CYCLE``): a body
+    whose swing the loop drove past the command can keep it after the loop lets go (under Miller's friction at a small
+    bend the lattice kept 2.94 of 2 in the open loop the loop left to it, where the open loop from the start reached
+    2.39), so after a back-off for a bend beyond the command (the amplitude or the saturation test) the open loop's
+    command is lowered, never raised above the feed-forward, until the centre line bends no more than commanded.
+    When the loop resumes, the trim is handed to its amplitude integral (the command does not jump), and it goes on
+    from there at the next back-off.
+    The run's ``shape_control_backoffs``, ``shape_control_gain_scale``, ``shape_control_open_loop_trim`` and
     ``shape_control_backoff_s`` say what it did, and the runner's status ``controller_unstable`` says when it acted
     in the measured window or ended in the open loop (``ShapeTracker.run_status``)."""
 
@@ -456,6 +490,10 @@ class LoopGuard:
         self.p_cmd = 0.0           # mean square of the commanded bend, the feed-forward [strain^2], low-passed
         self.p_out = 0.0           # mean square of the loop's command [strain^2], low-passed
         self.sat = 0.0             # share of clipped commands, low-passed
+        self.p_line = 0.0          # mean square of the centre line's bend [strain^2], low-passed
+        self.trim = 1.0            # the open loop's amplitude while the loop is held off, over the feed-forward's
+        self.trim_min = 1.0        # the smallest trim applied
+        self.trimming = False      # the trim follows the bend: the last back-off was for a bend beyond the command
         self.reasons: list[str] = []  # what each back-off saw
         self.integral_off = False  # the integrals switched off by a waveform back-off
         self.open_for_good = False  # the twist test tripped: the calibrated open loop for the rest of the run
@@ -493,7 +531,7 @@ class LoopGuard:
         amp, k, om, ph = waves[_LATERAL, _AMP], waves[_LATERAL, _WAVENUMBER], waves[_LATERAL, _OMEGA], \
             waves[_LATERAL, _PHASE]
         err, lateral = state.err, state.lateral
-        r = 1.0 if ramp_s <= 0.0 or t >= ramp_s else max(t, 0.0) / ramp_s
+        r = _ramp(t, ramp_s)
         ref = (r * amp) * np.sin(k * s_muscle - om * t + ph)
         meas = ref - err  # the measured bend, smoothed along the body like the error [strain]
         a_fast = self.dt_tick / (0.25 * self.period_s)
@@ -502,6 +540,10 @@ class LoopGuard:
         self.p_cmd += a_fast * (float(np.mean(ref * ref)) - self.p_cmd)
         self.p_out += a_fast * (float(np.mean(lateral * lateral)) - self.p_out)
         self.sat += a_slow * (float(np.mean(np.abs(lateral) >= umax)) - self.sat)
+        if bend is not None:
+            self.p_line += a_fast * (float(np.mean(bend * bend)) - self.p_line)
+        if self.trimming and self.gain_scale(t) == 0.0:
+            self._trim_open_loop(self.p_line if bend is not None else self.p_meas)
         if self.fallen_back or t < self.hold_until:
             return False
         # the body rolled out of its plane while the loop commands well beyond the feed-forward (the roll is read only
@@ -533,6 +575,11 @@ class LoopGuard:
                             ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
         self.sat = 0.0
+        # the open loop's trim follows the bend after a back-off for a bend beyond the command; after one for a twist
+        # or the waveform the body is short of the command or off its plane, and the trim stays where it is (on the
+        # lattice at 0.75 BL, curvature 10, trimming after the twist test's back-off lowered the open loop while the
+        # loop's last push passed and left the body at 3.4 of 10, where the untrimmed open loop reached 4.3)
+        self.trimming = (overshoot or saturated) and not twisted
         if twisted:
             self.open_for_good = True
             return True
@@ -546,6 +593,16 @@ class LoopGuard:
         self.scale *= GUARD_BACKOFF
         self.hold_until = t + self.period_s
         return True
+
+    def _trim_open_loop(self, p_bend: float) -> None:
+        """One tick of the open loop's trim (class docstring) from the bend's mean square p_bend [strain^2], low-passed
+        like the command's."""
+        if not self.p_cmd > 0.0:
+            return
+        ratio = math.sqrt(p_bend / self.p_cmd)
+        rate = GUARD_TRIM_PER_CYCLE / self.period_s * self.dt_tick
+        self.trim = min(1.0, max(GUARD_TRIM_MIN, self.trim * math.exp(-rate * (ratio - 1.0))))
+        self.trim_min = min(self.trim_min, self.trim)
 
     def acted_in_window(self) -> bool:
         """The guard backed off in the steady window (after ``metrics.warmup_cycles``), or ended in the open loop or
@@ -637,11 +694,28 @@ class ShapeTracker:
             self.gains = self.gains._replace(ramp_s=float(ramp_s))
         measured_curvature(obs.seg_rot, self.s_centre, self.s_muscle, self.psi, self.kappa)
         guard = None if self.loop_off else self.guard
+        counting = t >= self.t_steady
+        trim = 1.0
         if guard is not None:
             scale = guard.gain_scales(t)
             if scale != self.scale:  # the guard backed off or resumes (``LoopGuard``): the loop's gains scaled
+                if self.scale[0] == 0.0 and scale[0] > 0.0 and guard.trim != 1.0:
+                    # the loop resumes: the open loop's trim is handed to its amplitude integral, which starts from
+                    # it (u = trim x the feed-forward), so the command does not jump back to the feed-forward
+                    self.state.a[...] = (guard.trim - 1.0) * _ramp(t, self.gains.ramp_s) * waves[_LATERAL, _AMP]
                 self.gains, self.scale = scaled_gains(self.full_gains, *scale), scale
-        track_tick(self.kappa, self.s_muscle, waves, t, t >= self.t_steady, plain(self.gains), plain(self.state))
+            if self.scale[0] == 0.0:
+                trim = guard.trim
+        if trim != 1.0:
+            before = self.state.counts.copy()
+        track_tick(self.kappa, self.s_muscle, waves, t, counting, plain(self.gains), plain(self.state))
+        if trim != 1.0:
+            # the loop held off: its command is the calibrated open loop's, trimmed in amplitude (``LoopGuard``); a
+            # trimmed command is below the muscle's strength, so only its peak is counted again
+            self.state.lateral[...] *= trim
+            if counting:
+                self.state.counts[1] = before[1]
+                self.state.counts[2] = max(before[2], float(np.max(np.abs(self.state.lateral))))
         bend = None
         if guard is not None and obs.seg_pos.shape[0] >= 3:
             # the centre line's bend at the interior centres [strain], for the guard's waveform test
@@ -680,6 +754,7 @@ class ShapeTracker:
             gd = self.guard
             out.update({"shape_control_backoffs": float(gd.backoffs),
                         "shape_control_gain_scale": 0.0 if gd.fallen_back or self.loop_off else float(gd.scale),
+                        "shape_control_open_loop_trim": float(gd.trim_min),
                         "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
         return out
 
@@ -699,6 +774,9 @@ class ShapeTracker:
         when = ", ".join(f"{t:.2f} ({why})" for t, why in zip(gd.times, gd.reasons))
         end = "stayed in the calibrated open loop" if gd.fallen_back else \
             f"resumed at {gd.scale:g} of its gains" + (", its integrals off" if gd.integral_off else "")
+        if gd.trim_min < 1.0:
+            end += (f"; the open loop's amplitude, while the loop was held off, trimmed down to {gd.trim_min:.2f} of "
+                    f"the feed-forward by the measured bend")
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
                 f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, segments twisted out of "

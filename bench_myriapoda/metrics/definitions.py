@@ -188,6 +188,10 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
      "after a waveform trip the integrals are off, which the run's message says)", "bending gaits"),
     ("shape_control_backoff_s", "s", "when the guard first backed the loop off (NaN when it never did)",
      "bending gaits"),
+    ("shape_control_open_loop_trim", "-", "the smallest amplitude, over the calibrated open loop's, the guard gave the "
+     "open loop while it held the loop off after a back-off for a bend beyond the command: lowered from the centre "
+     "line's bend against the command, never below 0.7 nor above 1 (1: never trimmed) (`gait.shape_guard`, "
+     "closed-loop shape control only)", "bending gaits"),
     ("shape_plant_gain", "-", "median over the interior segments of the curvature amplitude the calibrated open loop "
      "reached on the case's own ground over the commanded one (identified before the run, "
      "bodies/curvature_calibration.py plant_response; closed-loop shape control with gait.shape_guard)",
