@@ -4,6 +4,9 @@ part, tracking-map-lattice.toml) as heat maps of ``shape_tracking_error``, one c
     bench-myriapoda matrix tracking-map-lattice --out reports/tracking-map
     python tools/tracking_map.py reports/tracking-map --out reports/tracking-map/map.png
 
+A map run in parts (the lattice's cheap cases in one directory, the fem and hybrid cases in another) is drawn from
+all of them: ``python tools/tracking_map.py DIR1 DIR2 --out map.png``.
+
 Top row: wavelength [BL] x friction ratio mu_t / mu_f; bottom row: commanded curvature amplitude x frequency [Hz].
 Each cell is coloured by the shape error (0 to 1, clipped) and labelled with it; a cell whose run the guard backed
 off (status ``controller_unstable``: the loop drove the shape away) is marked "R", a blown-up one "X", and a cell
@@ -63,15 +66,17 @@ def panel(ax, rows, xkey, ykey, xlabel, ylabel, title):
     return im
 
 
-def draw(directory: Path, out: Path) -> Path:
+def draw(directories, out: Path) -> Path:
+    """The figure of the matrix output directories ``directories`` (one Path, or several whose cases are drawn
+    together) written to ``out``."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     from bench_myriapoda.report.matrix_data import load_matrix_dir
 
-    res = load_matrix_dir(directory)
-    rows = cells(res.df)
+    dirs = [directories] if isinstance(directories, (str, Path)) else list(directories)
+    rows = [row for d in dirs for row in cells(load_matrix_dir(Path(d)).df)]
     bodies = [b for b in ("massspring", "fem", "hybrid") if any(r["body"] == b for r in rows)]
     fig, axes = plt.subplots(2, len(bodies), figsize=(max(6.5, 4.5 * len(bodies)), 8.0), squeeze=False,
                              constrained_layout=True)
@@ -99,13 +104,14 @@ def draw(directory: Path, out: Path) -> Path:
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("directory", help="a matrix output directory of tracking-map(-lattice)")
-    p.add_argument("--out", default=None, help="the figure (.png; default DIRECTORY/tracking-map.png)")
+    p.add_argument("directory", nargs="+", help="matrix output directories of tracking-map(-lattice), drawn together")
+    p.add_argument("--out", default=None, help="the figure (.png; default FIRST_DIRECTORY/tracking-map.png)")
     a = p.parse_args(argv)
     from bench_myriapoda.core.errors import InputError
 
     try:
-        path = draw(Path(a.directory), Path(a.out) if a.out else Path(a.directory) / "tracking-map.png")
+        dirs = [Path(d) for d in a.directory]
+        path = draw(dirs, Path(a.out) if a.out else dirs[0] / "tracking-map.png")
     except InputError as exc:
         print(f"tracking_map: error: {exc}", file=sys.stderr)
         return 2
