@@ -121,6 +121,14 @@ class BodySpec:
       is when it hangs by its head (``validation.cross_body``'s reference), or None: the body has none.
       ``hang_dt_s``: the time step [s] of that hanging comparison's run (None: the body's default).
     - ``probes``: what validation's analytic checks measure of the body's own systems (``BodyProbes`` above).
+    - ``step``: the body's one step function, ``step(*records, n_steps) -> (steps done, status)`` (a numba
+      kernel; ``Body.advance`` calls it with a chunk's steps, and for a legged body the fused walk with one), or
+      None: a spec that builds two body models with different steps (``massspring``, ``fem``: a legless body and a
+      legged chain, whose module names the chain's step ``STEP``).
+    - ``legged_pack``: for a body with a fused legged walk (``bodies.legged_chunk``), the class of its pack, for
+      which the body registers its legged operations (poses, support, sample, and its step as ``chain_step(step)``)
+      once: the fused walk and the body's Python methods (``legged_chunk.LeggedPackOps``) both run those.  None:
+      no fused legged walk.
     """
 
     name: str
@@ -140,6 +148,8 @@ class BodySpec:
     hanging_bar: Callable[[Any, Any], HangingBar] | None = None
     hang_dt_s: float | None = None
     probes: BodyProbes = field(default_factory=BodyProbes)
+    step: Callable[..., tuple[int, int]] | None = None
+    legged_pack: type | None = None
 
 
 @dataclass(frozen=True)
