@@ -15,8 +15,8 @@ import sys
 import numpy as np
 import pytest
 
+from bench_myriapoda import catalog
 from bench_myriapoda.bodies import legged_chunk as LC
-from bench_myriapoda.core import registry
 from bench_myriapoda.core.config import resolve_case
 from bench_myriapoda.core.protocols import LEGS
 from bench_myriapoda.fused import legged_walk
@@ -32,8 +32,8 @@ GENERIC = {"poses_now": {"poses"}, "support_now": {"poses", "carry", "carry_feet
 
 
 def _legged_bodies():
-    registry.load_all()
-    return sorted(name for name, spec in registry.BODIES.items() if LEGS in spec.capabilities)
+    """The package catalog's legged bodies (not a plugin's or a test's: their Python methods may be their own)."""
+    return sorted(name for name, spec in catalog.BODIES.items() if LEGS in spec.capabilities)
 
 
 def _centipede(name):
@@ -73,7 +73,7 @@ def test_advance_and_the_fused_step_call_one_step_function(name):
     module = sys.modules[type(body).__module__]
     assert module.STEP is body_step                       # the body's one step function ...
     assert "STEP" in type(body).advance.__code__.co_names  # ... is what its Python advance calls
-    spec = registry.BODIES[name]
+    spec = catalog.BODIES[name]
     if spec.step is not None:                             # a spec that names the step names this one
         assert spec.step is body_step
     if spec.legged_pack is not None:
