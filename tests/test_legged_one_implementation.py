@@ -76,8 +76,7 @@ def test_advance_and_the_fused_step_call_one_step_function(name):
     spec = catalog.BODIES[name]
     if spec.step is not None:                             # a spec that names the step names this one
         assert spec.step is body_step
-    if spec.legged_pack is not None:
-        assert spec.legged_pack is cls
+    assert spec.legged_pack is cls                        # the spec names the pack whose functions are declared
 
 
 def test_the_support_refuses_a_time_step_that_is_not_the_bodys():

@@ -24,9 +24,9 @@ legged operations, and both paths run them.  The fused walk inlines them into it
 inherits ``LeggedPackOps`` has no Python version of its own: its ``segment_poses``, ``set_support``,
 ``push_support`` and the legged monitor's sample (``legged_sample``) call them through the small compiled
 entries ``poses_now``, ``support_now`` and ``sample_now`` below, on one pack the body keeps.  Its step is
-one function too: the body's ``BodySpec.step``, ``step(*P.chain, n_steps)`` (the pack's ``chain`` holds its
-arguments), which ``Body.advance`` calls with the chunk's n and the fused walk, through the registered
-``chain_step(step)``, with n = 1.  tests/test_legged_one_implementation.py checks each by identity for every
+one function too, ``STEP(*P.chain, n_steps)`` in its module (the pack's ``chain`` holds its arguments; the
+``BodySpec.step`` of a spec that builds only that body), which ``Body.advance`` calls with the chunk's n and the
+fused walk, through the registered ``chain_step(STEP)``, with n = 1.  tests/test_legged_one_implementation.py checks each by identity for every
 legged body in the catalog.
 
 The interface: a body offers the fused path by a method ``legged_pack() -> P`` (``LeggedChunkBody``),
