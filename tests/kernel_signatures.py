@@ -33,6 +33,9 @@ from numba.core.typed_passes import NopythonTypeInference
 # them, as it would separate per-body kernels, so that many signatures are expected.  One more (a second
 # signature for the same body) is still an extra.
 PER_BODY = {"bench_myriapoda.fused.legged_walk.legged_chunk": 3,  # the hybrid, lattice and FEM centipedes
+            # the Python path's poses (``legged_chunk.LeggedPackOps.segment_poses``, a sample's observation): once
+            # per legged body's pack, as the fused chunk
+            "bench_myriapoda.bodies.legged_chunk.poses_now": 3,
             "bench_myriapoda.bodies.rigid_chain.advance_chain": 2}  # rigid chains with FEM or spring links
 
 GROUPS = [("worm", "massspring", "flat"), ("worm", "fem", "flat"), ("chain", "hybrid", "fig4-drop"),

@@ -10,8 +10,8 @@ body's pack is ``(boxes, step arguments)`` with ``boxes`` a ``CarriedBoxes``.
 
 In dynamic stance (``legs.stance = "dynamic"``, ``bodies.dynamic_stance``) no supported box is kinematic:
 ``carry_dynamic`` gives each the impulse of its STANCE legs' friction-limited push instead, and only a held
-box is still carried.  Both bodies' ``push_support`` (the Python path) and ``carry_boxes`` (the fused path)
-run that one kernel.
+box is still carried.  Both bodies' ``push_support`` (the Python path, ``legged_chunk.LeggedPackOps``) and the fused
+path run it through ``carry_boxes_feet``.
 """
 from __future__ import annotations
 
@@ -124,8 +124,8 @@ def sample_boxes(P, c_out, R_out, links_out):
 class PushedBoxes:
     """The dynamic stance of a body whose segments are rigid boxes (``rigid.RigidBoxes`` ``self.rigid``), a
     mixin of the hybrid and the legged mass-spring bodies.  The body sets, before ``_setup_stance``:
-    ``rigid``, ``gravity`` (3,) [m/s^2], ``terr_kind``, ``terr``, ``_held`` (n_seg,) bool; and defines
-    ``_carried() -> CarriedBoxes`` (its pack for ``carry_dynamic``)."""
+    ``rigid``, ``gravity`` (3,) [m/s^2], ``terr_kind``, ``terr``, ``_held`` (n_seg,) bool; its ``push_support``
+    is ``legged_chunk.LeggedPackOps``'s (``carry_boxes_feet`` -> ``carry_dynamic`` on its pack)."""
 
     dynamic_stance = False
 
@@ -136,14 +136,6 @@ class PushedBoxes:
         rb = self.rigid
         self.stance = stance_arrays(params, rb.mass, rb.inertia_body, self.gravity, rb.force, rb.torque,
                                     self.terr_kind, self.terr)
-
-    def push_support(self, supported, c_T, R_T, states, tips) -> None:
-        """The dynamic stance's support (``carry_dynamic``) this step: supported (n_seg,) bool, the targets
-        c_T (n_seg, 3) [m] and R_T (n_seg, 3, 3), the leg states (n_legs,) and the feet tips (n_legs, 3) [m],
-        UPDATED where a foot slides."""
-        carry_dynamic(self._carried(), np.ascontiguousarray(supported, dtype=np.bool_),
-                      np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
-                      states, tips)
 
     def stance_statistics(self) -> dict[str, float]:
         """The dynamic stance's statistics of the run so far (``dynamic_stance.ACC_*``; empty in kinematic

@@ -19,18 +19,32 @@ sample -> ``body.advance(t, 1)``):
 5. ``step(P) -> (steps done, status code)``: one step of the body's own kernel
    (``step_status`` codes).
 
+One implementation (issue 42 item 2): the four registered functions are the body's declaration of its
+legged operations, and both paths run them.  The fused walk inlines them into its chunk; a body that
+inherits ``LeggedPackOps`` has no Python version of its own: its ``segment_poses``, ``set_support``,
+``push_support`` and the legged monitor's sample (``legged_sample``) call them through the small compiled
+entries ``poses_now``, ``support_now`` and ``sample_now`` below, on one pack the body keeps.  Its step is
+one function too, ``STEP(*P.chain, n_steps)`` in its module (the pack's ``chain`` holds its arguments; the
+``BodySpec.step`` of a spec that builds only that body), which ``Body.advance`` calls with the chunk's n and the
+fused walk, through the registered ``chain_step(STEP)``, with n = 1.  tests/test_legged_one_implementation.py checks each by identity for every
+legged body in the catalog.
+
 The interface: a body offers the fused path by a method ``legged_pack() -> P`` (``LeggedChunkBody``),
 P a namedtuple of a class its own module declares and hands to ``register`` with its four
 implementations.  ``register`` makes them what the four functions below compile to for that class
 (one numba overload each, declared here once, so the order in which bodies register cannot matter),
 so the fused kernel is written once against this interface, compiled once per body's pack type
-(numba's cache keeps each), and never names a body.  The implementations run the same kernels on the
-same arrays as the body's Python methods, so the two paths give the same doubles (tests/test_fused_walk.py).
+(numba's cache keeps each), and never names a body.  A body whose Python methods are its own (not
+``LeggedPackOps``'s) must keep them equal to its registered functions itself; tests/test_fused_walk.py
+compares the two paths bit for bit.
 """
 from __future__ import annotations
 
+import inspect
+from functools import cached_property
 from typing import Protocol, runtime_checkable
 
+import numpy as np
 from numba import njit
 from numba.core import types
 from numba.extending import overload
@@ -74,6 +88,8 @@ def step(P):
 # ``carry_feet`` where it has one.
 _IMPLS: dict[type, tuple] = {}
 _FEET: dict[type, object] = {}
+# The pack's class -> the body's one step function, for a step made by ``chain_step``.
+_STEPS: dict[type, object] = {}
 
 
 def _impl(P, which: int):
@@ -99,8 +115,36 @@ def register(cls, poses_impl, carry_impl, sample_impl, step_impl, carry_feet_imp
     compile's refresh then gave ``legged_chunk`` two types for ``LC.poses``: "Cannot unify
     Function(<function poses>) and Function(<function poses>)" (tests/test_legged_chunk_registration.py)."""
     _IMPLS[cls] = tuple(getattr(f, "py_func", f) for f in (poses_impl, carry_impl, sample_impl, step_impl))
+    if getattr(step_impl, "body_step", None) is not None:
+        _STEPS[cls] = step_impl.body_step
     if carry_feet_impl is not None:  # the parameters of ``carry_feet`` (a body with a dynamic stance)
         _FEET[cls] = getattr(carry_feet_impl, "py_func", carry_feet_impl)
+
+
+def registered(cls) -> tuple:
+    """(poses, carry, sample, step, carry_feet or None) registered for pack class ``cls`` (the plain functions
+    numba compiles), and the body's step function behind ``step`` (``chain_step``) or None."""
+    return _IMPLS[cls] + (_FEET.get(cls), _STEPS.get(cls))
+
+
+def chain_step(body_step):
+    """The fused walk's ``step(P)`` of a body whose one step function is ``body_step(*P.chain, n_steps) -> (steps
+    done, status)`` (the function its ``Body.advance`` calls with the chunk's n): that function with n = 1, so the
+    two paths step through one function.  ``body_step`` should be ``inline="always"``: a kernel of its own between
+    the body's chain and the fused chunk would be optimized and emitted once more on a cold start's longest
+    sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles").
+
+    The call spells out ``P.chain``'s items, written here for ``body_step``'s number of parameters: numba does not
+    inline a call with ``*args`` ("Calling a closure with *args is unsupported", numba 0.68.1)."""
+    n_args = len(inspect.signature(getattr(body_step, "py_func", body_step)).parameters) - 1
+    items = "".join(f"c[{i}], " for i in range(n_args))
+    namespace = {"body_step": body_step, "np": np}
+    # np.int64: a literal 1 compiles a second signature
+    exec(f"def one_step(P):\n    c = P.chain\n    return body_step({items}np.int64(1))\n", namespace)
+    one_step = namespace["one_step"]
+    one_step.body_step = body_step
+    one_step.__doc__ = f"``legged_chunk.step``: one step of ``{getattr(body_step, '__name__', body_step)}``."
+    return one_step
 
 
 @overload(poses, inline="always")
@@ -154,3 +198,89 @@ def copy_frames(R, out):
     for i in range(R.shape[0]):
         for r in range(3):
             out[i, r, 0], out[i, r, 1], out[i, r, 2] = R[i, r, 0], R[i, r, 1], R[i, r, 2]
+
+
+
+# --------------------------------------------------------------------------- the Python path's entries
+# Each compiles the registered functions for the pack's type, as the fused chunk inlines them: the Python path's
+# segment interface (``LeggedPackOps``) has no code of its own.
+@njit(cache=True, error_model="numpy")
+def poses_now(P):
+    """``poses(P)`` from Python: (c (n_seg, 3) [m], R (n_seg, 3, 3)), the pack's own arrays."""
+    return poses(P)
+
+
+@njit(cache=True, error_model="numpy")
+def support_now(P, kinematic, c_T, R_T, states, tips, feet):
+    """Steps 1 and 3 of the module docstring from Python: ``poses(P)``, then ``carry_feet`` (feet True: the
+    support with the feet, as the fused walk takes it) or ``carry`` (feet False); returns whether a foot may have
+    moved.  The poses again because ``carry`` reads them off the pack (the fused walk sensed them this step; a
+    Python caller may not have, and recomputing them from an unchanged state gives the same doubles)."""
+    poses(P)
+    if feet:
+        return carry_feet(P, kinematic, c_T, R_T, states, tips)
+    carry(P, kinematic, c_T, R_T)
+    return False
+
+
+@njit(cache=True, error_model="numpy")
+def sample_now(P, c_out, R_out, links_out):
+    """``sample(P, c_out, R_out, links_out)`` from Python (step 4 of the module docstring)."""
+    sample(P, c_out, R_out, links_out)
+
+
+_NO_STATES = np.zeros(0, np.int64)   # ``set_support``'s leg states and feet: none (``carry`` reads neither)
+_NO_TIPS = np.zeros((0, 3))
+
+
+class LeggedPackOps:
+    """The segment interface of a legged body on the Python path, made of its registered functions (module
+    docstring, "One implementation"): a mixin placed before the body's other bases.  The body defines
+    ``legged_pack()``, ``n_segments`` and ``dt`` [s] (the time step its pack holds)."""
+
+    @cached_property
+    def legged_ops_pack(self):
+        """The pack the Python path's operations run on, built once (its arrays are the body's, changed in place
+        only; its scratch is the pack's own, so the poses ``segment_poses`` senses are what ``set_support``
+        carries from, as in the fused walk).  Its ``chain`` (the step's arguments) is left empty: the Python path
+        steps through ``Body.advance``, and numba's dispatch types every array of a pack passed from Python
+        (about 10 us a call for the hybrid's full pack, half that without its chain)."""
+        P = self.legged_pack()
+        return P._replace(chain=()) if "chain" in P._fields else P
+
+    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
+        """Centres (n_seg, 3) [m] and rotations (n_seg, 3, 3) of the segments: the registered ``poses``, copied
+        (the pack's arrays change with the next call)."""
+        c, R = poses_now(self.legged_ops_pack)
+        return c.copy(), R.copy()
+
+    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
+        """Supported segments (``kinematic`` (n_seg,) bool) are carried to (c_T (n_seg, 3) [m], R_T (n_seg, 3, 3))
+        during the next step of dt [s] (paper Sec. 4.1); the others follow the dynamics: the registered
+        ``carry``.  dt must be the body's time step (the pack's)."""
+        if dt != self.dt:
+            raise ValueError(f"set_support: dt = {dt} s is not the body's time step {self.dt} s, the one its "
+                             "support kernel carries over")
+        support_now(self.legged_ops_pack, np.ascontiguousarray(kinematic, dtype=np.bool_),
+                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                    _NO_STATES, _NO_TIPS, False)
+
+    def push_support(self, supported, c_T, R_T, states, tips) -> None:
+        """The support with the feet this step (the registered ``carry_feet``; in dynamic stance,
+        ``bodies.dynamic_stance``, the STANCE legs push): supported (n_seg,) bool, the targets c_T (n_seg, 3) [m]
+        and R_T (n_seg, 3, 3), the leg states (n_legs,) int64 and the feet tips (n_legs, 3) [m], UPDATED where a
+        foot slides."""
+        support_now(self.legged_ops_pack, np.ascontiguousarray(supported, dtype=np.bool_),
+                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                    states, tips, True)
+
+    def legged_sample(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The legged monitor's sample after the support (the registered ``sample``): segment centres c (n_seg, 3)
+        [m], rotations R (n_seg, 3, 3) and centres (2 n_seg - 1, 3) [m] of segments and links in body order."""
+        n = self.n_segments
+        c, R, links = np.empty((n, 3)), np.empty((n, 3, 3)), np.empty((n - 1, 3))
+        sample_now(self.legged_ops_pack, c, R, links)
+        centres = np.empty((2 * n - 1, 3))
+        centres[0::2] = c
+        centres[1::2] = links
+        return c, R, centres

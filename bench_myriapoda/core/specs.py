@@ -214,6 +214,14 @@ class BodySpec:
     - ``surface_kinds``: kind -> ``SurfaceStyle`` of the kinds of triangle surface the body's ``scene()`` draws
       that are its own (a kind the bodies share, the rigid box, is ``bodies.scene``'s); the animations read the
       styles from the specs and name no body.
+    - ``step``: the body's one step function, ``step(*records, n_steps) -> (steps done, status)`` (a numba
+      kernel; ``Body.advance`` calls it with a chunk's steps, and for a legged body the fused walk with one), or
+      None: a spec that builds two body models with different steps (``massspring``, ``fem``: a legless body and a
+      legged chain, whose module names the chain's step ``STEP``).
+    - ``legged_pack``: for a body with a fused legged walk (``bodies.legged_chunk``), the class of its pack, for
+      which the body registers its legged operations (poses, support, sample, and its step as ``chain_step(step)``)
+      once: the fused walk and the body's Python methods (``legged_chunk.LeggedPackOps``) both run those.  None:
+      no fused legged walk.
     """
 
     name: str
@@ -235,6 +243,8 @@ class BodySpec:
     probes: BodyProbes = field(default_factory=BodyProbes)
     benchmarks: BodyBenchmarks = field(default_factory=BodyBenchmarks)
     surface_kinds: Mapping[str, SurfaceStyle] = field(default_factory=dict)
+    step: Callable[..., tuple[int, int]] | None = None
+    legged_pack: type | None = None
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..bodies.legged_chunk import LeggedPackOps
 from ..bodies.scene import Scene, legs_scene
 from ..core.leg_timeline import LeggedController
 from ..metrics.behaviour import BehaviourSampler
@@ -79,8 +80,12 @@ class LeggedMonitor:
         this monitor has samples); the leg tips are that row's."""
         if len(self.timeline) == len(self._com):
             return
-        c, R = self.body.segment_poses()
-        self.sample(c, R, self.body.segment_centers(), self.timeline.tips[-1])
+        if isinstance(self.body, LeggedPackOps):  # the body's registered sample, which the fused walk runs
+            c, R, centres = self.body.legged_sample()
+        else:
+            c, R = self.body.segment_poses()
+            centres = self.body.segment_centers()
+        self.sample(c, R, centres, self.timeline.tips[-1])
 
     def sample(self, c: np.ndarray, R: np.ndarray, centres: np.ndarray, tips: np.ndarray) -> None:
         """One timeline sample from the segment poses (c (n, 3) [m], R (n, 3, 3)), the body's centres

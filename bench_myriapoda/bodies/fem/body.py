@@ -47,6 +47,7 @@ from .element_quality import ElementQuality
 from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volumes, tetrahedralize_surface
 from .surfaces import FEM_SURFACE, SURFACE_KINDS
 from .system import DT_PAPER, FEMSystem
+from .myriapod import BodyFEMChain, BlockChainLegs  # the legged chain (make_*)
 
 FROM_CREATURE = -1.0
 MIN_DENSITY_KG_M3 = 1.0e-6  # a given density below it makes node masses denormal and their inverses infinite
@@ -350,7 +351,6 @@ def make_fem(case, world):
     (``fem.myriapod``): legs attach to rigid segments (the creature's morphology; the leg controller
     itself is composed by the runner); world: the run's ``world.world.World``."""
     if case.creature.legs_per_segment:
-        from .myriapod import BodyFEMChain
         return BodyFEMChain(case, world)
     return BodyFEM(case, world)
 
@@ -449,6 +449,9 @@ BACKEND = BodySpec(
     # its kinds of scene surface (surfaces.py)
     surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the FEM method's own systems (analytic_systems.py)
+    # the legged chain's pack, whose registered functions are its legged operations (bodies.legged_chunk); no
+    # ``step``: this spec builds two body models (a legless one and the legged chain, whose module names its STEP)
+    legged_pack=BlockChainLegs,
     probes=BodyProbes(
         rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="mu V^(2/3)",
         bar_under_own_weight=AS.bar_under_own_weight, cantilever_tip=AS.cantilever_tip,

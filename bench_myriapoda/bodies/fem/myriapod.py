@@ -74,7 +74,7 @@ from ...world.terrain_kernels import distance_at_least, flat_ground
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
-from ..legged_chunk import carry, copy_frames, copy_rows, register
+from ..legged_chunk import LeggedPackOps, carry, chain_step, copy_frames, copy_rows, register
 from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_points
@@ -347,18 +347,18 @@ def _carry_blocks_feet(P, kinematic, c_T, R_T, states, tips):
     return False
 
 
-def _block_chain_step(P):
-    """``legged_chunk.step``: one step."""
-    return advance_chain(*P.chain, np.int64(1))   # np.int64: a literal 1 compiles a second signature
+# The chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
+# (``legged_chunk.chain_step``; not inlined, as before: the fused chunk calls the chain's compiled kernel)
+STEP = advance_chain
+register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, chain_step(STEP), _carry_blocks_feet)
 
 
-register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, _block_chain_step, _carry_blocks_feet)
-
-
-class BodyFEMChain(LeggedSegments):
+class BodyFEMChain(LeggedPackOps, LeggedSegments):
     """The centipede as one FEM mesh (module docstring), with the segment interface.
 
-    State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] (the ``FEMSystem``'s arrays).
+    State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] (the ``FEMSystem``'s arrays).  Its segment interface
+    (``segment_poses``, ``set_support``, ``push_support``, ``legged_sample``) is ``legged_chunk.LeggedPackOps``: the
+    functions registered for ``BlockChainLegs`` above, which the fused walk runs.
     """
 
     name = "fem"
@@ -399,7 +399,6 @@ class BodyFEMChain(LeggedSegments):
         self.block_nodes = np.ascontiguousarray(np.stack([np.flatnonzero(node_block == s) for s in range(n)]))
         self.rest_centroids = nodes[self.block_nodes].mean(axis=1)
         self.rest_offsets = np.ascontiguousarray(nodes[self.block_nodes] - self.rest_centroids[:, None, :])
-        self._A = np.zeros((n, 3, 3))
         # nodes of links take the spine of the nearest block
         self.node_spine = np.clip(np.rint(-(nodes[:, 0] + 0.5 * lr) / self.pitch), 0, n - 1).astype(np.int64)
         side = node_block >= 0
@@ -449,7 +448,7 @@ class BodyFEMChain(LeggedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
-        return advance_chain(*self._chain_args, self.acc, int(n_steps))
+        return STEP(*self._chain_args, self.acc, int(n_steps))
 
     @cached_property
     def _chain_args(self) -> tuple:
@@ -497,15 +496,6 @@ class BodyFEMChain(LeggedSegments):
         self.quality.reset()
 
     # ------------------------------------------------------------------ the dynamic stance
-    def push_support(self, supported, c_T, R_T, states, tips) -> None:
-        """The dynamic stance's support this step (``pushed_blocks.push_blocks``): supported (n,) bool, the targets
-        c_T (n, 3) [m] and R_T (n, 3, 3), the leg states (n_legs,) and the feet tips (n_legs, 3) [m], UPDATED where
-        a foot slides."""
-        c, R = self.segment_poses()
-        push_blocks(self._push, c, R, np.ascontiguousarray(supported, dtype=np.bool_),
-                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
-                    states, tips)
-
     def stance_statistics(self) -> dict[str, float]:
         """The dynamic stance's statistics of the run so far (``dynamic_stance.stance_statistics``; empty in
         kinematic stance)."""
@@ -523,31 +513,11 @@ class BodyFEMChain(LeggedSegments):
         return S.STATUS_TEXT.get(code, f"status {code}")
 
     # ------------------------------------------------------------------ segment interface
-    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
-        """Best-fit rigid pose of every block: centroid (n, 3) [m] and rotation (n, 3, 3).
-
-        R = polar factor of A = sum_i (x_i - c)(X_i - X_c)^T over the block's nodes.
-        """
-        c, R = np.empty((self.n_blocks, 3)), np.empty((self.n_blocks, 3, 3))
-        block_poses(self.x, self.block_nodes, self.rest_offsets, c, self._A, R)
-        return c, R
-
     def segment_velocities(self) -> np.ndarray:
         """(n_blocks, 3) [m/s]: the mean velocity of each block's nodes."""
         out = np.empty((self.n_blocks, 3))
         block_centroids(self.v, self.block_nodes, out)
         return out
-
-    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
-        """Supported blocks (``kinematic`` (n,) bool) are carried to (c_T (n, 3) [m], R_T (n, 3, 3)) during
-        the next step: each leg-attachment node p gets the target x_T = c_T + R_T R^T (x_p - c), its current
-        offset from the block's best-fit pose (c, R) transported rigidly, and the implicit penalty pulls it
-        there (module docstring).  Transporting the current offsets (not the rest shape) moves the block by
-        exactly the rigid increment and never snaps a deformed block back in one step."""
-        c, R = self.segment_poses()
-        carry_blocks(self.x, self.att_nodes, self.att_block, self._held, np.ascontiguousarray(kinematic, np.bool_),
-                     c, R, np.ascontiguousarray(c_T, np.float64), np.ascontiguousarray(R_T, np.float64),
-                     self.att_target, self.support)
 
     def support_error(self) -> float:
         """Max distance [m] of a supported block's leg-attachment node from its target (current state)."""

@@ -87,8 +87,7 @@ from ..fem.system import DT_PAPER, E_PAPER, GAMMA_PAPER, NU_PAPER, RHO_PAPER, FE
 from ..friction_kernels import FRICTION_CAPABILITIES, friction_params
 from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
                              carry_boxes_feet, sample_boxes)
-from ..kinematic_targets import drive_to_targets
-from ..legged_chunk import register
+from ..legged_chunk import LeggedPackOps, chain_step, register
 from ..placement import place_box_chain
 from ..rigid_chain import boxes_of, chain_phys, coupling_of
 from ..rigid import ContactSettings, RigidBoxes
@@ -99,6 +98,9 @@ from ..segment_chain import (CouplingScratch, SegmentChainLayout, SupportedSegme
 from . import benchmarks
 from . import kernels as K
 
+# The hybrid's one step function (``BodySpec.step``): ``advance`` calls it with a chunk's n steps, the fused legged
+# walk with one (``legged_chunk.chain_step``)
+STEP = K.advance
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
 CONFIG_SOURCE = "[bodies.hybrid]"
 
@@ -229,13 +231,16 @@ def build_mesh(lay: SegmentChainLayout, tets_per_cell: int = 6, mirror: bool = F
                       np.stack(link_nodes), np.concatenate(attached), np.concatenate(att_body), centres)
 
 
-class BodyHybrid(PushedBoxes, SupportedSegments):
+class BodyHybrid(LeggedPackOps, PushedBoxes, SupportedSegments):
     """Rigid boxes (``self.rigid``) joined by FEM links (``self.fem``) on a terrain.
 
     State: ``self.x``, ``self.v`` (n_nodes, 3) [m], [m/s] are the FEM's arrays
     (attached rows always equal the rigid bodies' points); the boxes' c, q, v, w
     live in ``self.rigid``.  ``self.free`` / ``self.fixed``: node ids; the kernel
     arrays of the attachment are in ``fixed`` order (``att_body``, ``att_local``).
+
+    Its segment interface (``segment_poses``, ``set_support``, ``push_support``, ``legged_sample``) is
+    ``legged_chunk.LeggedPackOps``: the functions registered for ``HybridLegs`` below, which the fused walk runs.
     """
 
     name = "hybrid"
@@ -358,7 +363,7 @@ class BodyHybrid(PushedBoxes, SupportedSegments):
         else:
             self.phys[K.MUSCLES_ON] = 1.0
             buf = act.muscle
-        return K.advance(*self._chain_args(buf), self.acc, int(n_steps))
+        return STEP(*self._chain_args(buf), self.acc, int(n_steps))
 
     def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
         """``hybrid.kernels.advance``'s records (``kernels.FEMLinks``, ``rigid_chain``'s ``Attachment``, ``Boxes``,
@@ -466,23 +471,9 @@ class BodyHybrid(PushedBoxes, SupportedSegments):
         return Scene(triangles=tris)
 
     # ------------------------------------------------------------------ segment interface (legged creatures)
-    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
-        """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the rigid segments."""
-        return self.rigid.c, self.rigid.rotation_matrices()
-
     def segment_velocities(self) -> np.ndarray:
         """(n_rigid, 3) [m/s] velocities of the boxes' centres."""
         return self.rigid.v
-
-    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
-        """Supported segments (``kinematic``) are carried to (c_T, R_T) this step (paper Sec. 4.1);
-        the others follow the coupled dynamics."""
-        rb = self.rigid
-        R = rb.rotation_matrices()
-        # a held segment (the suspended head) stays held whatever the controller asks
-        rb.kinematic[:] = kinematic | self._held
-        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, c_T, R_T, dt, self.scratch.qtmp)
-        self.sync_attached()
 
     @property
     def body_length_m(self) -> float:
@@ -641,24 +632,12 @@ assert K.ActiveLinks._fields[-1] == "act_buf"
 HybridDynamicState = namedtuple("HybridDynamicState", "x v q_ws rigid_c rigid_q rigid_v rigid_w impulse_cache "
                                 "kinematic acc dm_inv_eff coef")
 
-# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
-# ``hybrid.kernels.advance``'s arguments without n_steps
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain ``STEP``'s arguments
+# without n_steps; the registered functions below are the hybrid's legged operations on both paths
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 
-def _hybrid_legged_step(P):
-    """``legged_chunk.step``: one coupled step, ``rigid_chain.advance_chain`` on the packs named here.
-
-    Not through ``kernels.advance`` (the same call from Python): a kernel in between would be compiled after
-    the chain and before the chunk, one more optimisation and machine code of the whole chain on a cold
-    start's longest sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles")."""
-    links, att, boxes, world, coupling, acc = P.chain
-    # np.int64: a literal 1 compiles a second signature
-    return K.advance_chain(K.FEMLinks(*links), K.Attachment(*att), K.Boxes(*boxes), K.World(*world),
-                           K.Coupling(*coupling), acc, np.int64(1))
-
-
-register(HybridLegs, box_poses, carry_boxes, sample_boxes, _hybrid_legged_step, carry_boxes_feet)
+register(HybridLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP), carry_boxes_feet)
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.
@@ -681,6 +660,8 @@ BACKEND = BodySpec(
     config_cls=HybridConfig, factory=make_hybrid, default_dt=default_dt,
     capabilities=frozenset({MUSCLES, SEGMENTS, LEGS}) | FRICTION_CAPABILITIES,
     footprint=footprint, check_buildable=check_buildable, checks=CHECKS,
+    # its one step and the pack whose registered functions are its legged operations (bodies.legged_chunk)
+    step=STEP, legged_pack=HybridLegs,
     # the proportional shape gain its box-and-link chain tolerates once the error is smoothed along the body
     # (controllers/shape_tracking.py): 0.5 blew the snake up at mu_t / mu_f = 1, and 2 at 5
     shape_gain_p=0.25,

@@ -219,11 +219,14 @@ def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
 register_link(FEMLinks, _fem_links_step)
 
 
-@njit(cache=True, error_model="numpy")
+# inline: the fused legged walk's step is this function with n = 1 (``legged_chunk.chain_step``), inlined into its
+# chunk, so no kernel of its own sits between the chain and the chunk on a cold start
+@njit(cache=True, error_model="numpy", inline="always")
 def advance(links, att, boxes, world, coupling, acc, n_steps):
-    """``rigid_chain.advance_chain`` of the FEM-linked chain from Python: the records ``FEMLinks``, ``Attachment``,
-    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; returns (steps,
-    status)."""
+    """The hybrid's one step function (its ``BodySpec.step``): ``rigid_chain.advance_chain`` of the FEM-linked chain,
+    from Python (``BodyHybrid.advance``) and in the fused legged walk: the records ``FEMLinks``, ``Attachment``,
+    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; acc (N_ACC,)
+    ACCUMULATES; returns (steps, status)."""
     return advance_chain(FEMLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling), acc,
                          n_steps)
 

@@ -33,6 +33,7 @@ from . import analytic_systems as AS
 from . import benchmarks
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
+from .myriapod import BodyRigidSpringChain, SpringChainLegs  # the legged chain (make_*)
 
 
 # Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
@@ -229,7 +230,6 @@ def make_massspring(case, world):
     (``massspring.myriapod``): legs attach to rigid segments (the creature's morphology; the leg
     controller itself is composed by the runner); world: the run's ``world.world.World``."""
     if case.creature.legs_per_segment:
-        from .myriapod import BodyRigidSpringChain
         return BodyRigidSpringChain(case, world)
     return BodyMassSpring(case, world)
 
@@ -301,6 +301,9 @@ BACKEND = BodySpec(
     surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the lattice (analytic_systems.py); body.damping=0 takes its
     # springs' damping off for the undamped stable-dt limit
+    # the legged chain's pack, whose registered functions are its legged operations (bodies.legged_chunk); no
+    # ``step``: this spec builds two body models (a legless one and the legged chain, whose module names its STEP)
+    legged_pack=SpringChainLegs,
     probes=BodyProbes(rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="k L",
                       omega_max=AS.omega_max, undamped=("body.damping=0",),
                       **point_mass_momentum_probes(lambda body: body.mass)))

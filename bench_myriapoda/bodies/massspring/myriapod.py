@@ -53,8 +53,7 @@ from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, A
                            place_attached_nodes, register_link)
 from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
                              carry_boxes_feet, sample_boxes)
-from ..kinematic_targets import drive_to_targets
-from ..legged_chunk import register
+from ..legged_chunk import LeggedPackOps, chain_step, register
 from ...core.kernel_records import plain
 from ...core.protocols import Actuation, Observation
 from ..placement import place_box_chain
@@ -189,20 +188,30 @@ def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
 register_link(SpringLinks, _spring_links_step)
 
 
-@njit(cache=True, error_model="numpy")
+# inline: the fused legged walk's step is this function with n = 1 (``legged_chunk.chain_step``), inlined into its
+# chunk, so no kernel of its own sits between the chain and the chunk on a cold start
+@njit(cache=True, error_model="numpy", inline="always")
 def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
-    """``rigid_chain.advance_chain`` of the spring-linked chain from Python: the records ``SpringLinks``,
-    ``Attachment``, ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here;
-    returns (steps, status)."""
+    """The legged chain's one step function: ``rigid_chain.advance_chain`` of the spring-linked chain, from Python
+    (``BodyRigidSpringChain.advance``) and in the fused legged walk: the records ``SpringLinks``, ``Attachment``,
+    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; acc (N_ACC,)
+    ACCUMULATES; returns (steps, status)."""
     return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
                          acc, n_steps)
 
 
-class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
+# The legged chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
+# (``legged_chunk.chain_step``)
+STEP = advance_spring_chain
+
+
+class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
     """Rigid boxes (``self.rigid``) joined by Miller spring-cube links, with the segment interface.
 
     State: ``x``, ``v`` (n_nodes, 3) [m], [m/s] of the link nodes (attached
-    rows always equal the boxes' points); the boxes' c, q, v, w in ``self.rigid``.
+    rows always equal the boxes' points); the boxes' c, q, v, w in ``self.rigid``.  Its segment interface
+    (``segment_poses``, ``set_support``, ``push_support``, ``legged_sample``) is ``legged_chunk.LeggedPackOps``: the
+    functions registered for ``SpringChainLegs`` below, which the fused walk runs.
     """
 
     name = "massspring"
@@ -269,7 +278,7 @@ class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        return advance_spring_chain(*self._chain_args, self.acc, int(n_steps))
+        return STEP(*self._chain_args, self.acc, int(n_steps))
 
     @cached_property
     def _chain_args(self) -> tuple:
@@ -320,23 +329,9 @@ class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
         return STATUS_TEXT.get(code, f"status {code}")
 
     # ------------------------------------------------------------------ segment interface
-    def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
-        """Centres (n_rigid, 3) [m] and rotations (n_rigid, 3, 3) of the boxes."""
-        return self.rigid.c, self.rigid.rotation_matrices()
-
     def segment_velocities(self) -> np.ndarray:
         """(n_rigid, 3) [m/s] velocities of the boxes' centres."""
         return self.rigid.v
-
-    def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
-        """Supported boxes (``kinematic`` (n,) bool) are put at (c_T (n, 3) [m], R_T (n, 3, 3)) with the
-        finite-difference velocities that take them there in dt [s] (Sec. 4.1); the others follow the dynamics."""
-        rb = self.rigid
-        R = rb.rotation_matrices()
-        rb.kinematic[:] = kinematic | self._held
-        drive_to_targets(rb.c, rb.q, rb.v, rb.w, R, rb.kinematic, np.ascontiguousarray(c_T, dtype=np.float64),
-                         np.ascontiguousarray(R_T, dtype=np.float64), float(dt), self.scratch.qtmp)
-        self.sync_attached()
 
     @property
     def body_length_m(self) -> float:
@@ -415,19 +410,9 @@ class BodyRigidSpringChain(PushedBoxes, LeggedSegments):
 __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout"]
 
 
-# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain
-# ``advance_spring_chain``'s arguments without n_steps
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain ``STEP``'s
+# arguments without n_steps; the registered functions below are the chain's legged operations on both paths
 SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
 
 
-def _spring_chain_legged_step(P):
-    """``legged_chunk.step``: one coupled step, ``rigid_chain.advance_chain`` on the packs named here (not
-    through ``advance_spring_chain``: ``hybrid.body._hybrid_legged_step`` says why)."""
-    links, att, boxes, world, coupling, acc = P.chain
-    # np.int64: a literal 1 compiles a second signature
-    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
-                         acc, np.int64(1))
-
-
-register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, _spring_chain_legged_step,
-         carry_boxes_feet)
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP), carry_boxes_feet)
