@@ -15,3 +15,19 @@ def run_for(cr, dt: float, duration_s: float, each_chunk=None) -> tuple[int, int
         if each_chunk is not None:
             each_chunk(done)
     return done, status
+
+
+def validate_quick_rows(body: str, out_dir, capsys, quick_checks) -> tuple[int, list[dict]]:
+    """``bench-myriapoda validate --quick --body BODY --json`` in this process (a plugin body's conformance run):
+    its exit code and its rows, after checking that the rows are exactly the body's quick checks and that none of
+    them broke on the body (a verdict on the physics, never a traceback)."""
+    import json
+
+    from bench_myriapoda.cli import main
+
+    code = main(["validate", "--quick", "--body", body, "--json", "--no-store", "--out", str(out_dir)])
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert {(r["check"], r["body"]) for r in rows} == {(c, body) for c in quick_checks}
+    for r in rows:
+        assert "traceback" not in r["figures"], r["detail"]
+    return code, rows
