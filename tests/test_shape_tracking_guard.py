@@ -202,6 +202,19 @@ def test_the_fem_and_hybrid_snakes_never_run_away_over_the_key_space(body):
     check()
 
 
+@pytest.mark.xfail(strict=True, reason="the loop drives the hybrid's FEM links to a blow-up before any of the guard's "
+                   "tests sees it (docs/explanation/shape-tracking-map.md, 'The fem and hybrid map'; issue 44)")
+def test_the_hybrid_blow_up_of_the_tracking_map_is_not_the_open_loops():
+    """A cell of the tracking map (the default snake, Coulomb friction mu_f 0.1, mu_b 0.3, mu_t 1.0, wavelength 1.5
+    BL; 4 s) where the hybrid blew up in the closed loop ("runaway speed" at 2.14 s, bend 3.7 of 10, no back-off) and
+    ran to the end in the calibrated open loop (``ok``, flagged, 1.7 of 10).  Known, not solved: strict, so that the
+    day the guard catches it this test says so."""
+    overrides = ["friction.model=coulomb", "friction.mu_forward=0.1", "friction.mu_backward=0.3",
+                 "friction.mu_transverse=1.0", "gait.wavelength_bl=1.5"]
+    case = resolve_case("snake", "hybrid", "flat", "lateral-undulation", duration=4.0, overrides=overrides)
+    check_no_runaway(run_case(case), 10.0)
+
+
 @pytest.mark.parametrize("creature, gait", [("snake", "sidewinding"), ("worm", "rectilinear")])
 def test_the_sidewinder_and_the_worm_run_as_before_the_guard(creature, gait):
     """The sidewinder keeps the open loop (models/snake.toml) and the worm commands no curvature: neither closes the
