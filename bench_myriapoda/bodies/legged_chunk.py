@@ -40,7 +40,6 @@ compares the two paths bit for bit.
 """
 from __future__ import annotations
 
-import inspect
 from functools import cached_property
 from typing import Protocol, runtime_checkable
 
@@ -127,17 +126,18 @@ def registered(cls) -> tuple:
     return _IMPLS[cls] + (_FEET.get(cls), _STEPS.get(cls))
 
 
-def chain_step(body_step):
+def chain_step(body_step, n_chain: int):
     """The fused walk's ``step(P)`` of a body whose one step function is ``body_step(*P.chain, n_steps) -> (steps
     done, status)`` (the function its ``Body.advance`` calls with the chunk's n): that function with n = 1, so the
-    two paths step through one function.  ``body_step`` should be ``inline="always"``: a kernel of its own between
+    two paths step through one function.  ``n_chain``: the number of items of the pack's ``chain`` (the step's
+    arguments before n_steps), declared by the body beside its step; a wrong count fails the fused walk's first
+    compile (a tuple index out of range, or a call with the wrong number of arguments).  ``body_step`` should be ``inline="always"``: a kernel of its own between
     the body's chain and the fused chunk would be optimized and emitted once more on a cold start's longest
     sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles").
 
     The call spells out ``P.chain``'s items, written here for ``body_step``'s number of parameters: numba does not
     inline a call with ``*args`` ("Calling a closure with *args is unsupported", numba 0.68.1)."""
-    n_args = len(inspect.signature(getattr(body_step, "py_func", body_step)).parameters) - 1
-    items = "".join(f"c[{i}], " for i in range(n_args))
+    items = "".join(f"c[{i}], " for i in range(int(n_chain)))
     namespace = {"body_step": body_step, "np": np}
     # np.int64: a literal 1 compiles a second signature
     exec(f"def one_step(P):\n    c = P.chain\n    return body_step({items}np.int64(1))\n", namespace)

@@ -350,7 +350,8 @@ def _carry_blocks_feet(P, kinematic, c_T, R_T, states, tips):
 # The chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
 # (``legged_chunk.chain_step``; not inlined, as before: the fused chunk calls the chain's compiled kernel)
 STEP = advance_chain
-register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, chain_step(STEP), _carry_blocks_feet)
+STEP_CHAIN_ITEMS = 3  # STEP's arguments before n_steps: chain, world, acc (the pack's chain)
+register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, chain_step(STEP, STEP_CHAIN_ITEMS), _carry_blocks_feet)
 
 
 class BodyFEMChain(LeggedPackOps, LeggedSegments):

@@ -101,6 +101,7 @@ from . import kernels as K
 # The hybrid's one step function (``BodySpec.step``): ``advance`` calls it with a chunk's n steps, the fused legged
 # walk with one (``legged_chunk.chain_step``)
 STEP = K.advance
+STEP_CHAIN_ITEMS = 6  # STEP's arguments before n_steps: links, att, boxes, world, coupling, acc (the pack's chain)
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
 CONFIG_SOURCE = "[bodies.hybrid]"
 
@@ -637,7 +638,7 @@ HybridDynamicState = namedtuple("HybridDynamicState", "x v q_ws rigid_c rigid_q 
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 
-register(HybridLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP), carry_boxes_feet)
+register(HybridLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP, STEP_CHAIN_ITEMS), carry_boxes_feet)
 
 # The record itself has the same shape in every backend (the fields of core.specs.BodySpec, in order): a
 # declaration, not repeated logic.

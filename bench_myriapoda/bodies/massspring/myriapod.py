@@ -203,6 +203,7 @@ def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
 # The legged chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
 # (``legged_chunk.chain_step``)
 STEP = advance_spring_chain
+STEP_CHAIN_ITEMS = 6  # STEP's arguments before n_steps: links, att, boxes, world, coupling, acc (the pack's chain)
 
 
 class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
@@ -415,4 +416,4 @@ __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout
 SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
 
 
-register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP), carry_boxes_feet)
+register(SpringChainLegs, box_poses, carry_boxes, sample_boxes, chain_step(STEP, STEP_CHAIN_ITEMS), carry_boxes_feet)
