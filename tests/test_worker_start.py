@@ -27,7 +27,7 @@ def test_a_long_temporary_directory_starts_the_workers_by_spawning(tmp_path, mon
     assert W.start_method() == "spawn"
     monkeypatch.setenv("TMPDIR", "/tmp")
     monkeypatch.setattr(tempfile, "tempdir", None)
-    assert W.start_method() in ("forkserver", "spawn") and W.forkserver_socket_fits()
+    assert W.forkserver_socket_fits()  # /tmp leaves the socket room: the start method is not forced to spawn
 
 
 def test_a_matrix_runs_under_a_temporary_directory_too_long_for_a_socket(tmp_path):
