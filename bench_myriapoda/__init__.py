@@ -37,13 +37,23 @@ def _numba_cache_dir() -> str:
 NUMBA_CACHE_DIR_GIVEN = "NUMBA_CACHE_DIR" in os.environ  # the user's own (checked by core.numba_env), not ours
 if not NUMBA_CACHE_DIR_GIVEN:  # a user's own choice wins
     os.environ["NUMBA_CACHE_DIR"] = _numba_cache_dir()
-    try:  # numba may already be imported: its config read the environment then
-        import sys
+# The kernels' cache files found by their place in the package, not by its install path (jit/cache_locator.py):
+# a wheel, a second worktree or a rebuilt venv of the same code loads what the first compiled.  numba's own
+# locators follow ours in numba's own order (the setting replaces numba's list); a user's own list wins.
+NUMBA_LOCATORS = ("UserProvidedCacheLocator", "InTreeCacheLocator", "UserWideCacheLocator", "IPythonCacheLocator",
+                  "ZipCacheLocator")
+CACHE_LOCATOR_CLASSES = ",".join(["bench_myriapoda.jit.cache_locator.PackageRelativeCacheLocator", *NUMBA_LOCATORS])
+NUMBA_CACHE_LOCATOR_CLASSES_GIVEN = "NUMBA_CACHE_LOCATOR_CLASSES" in os.environ
+os.environ.setdefault("NUMBA_CACHE_LOCATOR_CLASSES", CACHE_LOCATOR_CLASSES)
+try:  # numba may already be imported: its config read the environment then
+    import sys
 
-        if "numba" in sys.modules:
+    if "numba" in sys.modules:
+        if not NUMBA_CACHE_DIR_GIVEN:
             sys.modules["numba"].config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
-    except AttributeError:
-        pass
+        sys.modules["numba"].config.CACHE_LOCATOR_CLASSES = os.environ["NUMBA_CACHE_LOCATOR_CLASSES"]
+except AttributeError:
+    pass
 
 # Cold start (issue 13): numba's type inference tries many typing templates per operation and builds an error
 # for each one that does not match (about 65,000 in one compile of the hybrid chain's kernels); with colorama

@@ -83,7 +83,8 @@ def installed(tmp_path_factory):
     work = tmp / "elsewhere"
     work.mkdir()
     env = {k: v for k, v in os.environ.items() if k not in ("BENCH_MYRIAPODA_ROOT", "PYTHONPATH")}
-    env["NUMBA_CACHE_DIR"] = str(tmp / "numba-cache")  # the venv's compiled kernels go away with it
+    # numba's cache is the checkout's (the default, keyed by the package's source hash; jit/cache_locator.py files
+    # each kernel by its place in the package): the installed copy of the same code loads what the checkout compiled
     return py, bindir, whl, work, env
 
 
@@ -169,3 +170,24 @@ def test_wheel_ships_the_recorded_compile_plans_and_the_installed_package_reads_
 
     here = read_plans()
     assert version == here.numba_version and groups == sorted(here.plans) and groups
+
+
+def test_the_installed_copy_loads_the_kernels_the_checkout_compiled(installed):
+    """The same code installed elsewhere compiles nothing (jit/cache_locator.py): numba's cache files are found by
+    a kernel's place inside the package, not by the install path, and the cache directory by the sources' hash."""
+    import numba
+
+    import bench_myriapoda as here
+
+    py, _, _, work, env = installed
+    assert here.run("worm", "massspring", "flat", duration=0.05).status == "ok"  # the checkout's kernels, cached
+    probe = ("import json, numba, sys, bench_myriapoda as bm; r = bm.run('worm', 'massspring', 'flat', duration=0.05); "
+             "ks = {id(o): o for m in list(sys.modules.values()) if m and m.__name__.startswith('bench_myriapoda') "
+             "for o in vars(m).values() if isinstance(o, numba.core.dispatcher.Dispatcher)}.values(); "
+             "print(json.dumps([r.status, bm.SOURCE_HASH, bm.__file__, numba.config.CACHE_DIR, "
+             "sum(sum(k.stats.cache_hits.values()) for k in ks), sum(sum(k.stats.cache_misses.values()) for k in ks)]))")
+    status, source_hash, file, cache_dir, hits, misses = json.loads(_run([py, "-c", probe], work, env).splitlines()[-1])
+    assert status == "ok" and Path(file).is_relative_to(py.parent.parent), file
+    assert source_hash == here.SOURCE_HASH  # the wheel carries the same sources
+    assert cache_dir == numba.config.CACHE_DIR
+    assert hits > 0 and misses == 0, (hits, misses)  # the run's entry kernels (8 for this worm), all loaded

@@ -54,6 +54,10 @@ def check_numba_env(env: Mapping[str, str] | None = None) -> None:
     cpu = env.get("NUMBA_CPU_NAME")
     if cpu:  # empty: numba's default, the host's CPU
         _check_cpu_name(cpu)
+    from .. import NUMBA_CACHE_LOCATOR_CLASSES_GIVEN
+
+    if "NUMBA_CACHE_LOCATOR_CLASSES" in env and (NUMBA_CACHE_LOCATOR_CLASSES_GIVEN or env is not os.environ):
+        _check_locator_classes(env["NUMBA_CACHE_LOCATOR_CLASSES"])
 
 
 def _check_cache_dir(text: str) -> None:
@@ -78,6 +82,33 @@ def _check_cache_dir(text: str) -> None:
     if not os.access(probe, os.W_OK | os.X_OK):
         raise InputError(name, None, f"{text!r:.200}: {probe} is not writable; give a directory numba can write "
                                      "its compiled kernels to, or unset it")
+
+
+def _check_locator_classes(text: str) -> None:
+    """NUMBA_CACHE_LOCATOR_CLASSES: comma-separated numba locator names (``UserProvidedCacheLocator``, ...) or
+    ``module.Class`` paths that import.  numba reads it at the first cached kernel and raises there (a traceback
+    in the middle of a run) when an entry does not resolve."""
+    import importlib
+
+    from numba.core import caching
+
+    name = "NUMBA_CACHE_LOCATOR_CLASSES"
+    for entry in (e.strip() for e in text.split(",")):
+        if not entry:
+            continue
+        if "." not in entry:
+            if not isinstance(getattr(caching, entry, None), type):
+                raise InputError(name, None, f"{entry!r:.60} is not one of numba's cache locators; give names such "
+                                             "as UserProvidedCacheLocator or module.Class paths, or unset it")
+            continue
+        module, _, cls = entry.rpartition(".")
+        try:
+            ok = isinstance(getattr(importlib.import_module(module), cls, None), type)
+        except Exception:  # noqa: BLE001 - any failure to import is the same answer
+            ok = False
+        if not ok:
+            raise InputError(name, None, f"{entry!r:.100} does not import as a class; give module.Class paths or "
+                                         "numba's locator names, or unset it")
 
 
 def _check_cpu_name(cpu: str) -> None:
