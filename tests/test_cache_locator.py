@@ -61,3 +61,29 @@ def test_a_copy_of_the_package_elsewhere_loads_the_kernels_compiled_here(tmp_pat
     assert Path(file).is_relative_to(copy)
     assert cache_dir == numba.config.CACHE_DIR  # the same sources, so the same cache directory
     assert (hits, misses) == (1, 0)
+
+
+def test_a_changed_package_under_the_same_cache_dir_compiles_its_own(tmp_path):
+    """A NUMBA_CACHE_DIR of the user's own is shared by every version of the package run with it: a copy whose
+    kernel file is unchanged but whose other sources differ (a callee could be among them) must not load the
+    first copy's machine code."""
+    same, changed = tmp_path / "same", tmp_path / "changed"
+    for where in (same, changed):
+        shutil.copytree(ROOT, where / "bench_myriapoda", ignore=shutil.ignore_patterns("__pycache__"))
+    with open(changed / "bench_myriapoda" / "core" / "errors.py", "a") as f:
+        f.write("\n# another version of the package\n")
+    probe = ("import json, numpy as np, bench_myriapoda as bm; from bench_myriapoda.kinematics.rotations import "
+             "matvec as k; k(np.eye(3), 1.0, 2.0, 3.0); "
+             "print(json.dumps([sum(k.stats.cache_hits.values()), sum(k.stats.cache_misses.values())]))")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "BENCH_MYRIAPODA_ROOT")}
+    env["NUMBA_CACHE_DIR"] = str(tmp_path / "users-own-cache")
+
+    def hits_misses(copy: Path) -> list:
+        out = subprocess.run([sys.executable, "-c", probe], cwd=tmp_path, env=dict(env, PYTHONPATH=str(copy)),
+                             capture_output=True, text=True, timeout=120)
+        assert out.returncode == 0, out.stderr[-2000:]
+        return json.loads(out.stdout.splitlines()[-1])
+
+    assert hits_misses(same) == [0, 1]  # compiled into the empty cache
+    assert hits_misses(changed) == [0, 1]  # another version: compiled again, not loaded
+    assert hits_misses(same) == [1, 0]

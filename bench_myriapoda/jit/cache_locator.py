@@ -2,12 +2,12 @@
 
 numba files a cached kernel under ``NUMBA_CACHE_DIR/<dir>_<sha1 of the source file's absolute directory>``, so
 the same code at another path compiles every kernel again (about 40 to 100 CPU s per body group): a wheel
-installed next to a checkout, a second git worktree of the same commit, a venv rebuilt elsewhere.  The suite
-already keys its cache directory on the hash of every source file of the package (``bench_myriapoda.SOURCE_HASH``),
-and numba (0.68, the version this was written against) stamps each cache index with the hash of its source file's
-content, so a path adds nothing that could tell two builds apart: here a package kernel is filed under ``NUMBA_CACHE_DIR/package/<its directory
-relative to the package>``, the same for every copy of the same code.  A function outside the package (a user's
-plugin, a test file) is left to numba's own locators.
+installed next to a checkout, a second git worktree of the same commit, a venv rebuilt elsewhere.  A path tells
+two builds apart no better than the hash of every source file of the package (``bench_myriapoda.SOURCE_HASH``)
+does, and numba (0.68, the version this was written against) stamps each cache index with the hash of its source
+file's content.  So here a package kernel is filed under ``NUMBA_CACHE_DIR/package-<sources' hash>/<its
+directory relative to the package>``, the same for every copy of the same code.  A function outside the package
+(a user's plugin, a test file) is left to numba's own locators.
 
 Installed by ``bench_myriapoda/__init__.py`` through numba's ``NUMBA_CACHE_LOCATOR_CLASSES`` (a user's own
 setting wins).  A numba without that setting ignores it and keeps its path-keyed cache: slower, never wrong.
@@ -19,13 +19,20 @@ from pathlib import Path
 
 from numba.core import config
 
+from .. import SOURCE_HASH
+
 try:  # numba's public name (the one NUMBA_CACHE_LOCATOR_CLASSES resolves)
     from numba.core.caching import UserProvidedCacheLocator
 except ImportError:  # pragma: no cover - an older numba's name; it may not read NUMBA_CACHE_LOCATOR_CLASSES
     from numba.core.caching import _UserProvidedCacheLocator as UserProvidedCacheLocator
 
 PACKAGE_ROOT = Path(__file__).resolve().parents[1]  # .../bench_myriapoda
-SUBDIR = "package"  # NUMBA_CACHE_DIR/package/<directory inside the package>/<module>.<kernel>-<line>.{nbi,nbc}
+# NUMBA_CACHE_DIR/package-<SOURCE_HASH>/<directory inside the package>/<module>.<kernel>-<line>.{nbi,nbc}.  The
+# sources' hash again, although the suite's default NUMBA_CACHE_DIR already holds it: a NUMBA_CACHE_DIR of the
+# user's own is shared by whatever code runs with it, and numba stamps a kernel's index with its own file only,
+# so two versions of the package whose kernel files are equal but whose callees differ would load each other's
+# machine code.
+SUBDIR = f"package-{SOURCE_HASH}"
 
 def package_relative_dir(py_file: str) -> tuple[str, ...] | None:
     """The directory of ``py_file`` relative to the package (``()`` for the package's top level), or None for a
