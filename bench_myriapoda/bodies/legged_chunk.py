@@ -102,9 +102,8 @@ def _impl(P, which: int):
 
 
 def register(cls, poses_impl, carry_impl, sample_impl, step_impl, carry_feet_impl=None) -> None:
-    """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample``, ``step``: step_impl takes
-    (P, world, dt))
-    the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
+    """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample`` and ``step``, which takes
+    (P, world, dt)) the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
     inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function.
 
     Registering only fills a table: each of the four functions has ONE numba overload, declared below
