@@ -249,9 +249,10 @@ def _legs_sample(P, c_out, R_out, links_out):
     joint_centres(c, P.Rseg, J.end_back, J.end_front, links_out)
 
 
-def _legs_step(P):
+def _legs_step(P, world, dt):
     """``legged_chunk.step``: one step of the body's own kernel (np.int64: a literal 1 compiles a second
-    signature)."""
+    signature).  The fused walk's world and dt are this body's own (its record holds them, as its ``advance``
+    steps): a plugin body may keep its step's form, and the interface hands it the run's."""
     return advance_jointed(P.J, np.int64(1))
 
 

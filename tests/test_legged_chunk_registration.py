@@ -57,10 +57,10 @@ def _carry(P, kinematic, c_T, R_T):
 def _sample(P, c_out, R_out, links_out):
     pass
 
-def _step(P):
+def _step(P, world, dt):
     return 1, np.int64(inner(P) > 1e9)
 
-def _link(L, A, B, W, C, acc, step, flat, ground):
+def _link(L, A, B, M, W, C, acc, dt, step, flat, ground):
     return np.int64(inner(L) > 1e9), 0
 
 register(Pack{X}, _poses, _carry, _sample, _step)
@@ -83,7 +83,7 @@ def chunk(P, n, kin, c_T, R_T, c_out, R_out, links_out):
         c, R = LC.poses(P)
         LC.carry(P, kin, c_T, R_T)
         LC.sample(P, c_out, R_out, links_out)
-        done, status = LC.step(P)
+        done, status = LC.step(P, 0, 0.0)
         if status != 0:
             return k + 1
     return n
@@ -91,7 +91,7 @@ def chunk(P, n, kin, c_T, R_T, c_out, R_out, links_out):
 @njit(cache=True)
 def chain(L, n):
     for k in range(n):
-        status, n_contact = link_step(L, 0, 0, 0, 0, 0, k, True, 0.0)
+        status, n_contact = link_step(L, 0, 0, 0, 0, 0, 0, 0.0, k, True, 0.0)
         if status != 0:
             return k + 1
     return n

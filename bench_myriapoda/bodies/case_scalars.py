@@ -9,12 +9,12 @@ from __future__ import annotations
 import numpy as np
 
 
-def contact_scalars(phys: np.ndarray, at: tuple[int, int, int, int, int], case, dt: float) -> None:
-    """Write into phys at the indices at = (DT, R_N, R_T, MAX_SPEED, MAX_PEN): the time step dt [s], the
-    collision's normal and tangential restitution (``case.collision``), the speed [m/s] and penetration [m]
-    beyond which a step is a blow-up (``case.stability``)."""
-    i_dt, i_rn, i_rt, i_speed, i_pen = at
-    phys[i_dt] = dt
+def contact_scalars(phys: np.ndarray, at: tuple[int, int, int, int], case) -> None:
+    """Write into phys at the indices at = (R_N, R_T, MAX_SPEED, MAX_PEN): the collision's normal and tangential
+    restitution (``case.collision``), the speed [m/s] and penetration [m] beyond which a step is a blow-up
+    (``case.stability``).  Not the time step: every body's step takes dt as a plain argument (issue 42 item 2;
+    tests/test_step_arguments.py fails if a body's parameter vector holds it again)."""
+    i_rn, i_rt, i_speed, i_pen = at
     phys[i_rn] = case.collision.r_n
     phys[i_rt] = case.collision.r_t
     phys[i_speed] = case.stability.max_speed_m_s

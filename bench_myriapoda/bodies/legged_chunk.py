@@ -16,17 +16,18 @@ sample -> ``body.advance(t, 1)``):
 4. ``sample(P, c_out, R_out, links_out)``: on a step the timeline records, the poses after the
    support into c_out (n_seg, 3) [m] and R_out (n_seg, 3, 3), and the links' centres (what the
    body's ``segment_centers`` gives at odd rows) into links_out (n_seg - 1, 3) [m];
-5. ``step(P) -> (steps done, status code)``: one step of the body's own kernel
-   (``step_status`` codes).
+5. ``step(P, world, dt) -> (steps done, status code)``: one step of dt [s] of the body's own kernel in the run's
+   world (``world.world.StepWorld`` as a plain tuple; ``step_status`` codes).
 
 One implementation (issue 42 item 2): the four registered functions are the body's declaration of its
 legged operations, and both paths run them.  The fused walk inlines them into its chunk; a body that
 inherits ``LeggedPackOps`` has no Python version of its own: its ``segment_poses``, ``set_support``,
 ``push_support`` and the legged monitor's sample (``legged_sample``) call them through the small compiled
 entries ``poses_now``, ``support_now`` and ``sample_now`` below, on one pack the body keeps.  Its step is
-one function too, ``STEP(*P.chain, n_steps)`` in its module (the pack's ``chain`` holds its arguments; the
-``BodySpec.step`` of a spec that builds only that body), which ``Body.advance`` calls with the chunk's n and the
-fused walk, through the registered ``chain_step(STEP)``, with n = 1.  tests/test_legged_one_implementation.py checks each by identity for every
+one function too, ``STEP(*P.chain, world, dt, n_steps)`` in its module (the pack's ``chain`` holds the body's own
+arguments, its records; the world and the time step are plain arguments given by whoever runs it; the body's
+``BodySpec.step``), which ``Body.advance`` calls with the run's world and dt and the chunk's n, and the fused walk,
+through the registered ``chain_step(STEP)``, with its world and dt and n = 1.  tests/test_legged_one_implementation.py checks each by identity for every
 legged body in the catalog.
 
 The interface: a body offers the fused path by a method ``legged_pack() -> P`` (``LeggedChunkBody``),
@@ -78,7 +79,7 @@ def sample(P, c_out, R_out, links_out):
     raise NotImplementedError("legged_chunk.sample runs in compiled code, on a registered pack")
 
 
-def step(P):
+def step(P, world, dt):
     """Step 5 (module docstring); compiled code only."""
     raise NotImplementedError("legged_chunk.step runs in compiled code, on a registered pack")
 
@@ -101,8 +102,8 @@ def _impl(P, which: int):
 
 
 def register(cls, poses_impl, carry_impl, sample_impl, step_impl, carry_feet_impl=None) -> None:
-    """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample``, ``step``)
-    the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
+    """Make the four plain functions (same parameters as ``poses``, ``carry``, ``sample`` and ``step``, which takes
+    (P, world, dt)) the implementations for packs of namedtuple class ``cls``.  Inlined into the caller (numba IR
     inlining), as the fused kernel's own helpers are.  A numba dispatcher counts as its Python function.
 
     Registering only fills a table: each of the four functions has ONE numba overload, declared below
@@ -127,10 +128,11 @@ def registered(cls) -> tuple:
 
 
 def chain_step(body_step, n_chain: int):
-    """The fused walk's ``step(P)`` of a body whose one step function is ``body_step(*P.chain, n_steps) -> (steps
-    done, status)`` (the function its ``Body.advance`` calls with the chunk's n): that function with n = 1, so the
-    two paths step through one function.  ``n_chain``: the number of items of the pack's ``chain`` (the step's
-    arguments before n_steps), declared by the body beside its step; a wrong count fails the fused walk's first
+    """The fused walk's ``step(P, world, dt)`` of a body whose one step function is ``body_step(*P.chain, world, dt,
+    n_steps) -> (steps done, status)`` (the function its ``Body.advance`` calls with the run's world and dt and the
+    chunk's n): that function with the fused walk's world and dt and n = 1, so the two paths step through one
+    function.  ``n_chain``: the number of items of the pack's ``chain`` (the body's own arguments of the step, before
+    world, dt and n_steps), declared by the body beside its step; a wrong count fails the fused walk's first
     compile (a tuple index out of range, or a call with the wrong number of arguments).  ``body_step`` should be ``inline="always"``: a kernel of its own between
     the body's chain and the fused chunk would be optimized and emitted once more on a cold start's longest
     sequence of compiles (docs/guide/scheduling.md, "The longest chain of compiles").
@@ -140,7 +142,8 @@ def chain_step(body_step, n_chain: int):
     items = "".join(f"c[{i}], " for i in range(int(n_chain)))
     namespace = {"body_step": body_step, "np": np}
     # np.int64: a literal 1 compiles a second signature
-    exec(f"def one_step(P):\n    c = P.chain\n    return body_step({items}np.int64(1))\n", namespace)
+    exec(f"def one_step(P, world, dt):\n    c = P.chain\n    return body_step({items}world, dt, np.int64(1))\n",
+         namespace)
     one_step = namespace["one_step"]
     one_step.body_step = body_step
     one_step.__doc__ = f"``legged_chunk.step``: one step of ``{getattr(body_step, '__name__', body_step)}``."
@@ -179,7 +182,7 @@ def _sample(P, c_out, R_out, links_out):
 
 
 @overload(step, inline="always")
-def _step(P):
+def _step(P, world, dt):
     return _impl(P, 3)
 
 

@@ -48,9 +48,10 @@ Boxes = namedtuple("Boxes", "c q vr w mass inertia_body half_extents kinematic i
 # the attached nodes: fixed (n_fixed,) node ids, att_body (n_fixed,) the box of each, att_local (n_fixed, 3) [m] its
 # body-frame position, grouped by box
 Attachment = namedtuple("Attachment", "fixed att_body att_local")
-# gravity (3,) [m/s^2]; terr_kind, terr (``terrain_kernels``); fric_model, fric (``friction_kernels``) for the free
-# nodes; phys (N_PHYS,) the scalars below
-World = namedtuple("World", "gravity terr_kind terr fric_model fric phys")
+# the chain's constant contact parameters: fric_model, fric (``friction_kernels``) for the free nodes; phys (N_PHYS,)
+# the scalars below.  The world (gravity, terrain: ``world.world.StepWorld``) and the time step dt are not here: they
+# are plain arguments of the step (``advance_chain``), given by whoever runs it.
+ChainParams = namedtuple("ChainParams", "fric_model fric phys")
 # the coupling's scratch (``segment_chain.CouplingScratch``, less qtmp): f_att, x_att, x_pred (n_fixed, 3), residual
 # (n_fixed,), spine (n_links, 3), Rb (n_rigid, 3, 3), and ``rigid_kernels._solve_contacts``'s
 Coupling = namedtuple("Coupling", "f_att x_att x_pred residual spine Rb R Iw corner_of lin ang resp kn kt target lam")
@@ -70,21 +71,20 @@ def coupling_of(sc) -> Coupling:
                     kn=sc.kn, kt=sc.kt, target=sc.target, lam=sc.lam)
 
 # Scalar parameter vector layout (``phys``, float64); MUSCLES_ON, MUSCLE_GAIN and VOLUME are the hybrid's
-# active FEM links' (a spring link has no muscles and leaves them 0).
-(DT, R_N, R_T, MAX_SPEED, MAX_PEN, RIGID_MU, RIGID_RESTITUTION, BOUNCE_THRESHOLD,
+# active FEM links' (a spring link has no muscles and leaves them 0).  No time step: dt is the step's argument.
+(R_N, R_T, MAX_SPEED, MAX_PEN, RIGID_MU, RIGID_RESTITUTION, BOUNCE_THRESHOLD,
  VEL_ITERATIONS, VEL_TOLERANCE, POS_ITERATIONS, POS_BETA, SLOP,
- MUSCLES_ON, MUSCLE_GAIN, VOLUME) = range(16)
+ MUSCLES_ON, MUSCLE_GAIN, VOLUME) = range(15)
 # the boxes' anisotropic friction, rigid_kernels' ``aniso`` layout (on, mu_f, mu_b, mu_t)
-RIGID_ANISO = 16
-N_PHYS = 16 + rk.N_ANISO
+RIGID_ANISO = 15
+N_PHYS = 15 + rk.N_ANISO
 
 
-def chain_phys(case, dt: float, contact) -> np.ndarray:
-    """(N_PHYS,) the chain's scalars for time step dt [s] and the boxes' contact (``rigid.ContactSettings``);
-    the link element's own (MUSCLES_ON, MUSCLE_GAIN, VOLUME) and the boxes' RIGID_ANISO are left 0 for its
-    body to set."""
+def chain_phys(case, contact) -> np.ndarray:
+    """(N_PHYS,) the chain's scalars for the boxes' contact (``rigid.ContactSettings``); the link element's own
+    (MUSCLES_ON, MUSCLE_GAIN, VOLUME) and the boxes' RIGID_ANISO are left 0 for its body to set."""
     phys = np.zeros(N_PHYS)
-    contact_scalars(phys, (DT, R_N, R_T, MAX_SPEED, MAX_PEN), case, dt)
+    contact_scalars(phys, (R_N, R_T, MAX_SPEED, MAX_PEN), case)
     phys[RIGID_MU] = contact.friction
     phys[RIGID_RESTITUTION] = contact.restitution
     phys[BOUNCE_THRESHOLD] = contact.bounce_threshold
@@ -192,17 +192,18 @@ def link_spines(c, spine):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def chain_scalars(phys, fric):
-    """(dt [s], Miller's r_n, r_t, deepest penetration [m], fastest speed [m/s], contact distance [m]) of the
-    chain's phys (N_PHYS,) and the free nodes' fric: what each part of a step reads."""
-    return phys[DT], phys[R_N], phys[R_T], phys[MAX_PEN], phys[MAX_SPEED], fric[CONTACT_DISTANCE]
+    """(Miller's r_n, r_t, deepest penetration [m], fastest speed [m/s], contact distance [m]) of the chain's phys
+    (N_PHYS,) and the free nodes' fric: what each part of a step reads."""
+    return phys[R_N], phys[R_T], phys[MAX_PEN], phys[MAX_SPEED], fric[CONTACT_DISTANCE]
 
 
 @njit(cache=True, error_model="numpy")
-def rigid_segments_step(A, x, v, B, W, C, acc):
+def rigid_segments_step(A, x, v, B, M, W, C, acc, dt):
     """Sec. 3 steps 2 and 3 for rigid segments joined by deformable links; return (status, box corners touching).
 
     A: the ``Attachment``; x, v (n_nodes, 3) [m], [m/s]: the link nodes, attached rows UPDATED; B: the
-    ``Boxes``, UPDATED; W: the ``World``; C: the ``Coupling`` scratch; acc (N_ACC,) ACCUMULATES.
+    ``Boxes``, UPDATED; M: the ``ChainParams``; W: the world (``world.world.StepWorld``); C: the ``Coupling``
+    scratch; acc (N_ACC,) ACCUMULATES; dt [s] the time step.
     Step 2: the links' forces on the attached nodes C.f_att (n_fixed, 3) [N], at
     C.x_att (n_fixed, 3) [m], act on the boxes as force and torque, plus gravity;
     one rigid step for every box that is not kinematic (f_att and x_att are read only for the
@@ -215,12 +216,12 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
     """
     fixed, att_body, att_local = A.fixed, A.att_body, A.att_local
     c, q, vr, w, kinematic, half_extents = B.c, B.q, B.vr, B.w, B.kinematic, B.half_extents
-    gravity, terr_kind, terr, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric, W.phys
+    gravity, terr_kind, terr, fric, phys = W.gravity, W.terr_kind, W.terr, M.fric, M.phys
     f_att, x_att, x_pred, residual, Rb = C.f_att, C.x_att, C.x_pred, C.residual, C.Rb
     force, torque = B.force, B.torque
     n_fixed = fixed.shape[0]
     n_rigid = c.shape[0]
-    dt, _, _, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
+    _, _, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
     mu_r = phys[RIGID_MU]
     e_r = phys[RIGID_RESTITUTION]
     bounce = phys[BOUNCE_THRESHOLD]
@@ -314,12 +315,12 @@ def rigid_segments_step(A, x, v, B, W, C, acc):
 
 # ---------------------------------------------------------------- the link element (pluggable)
 
-def link_step(L, A, B, W, C, acc, step, flat, ground):
+def link_step(L, A, B, M, W, C, acc, dt, step, flat, ground):
     """Step 1 of the module docstring for the link element L (a namedtuple with at least ``x``, ``v`` the
     nodes (n_nodes, 3) and ``n_free`` the number of free nodes): the links' forces on their free nodes, which
-    it advances, and C.f_att, C.x_att, C.x_pred of the attached nodes (rows of boxes that are not kinematic
-    at least); step is the step's index in the call; flat, ground: ``terrain_kernels.flat_ground`` of
-    W.terr.  Returns (status, free nodes touching).  Compiled code only: a link element's module gives its
+    it advances by dt [s], and C.f_att, C.x_att, C.x_pred of the attached nodes (rows of boxes that are not
+    kinematic at least); step is the step's index in the call; flat, ground: ``terrain_kernels.flat_ground`` of
+    the world W's terrain.  Returns (status, free nodes touching).  Compiled code only: a link element's module gives its
     implementation to ``register_link``."""
     raise NotImplementedError("rigid_chain.link_step runs in compiled code, on a registered link element")
 
@@ -337,17 +338,18 @@ def register_link(cls, impl) -> None:
 
 
 @overload(link_step, inline="always")
-def _link_step(L, A, B, W, C, acc, step, flat, ground):
+def _link_step(L, A, B, M, W, C, acc, dt, step, flat, ground):
     if isinstance(L, types.BaseNamedTuple):
         return _LINK_STEPS.get(L.instance_class)
 
 
 @njit(cache=True, error_model="numpy")
-def advance_chain(L, A, B, W, C, acc, n_steps):
-    """Advance the chain ``n_steps`` staggered steps (module docstring); return (steps, status).
+def advance_chain(L, A, B, M, C, acc, W, dt, n_steps):
+    """Advance the chain ``n_steps`` staggered steps of dt [s] (module docstring) in the world W; return (steps,
+    status).
 
-    L: the link element (``link_step``), A: ``Attachment``, B: ``Boxes``, W: ``World``, C: ``Coupling``;
-    acc (N_ACC,) ACCUMULATES the statistics (residual max / sum / count, deepest penetration, contact
+    L: the link element (``link_step``), A: ``Attachment``, B: ``Boxes``, M: ``ChainParams``, C: ``Coupling``;
+    W: the world, a ``world.world.StepWorld`` (gravity, terrain); dt [s] the time step; acc (N_ACC,) ACCUMULATES the statistics (residual max / sum / count, deepest penetration, contact
     fraction sum over the free nodes and the box corners, steps).  On a blow-up the step that produced it
     is completed and its status code returned with the number of steps including it.
     """
@@ -357,9 +359,9 @@ def advance_chain(L, A, B, W, C, acc, n_steps):
     flat, ground = flat_ground(W.terr_kind, W.terr)
     for step in range(n_steps):
         # ---------------- (1) the link element's step
-        status, n_contact = link_step(L, A, B, W, C, acc, step, flat, ground)
+        status, n_contact = link_step(L, A, B, M, W, C, acc, dt, step, flat, ground)
         # ---------------- (2) rigid step under the links' forces, (3) attached nodes follow (Sec. 3)
-        st, nc = rigid_segments_step(A, L.x, L.v, B, W, C, acc)
+        st, nc = rigid_segments_step(A, L.x, L.v, B, M, W, C, acc, dt)
         n_contact += nc
         if st != OK:
             status = st

@@ -214,10 +214,16 @@ class BodySpec:
     - ``surface_kinds``: kind -> ``SurfaceStyle`` of the kinds of triangle surface the body's ``scene()`` draws
       that are its own (a kind the bodies share, the rigid box, is ``bodies.scene``'s); the animations read the
       styles from the specs and name no body.
-    - ``step``: the body's one step function, ``step(*records, n_steps) -> (steps done, status)`` (a numba
-      kernel; ``Body.advance`` calls it with a chunk's steps, and for a legged body the fused walk with one), or
-      None: a spec that builds two body models with different steps (``massspring``, ``fem``: a legless body and a
-      legged chain, whose module names the chain's step ``STEP``).
+    - ``step``: the body's one step function, ``step(*records, world, dt, n_steps) -> (steps done, status)`` (a
+      numba kernel; ``Body.advance`` calls it with a chunk's steps, and for a legged body the fused walk with one):
+      the body's own records first (its constants and its state), then the run's world (``world.world.StepWorld``
+      as a plain tuple, ``World.step_world``) and the time step dt [s], plain arguments given by whoever runs it
+      (issue 42 item 2; no body's parameters hold either).  A spec that builds two body models, a legless body and
+      a legged chain (``massspring``, ``fem``), names here the step of the body it builds for a creature with legs
+      (the chain's module names it ``STEP``) and in ``legless_step`` the other's.  A body whose implicit solve is
+      factored for one dt (the FEM bodies' M + dt D) is given that dt, its own ``dt``.
+    - ``legless_step``: the step function, in ``step``'s form, of the body model the spec builds for a creature
+      without legs where that is another body model than the legged one; None: ``step`` is every body's step.
     - ``legged_pack``: for a body with a fused legged walk (``bodies.legged_chunk``), the class of its pack, for
       which the body registers its legged operations (poses, support, sample, and its step as ``chain_step(step)``)
       once: the fused walk and the body's Python methods (``legged_chunk.LeggedPackOps``) both run those.  None:
@@ -244,6 +250,7 @@ class BodySpec:
     benchmarks: BodyBenchmarks = field(default_factory=BodyBenchmarks)
     surface_kinds: Mapping[str, SurfaceStyle] = field(default_factory=dict)
     step: Callable[..., tuple[int, int]] | None = None
+    legless_step: Callable[..., tuple[int, int]] | None = None
     legged_pack: type | None = None
 
 

@@ -14,7 +14,8 @@ own (``bodies.legged_chunk``: a body offers it through ``legged_pack``, and this
 4. a timeline sample every ``record_every`` steps: the controller's record (states, tips,
    brain mode, antenna contact, segment centres before the support) and the monitor's
    (segment poses and link centres after the support, ``legged_chunk.sample``), into buffers;
-5. one body step (``legged_chunk.step``, n = 1).
+5. one body step (``legged_chunk.step``, n = 1) of the chunk's dt in the run's world (plain arguments of the body's
+   step, as on the Python path, where ``Body.advance`` gives the same world and dt).
 
 After the last step (or a step that blew up) ``compiled.finish_chunk`` computes the antennae's
 links that the chunk's steps left to it on a terrain without obstacles (``compiled.I_ANT_DEFER``).
@@ -114,8 +115,9 @@ def _control(t, C, ca, c, R, REC, n_rec):
 
 
 @njit(cache=True, error_model="numpy")
-def legged_chunk(t0, dt, n_steps, C, P, REC):
-    """n_steps of the module docstring's steps 1-5 from t0 [s], time step dt [s].
+def legged_chunk(t0, dt, n_steps, C, W, P, REC):
+    """n_steps of the module docstring's steps 1-5 from t0 [s], time step dt [s], in the world W (the run's
+    ``world.world.StepWorld`` as a plain tuple, ``World.step_world``).
 
     C: the controller (``_control``); P: the body's pack (``bodies.legged_chunk``, its ``legged_pack``).
     REC: the timeline buffers, a ``Timeline`` as a plain tuple.
@@ -134,7 +136,7 @@ def legged_chunk(t0, dt, n_steps, C, P, REC):
         if recorded:                                           # 4. the monitor's sample
             LC.sample(P, rec.c[n_rec], rec.R[n_rec], rec.links[n_rec])
             n_rec += 1
-        done, status = LC.step(P)                              # 5. one body step
+        done, status = LC.step(P, W, dt)                       # 5. one body step
         if status != OK:
             CC.finish_chunk(C[0], C[1], C[2])
             return k + 1, status, n_rec
@@ -174,11 +176,17 @@ class FusedLeggedWalk:
 
     ``act`` is the stepper's actuation: its support fields are left as the Python path leaves them
     (the last step's support, already taken by the body).  ``monitor``: the run's ``LeggedMonitor``
-    or None.
+    or None.  ``world``: the run's ``world.world.World``, which the body's step is given each step (as the body's
+    ``advance`` gives it on the Python path).  The time step is the controller's, which must be the body's: a body
+    with an implicit solve holds its factor for that dt (``BodySpec.step``).
     """
 
-    def __init__(self, body, controller: MyriapodController, act, monitor=None):
+    def __init__(self, body, controller: MyriapodController, act, monitor=None, *, world):
+        if controller.dt != body.dt:
+            raise ValueError(f"FusedLeggedWalk: the controller's dt = {controller.dt} s is not the body's time step "
+                             f"{body.dt} s")
         self.body, self.controller, self.act, self.monitor = body, controller, act, monitor
+        self.world = world
         self.cs = CC.ControllerState(controller)
         n_seg, n_legs = controller.n_seg, controller.n_legs
         self.err_scratch = np.zeros(n_seg)
@@ -207,7 +215,8 @@ class FusedLeggedWalk:
         REC = plain(Timeline(t=self.rec_t, states=self.rec_states, tips=self.rec_tips, brain=self.rec_brain,
                              contact=self.rec_contact, centres=self.rec_centres, c=self.rec_c, R=self.rec_R,
                              links=self.rec_links))
-        k, code, n_rec = self._chunk(float(t0), float(ctrl.dt), int(n), C, self.body.legged_pack(), REC)
+        k, code, n_rec = self._chunk(float(t0), float(ctrl.dt), int(n), C, self.world.step_world,
+                                     self.body.legged_pack(), REC)
         cs.unpack()
         cs.settle()
         self._replay(int(n_rec))

@@ -137,10 +137,12 @@ class Stepper:
     Fused: when ``fused`` is True and the pair has a compiled composition (``bench_myriapoda.fused``:
     today the three legged bodies with the leg controller, ``fused.legged_walk`` says which cases), the
     closed loop runs in one compiled call per ``advance`` instead, with the same result step for
-    step; ``fused_reason`` says why a pair runs on the Python path (None when fused).
+    step; ``fused_reason`` says why a pair runs on the Python path (None when fused).  ``world``: the run's
+    ``world.world.World`` (the body was built in it), which the fused walk hands the body's step.
     """
 
-    def __init__(self, case: Case, body, controller, monitor: LeggedMonitor | None = None, fused: bool = True):
+    def __init__(self, case: Case, body, controller, monitor: LeggedMonitor | None = None, fused: bool = True, *,
+                 world: World):
         self.body, self.controller, self.monitor = body, controller, monitor
         self.dt = case.dt
         _, self.open_loop, rate = controller_settings(controller)
@@ -155,7 +157,7 @@ class Stepper:
         if fused and not self.open_loop:
             self.fused_reason = legged_walk.unsupported_reason(body, controller, self.steps_per_tick, self.act)
             if self.fused_reason is None:
-                self.fused = legged_walk.FusedLeggedWalk(body, controller, self.act, monitor)
+                self.fused = legged_walk.FusedLeggedWalk(body, controller, self.act, monitor, world=world)
 
     def start(self) -> None:
         """The actuation at t = 0 (a body's energy at the first sample uses it); loads the fused kernel."""
@@ -228,7 +230,7 @@ class Creature:
         self.monitor = LeggedMonitor(case, self.body, self.controller, self.world.terrain) \
             if legged else None
         self.view = LeggedView(self.body, self.controller) if legged else self.body
-        self.stepper = Stepper(case, self.body, self.controller, self.monitor, fused=fused)
+        self.stepper = Stepper(case, self.body, self.controller, self.monitor, fused=fused, world=self.world)
 
     def __getattr__(self, name):
         return getattr(self.body, name)

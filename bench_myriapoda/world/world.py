@@ -24,13 +24,22 @@ the world holds its bed (the terrain) and whether there is water at all.
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
 
 from . import food as _food
 from . import terrain as _terrain
+
+
+# The world as a body's step reads it (issue 42 item 2: each body's step takes the world as a plain argument,
+# ``step(..., world, dt, n_steps)``, handed to it by whoever runs it, never held in the body's own parameters):
+# gravity (3,) [m/s^2] (0, -g, 0); terr_kind, terr the terrain (``terrain_kernels``).  Crosses into a kernel as a
+# plain tuple (``World.step_world``; ``core.kernel_records``) and is named again there with this class.
+StepWorld = namedtuple("StepWorld", "gravity terr_kind terr")
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,6 +64,13 @@ class World:
     def terrain(self) -> tuple[int, np.ndarray]:
         """(kind, f): what the kernels query."""
         return self.terr_kind, self.terr
+
+    @cached_property
+    def step_world(self) -> tuple:
+        """This world as a body's step takes it: a ``StepWorld`` as a plain tuple, built once per world (its terrain
+        vector is this world's own, not a copy).  Gravity is the scenario's, (0, -g, 0) [m/s^2]."""
+        gravity = np.array([0.0, -self.scenario.gravity_m_s2, 0.0])
+        return tuple(StepWorld(gravity=gravity, terr_kind=self.terr_kind, terr=self.terr))
 
     @property
     def terrain_none(self) -> bool:

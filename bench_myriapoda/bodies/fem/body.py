@@ -47,7 +47,10 @@ from .element_quality import ElementQuality
 from .mesh import cell_lumped_mass, cells_per_segment, chain_grid, signed_volumes, tetrahedralize_surface
 from .surfaces import FEM_SURFACE, SURFACE_KINDS
 from .system import DT_PAPER, FEMSystem
-from .myriapod import BodyFEMChain, BlockChainLegs  # the legged chain (make_*)
+from .myriapod import STEP, BodyFEMChain, BlockChainLegs  # the legged chain (make_*)
+
+# The legless FEM body's one step function (``BodySpec.legless_step``): ``advance(..., world, dt, n_steps)``
+LEGLESS_STEP = BK.advance
 
 FROM_CREATURE = -1.0
 MIN_DENSITY_KG_M3 = 1.0e-6  # a given density below it makes node masses denormal and their inverses infinite
@@ -230,17 +233,19 @@ class BodyFEM(NodeSegments):
         self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
+        # g [m/s^2] of the world the step is given (``energy``'s potential; the step reads it from the world)
+        self.gravity_m_s2 = world.scenario.gravity_m_s2
+        self.dt = float(case.dt)
         phys = np.zeros(BK.N_PHYS)
-        phys[BK.GRAVITY] = case.scenario.gravity_m_s2
         phys[BK.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
-        contact_scalars(phys, (BK.DT, BK.R_N, BK.R_T, BK.MAX_SPEED, BK.MAX_PEN), case, case.dt)
+        contact_scalars(phys, (BK.R_N, BK.R_T, BK.MAX_SPEED, BK.MAX_PEN), case)
         self.phys = phys
 
         held = np.zeros(len(nodes), dtype=bool)
         if case.scenario.suspended:
             held[self.head_nodes] = True
         sysm.set_fixed(held)
-        self.solver = sysm.solver(case.dt)
+        self.solver = sysm.solver(self.dt)  # the factor of (M + dt D): the step must be given this dt
         sysm.x[:] = place_points(nodes, case, self.world)
         sysm.v[:] = 0.0
         self.x, self.v = sysm.x, sysm.v
@@ -261,8 +266,8 @@ class BodyFEM(NodeSegments):
             act = self._rest_actuation
         self.phys[BK.MUSCLES] = 1.0 if act.muscles_on else 0.0
         mesh, factor, frames, work = self._packs
-        return BK.advance(self.x, self.v, mesh, act.muscle, factor, frames, self.fric_model, self.fric, self.terr_kind,
-                          self.terr, self.phys, n_steps, work, self._act, self.acc)
+        return LEGLESS_STEP(self.x, self.v, mesh, act.muscle, factor, frames, self.fric_model, self.fric, self.phys,
+                            work, self._act, self.acc, self.world.step_world, self.dt, n_steps)
 
     @cached_property
     def _packs(self) -> tuple:
@@ -329,7 +334,7 @@ class BodyFEM(NodeSegments):
     def energy(self, t: float) -> tuple[float, float, float]:
         """(kinetic, elastic, gravitational) [J]; elastic against the current active rest shape."""
         s = self.system
-        ke, pg = BK.kinetic_and_gravity(self.x, self.v, s.mass, self.phys[BK.GRAVITY])
+        ke, pg = BK.kinetic_and_gravity(self.x, self.v, s.mass, self.gravity_m_s2)
         el = FK.elastic_energy(self.x, s.tets, s.Dm_inv_eff, s.vol, s.mu, s.lam)
         return ke, el, pg
 
@@ -449,9 +454,9 @@ BACKEND = BodySpec(
     # its kinds of scene surface (surfaces.py)
     surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the FEM method's own systems (analytic_systems.py)
-    # the legged chain's pack, whose registered functions are its legged operations (bodies.legged_chunk); no
-    # ``step``: this spec builds two body models (a legless one and the legged chain, whose module names its STEP)
-    legged_pack=BlockChainLegs,
+    # its two body models' steps, the legged chain's and the legless body's (core.specs.BodySpec), and the legged
+    # chain's pack, whose registered functions are its legged operations (bodies.legged_chunk)
+    step=STEP, legless_step=LEGLESS_STEP, legged_pack=BlockChainLegs,
     probes=BodyProbes(
         rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="mu V^(2/3)",
         bar_under_own_weight=AS.bar_under_own_weight, cantilever_tip=AS.cantilever_tip,

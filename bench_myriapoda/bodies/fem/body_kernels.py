@@ -24,14 +24,16 @@ from collections import namedtuple
 from numba import njit
 
 from ...world.terrain_kernels import distance_at_least, flat_ground
+from ...world.world import StepWorld
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, spine_between
 from ..step_status import ACC_CONTACT_SUM, ACC_STEPS, NONFINITE, OK, RUNAWAY_SPEED
 from .kernels import COEF_DM_INV, COEF_LAM, COEF_TWO_MU, LANES, elastic_forces_gathered, semi_implicit_velocity
 
-# scalar parameter vector layout (``phys``)
-GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(9)
-N_PHYS = 10
+# scalar parameter vector layout (``phys``): the body's own constants.  Gravity and the time step are not here: the
+# world (``world.world.StepWorld``) and dt are plain arguments of the step (``advance``).
+RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, MUSCLES = range(7)
+N_PHYS = 8
 MIN_STRETCH = 0.1  # as in the lattice: a fibre never shortens below 10 % of its rest length
 
 
@@ -94,9 +96,11 @@ BodyWork = namedtuple("BodyWork", "Dm_inv_eff coef q_ws F_work H_work inc_ptr in
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, body_mesh, act_buf, body_factor, node_frames, fric_model, fric, terr_kind, terr, phys, n_steps,
-            body_work, act, acc):
-    """Advance the FEM creature ``n_steps`` steps; return (steps done, status).
+def advance(x, v, body_mesh, act_buf, body_factor, node_frames, fric_model, fric, phys, body_work, act, acc, world,
+            dt, n_steps):
+    """Advance the FEM creature ``n_steps`` steps of dt [s] in world (the run's ``world.world.StepWorld`` as a plain
+    tuple: gravity, terrain); return (steps done, status).  The legless FEM body's one step function
+    (``BodySpec.legless_step``); dt must be the one the factor of (M + dt D) was built for (the body's ``dt``).
 
     mesh = ``BodyMesh`` (mass, tets, Dm_inv, vol, mu, lam, tet_seg, tet_y, tet_z), factor = ``BodyFactor`` (perm,
     sky_first, sky_ptr, sky_L, fp_ptr, fp_col, fp_val), frames = ``NodeFrames`` (node_seg, node_seg_b, node_w,
@@ -127,8 +131,9 @@ def advance(x, v, body_mesh, act_buf, body_factor, node_frames, fric_model, fric
     Dm_inv_eff, coef, q_ws, F_work, H_work = work.Dm_inv_eff, work.coef, work.q_ws, work.F_work, work.H_work
     inc_ptr, inc_off, force, b_work = work.inc_ptr, work.inc_off, work.force, work.b_work
     centers, spine = work.centers, work.spine
-    g = phys[GRAVITY]
-    dt = phys[DT]
+    W = StepWorld(*world)
+    terr_kind, terr = W.terr_kind, W.terr
+    g = -W.gravity[1]  # the world's gravity is (0, -g, 0) [m/s^2]
     r_n = phys[R_N]
     r_t = phys[R_T]
     muscles = phys[MUSCLES] != 0.0

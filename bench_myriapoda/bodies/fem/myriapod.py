@@ -71,6 +71,7 @@ from numba import njit
 
 from ..case_scalars import contact_scalars
 from ...world.terrain_kernels import distance_at_least, flat_ground
+from ...world.world import StepWorld
 from .. import step_status as S
 from ..contact_kernels import advance_point
 from ..friction_kernels import CONTACT_DISTANCE, friction_params, spine_between
@@ -89,9 +90,9 @@ from .system import FEMSystem
 from .pushed_blocks import block_inertia, push_blocks, pushed_blocks
 from ..dynamic_stance import stance_arrays, stance_params, stance_statistics
 
-# Scalar parameters (``phys``).
-DT, R_N, R_TAN, MAX_SPEED, MAX_PEN, K_SUPPORT = range(6)
-N_PHYS = 6
+# Scalar parameters (``phys``).  No time step: dt is the step's argument (``advance_chain``).
+R_N, R_TAN, MAX_SPEED, MAX_PEN, K_SUPPORT = range(5)
+N_PHYS = 5
 
 # ``advance_chain``'s records (namedtuples: numba compiles each as a struct of its fields, read by name).
 # The chain's arrays: x, v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr, inc_off, coef,
@@ -104,9 +105,9 @@ N_PHYS = 6
 BlockChain = namedtuple("BlockChain", "x v mass tets inc_ptr inc_off coef q_ws F_work H_work perm sky_first sky_ptr "
                                       "sky_L fp_ptr fp_col fp_val block_nodes node_spine att_nodes att_block "
                                       "att_target support f_work b_work cent spine")
-# The world as the chain sees it: gravity (3,) [m/s^2]; terr_kind, terr (``terrain_kernels``); fric_model, fric
-# (``friction_kernels``); phys (N_PHYS,) the scalars above.
-BlockChainWorld = namedtuple("BlockChainWorld", "gravity terr_kind terr fric_model fric phys")
+# The chain's constant contact parameters: fric_model, fric (``friction_kernels``); phys (N_PHYS,) the scalars above.
+# The world (gravity, terrain: ``world.world.StepWorld``) and dt are the step's plain arguments, not here.
+BlockChainParams = namedtuple("BlockChainParams", "fric_model fric phys")
 
 
 def chain_mesh(n_blocks, block_length, link_length, height, width, cells, tets_per_cell=6):
@@ -176,11 +177,12 @@ def block_poses(x, block_nodes, rest_offsets, c, A, R):
 
 
 @njit(cache=True, error_model="numpy")
-def advance_chain(chain, world, acc, n_steps):
-    """Advance the FEM chain ``n_steps`` steps (module docstring); return (steps, status).
+def advance_chain(chain, params, acc, world, dt, n_steps):
+    """Advance the FEM chain ``n_steps`` steps of dt [s] in world (module docstring); return (steps, status).
 
-    chain: a ``BlockChain`` B, world: a ``BlockChainWorld`` W (the fields above them), as plain tuples
-    (``core.kernel_records``: the call's cost), named here.
+    chain: a ``BlockChain`` B, params: a ``BlockChainParams`` M (the fields above them), world: the run's
+    ``world.world.StepWorld`` W (gravity, terrain), as plain tuples (``core.kernel_records``: the call's cost),
+    named here.  dt must be the one B's factor of (M + dt D) was built for (the body's ``dt``).
     B.x, B.v (n_nodes, 3) [m], [m/s] UPDATED; mass (n_nodes,) [kg]; tets, inc_ptr,
     inc_off, coef, q_ws (UPDATED), F_work, H_work as
     ``fem.kernels.elastic_forces_gathered``;
@@ -190,21 +192,20 @@ def advance_chain(chain, world, acc, n_steps):
     att_nodes (n_att,) leg-attachment node ids, att_block (n_att,) their
     block, att_target (n_att, 3) [m] their target positions at the end of the
     step (used for supported blocks only); support (n_blocks,) bool.  gravity (3,) [m/s^2];
-    terr_kind, terr; fric_model, fric; phys (N_PHYS,): dt [s], r_n, r_t,
+    terr_kind, terr; fric_model, fric; phys (N_PHYS,): r_n, r_t,
     limits [m/s], [m], k_p [N/m].  Scratch: f_work (n_nodes, 3), b_work
     (n_nodes, 3), cent, spine (n_blocks, 3).  acc (S.N_ACC,) ACCUMULATES the
     shared statistics (contact fraction sum, steps, deepest penetration).
     """
-    B, W = BlockChain(*chain), BlockChainWorld(*world)
+    B, M, W = BlockChain(*chain), BlockChainParams(*params), StepWorld(*world)
     x, v, mass, tets, inc_ptr, inc_off, coef, q_ws = B.x, B.v, B.mass, B.tets, B.inc_ptr, B.inc_off, B.coef, B.q_ws
     F_work, H_work, perm, sky_first, sky_ptr, sky_L = B.F_work, B.H_work, B.perm, B.sky_first, B.sky_ptr, B.sky_L
     fp_ptr, fp_col, fp_val, block_nodes, node_spine = B.fp_ptr, B.fp_col, B.fp_val, B.block_nodes, B.node_spine
     att_nodes, att_block, att_target, support = B.att_nodes, B.att_block, B.att_target, B.support
     f_work, b_work, cent, spine = B.f_work, B.b_work, B.cent, B.spine
-    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, M.fric_model, M.fric, M.phys
     n_nodes = x.shape[0]
     n_blocks = block_nodes.shape[0]
-    dt = phys[DT]
     r_n = phys[R_N]
     r_t = phys[R_TAN]
     vmax2 = phys[MAX_SPEED] * phys[MAX_SPEED]
@@ -299,8 +300,8 @@ def carry_blocks(x, att_nodes, att_block, held, kinematic, c, R, c_T, R_T, att_t
             att_target[e, i] = c_T[b, i] + ((R_T[b, i, 0] * r0 + R_T[b, i, 2] * r2) + R_T[b, i, 1] * r1)
 
 
-# the fused legged walk's pack (``legged_chunk``): blocks a ``Blocks``, chain ``advance_chain``'s arguments without
-# n_steps (a ``BlockChain``, a ``BlockChainWorld``, acc), each as a plain tuple (``core.kernel_records``), named
+# the fused legged walk's pack (``legged_chunk``): blocks a ``Blocks``, chain ``advance_chain``'s body arguments
+# (a ``BlockChain``, a ``BlockChainParams``, acc; world, dt and n_steps are the fused walk's), each as a plain tuple (``core.kernel_records``), named
 # where read; push the dynamic stance's ``pushed_blocks.PushedBlocks``
 BlockChainLegs = namedtuple("BlockChainLegs", "blocks chain push")
 # the blocks as the legs carry them: x (n_nodes, 3) [m]; block_nodes (n, k); rest_offsets (n, k, 3) [m]; att_nodes,
@@ -350,7 +351,7 @@ def _carry_blocks_feet(P, kinematic, c_T, R_T, states, tips):
 # The chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
 # (``legged_chunk.chain_step``; not inlined, as before: the fused chunk calls the chain's compiled kernel)
 STEP = advance_chain
-STEP_CHAIN_ITEMS = 3  # STEP's arguments before n_steps: chain, world, acc (the pack's chain)
+STEP_CHAIN_ITEMS = 3  # STEP's body arguments: chain, params, acc (the pack's chain); then world, dt, n_steps
 register(BlockChainLegs, _block_poses, _carry_blocks, _sample_blocks, chain_step(STEP, STEP_CHAIN_ITEMS), _carry_blocks_feet)
 
 
@@ -412,7 +413,7 @@ class BodyFEMChain(LeggedPackOps, LeggedSegments):
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
         phys = np.zeros(N_PHYS)
-        contact_scalars(phys, (DT, R_N, R_TAN, MAX_SPEED, MAX_PEN), case, case.dt)
+        contact_scalars(phys, (R_N, R_TAN, MAX_SPEED, MAX_PEN), case)
         phys[K_SUPPORT] = cfg.support_stiffness_n_m
         self.phys = phys
         fem.x[:] = place_points(nodes, case, self.world)
@@ -449,11 +450,11 @@ class BodyFEMChain(LeggedPackOps, LeggedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """``n_steps`` steps in one kernel call; return (steps done, status code).  t0 unused; the links
         have no muscles (supported blocks are pulled to their targets, ``apply_support``)."""
-        return STEP(*self._chain_args, self.acc, int(n_steps))
+        return STEP(*self._chain_args, self.acc, self.world.step_world, self.dt, int(n_steps))
 
     @cached_property
     def _chain_args(self) -> tuple:
-        """``advance_chain``'s records (``BlockChain``: the chain's arrays, ``BlockChainWorld``) as plain tuples
+        """``advance_chain``'s records (``BlockChain``: the chain's arrays, ``BlockChainParams``) as plain tuples
         (``core.kernel_records``: the call's cost), built once by field name: they refer to the body's own arrays,
         which are changed in place only."""
         f, s = self.fem, self.solver
@@ -464,8 +465,7 @@ class BodyFEMChain(LeggedPackOps, LeggedSegments):
                            att_nodes=self.att_nodes, att_block=self.att_block, att_target=self.att_target,
                            support=self.support, f_work=self._f_work, b_work=self._b_work, cent=self._cent,
                            spine=self._spine)
-        return plain(chain), plain(BlockChainWorld(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr,
-                                                   fric_model=self.fric_model, fric=self.fric, phys=self.phys))
+        return plain(chain), plain(BlockChainParams(fric_model=self.fric_model, fric=self.fric, phys=self.phys))
 
     def legged_pack(self) -> "BlockChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the blocks and the step's arguments."""

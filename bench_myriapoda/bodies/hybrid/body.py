@@ -101,7 +101,8 @@ from . import kernels as K
 # The hybrid's one step function (``BodySpec.step``): ``advance`` calls it with a chunk's n steps, the fused legged
 # walk with one (``legged_chunk.chain_step``)
 STEP = K.advance
-STEP_CHAIN_ITEMS = 6  # STEP's arguments before n_steps: links, att, boxes, world, coupling, acc (the pack's chain)
+STEP_CHAIN_ITEMS = 6  # STEP's body arguments: links, att, boxes, params, coupling, acc (the pack's chain); then world,
+#                       dt, n_steps, given by whoever runs it
 DERIVED = -1.0  # default of the keys derived from the creature, the friction or the rigid size (HybridConfig)
 CONFIG_SOURCE = "[bodies.hybrid]"
 
@@ -315,7 +316,7 @@ class BodyHybrid(LeggedPackOps, PushedBoxes, SupportedSegments):
                                             else cfg.rigid_friction_mu),
                                   restitution=cfg.rigid_restitution)
         self.contact = contact
-        phys = chain_phys(case, self.dt, contact)
+        phys = chain_phys(case, contact)
         # a link of length l in a pitch P takes the fibre strain of the whole pitch: gain P / l
         phys[K.MUSCLE_GAIN] = lay.pitch / lay.link_length
         # Miller's volume conservation (gait.volume_conserving) thickens a shortening section.  Here the
@@ -364,15 +365,15 @@ class BodyHybrid(LeggedPackOps, PushedBoxes, SupportedSegments):
         else:
             self.phys[K.MUSCLES_ON] = 1.0
             buf = act.muscle
-        return STEP(*self._chain_args(buf), self.acc, int(n_steps))
+        return STEP(*self._chain_args(buf), self.acc, self.world.step_world, self.dt, int(n_steps))
 
     def _chain_args(self, muscle_buf: np.ndarray) -> tuple:
         """``hybrid.kernels.advance``'s records (``kernels.FEMLinks``, ``rigid_chain``'s ``Attachment``, ``Boxes``,
-        ``World``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), with muscle_buf (rows,
+        ``ChainParams``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), with muscle_buf (rows,
         n_links, 3) the links' active strain: ``_packs`` with this call's muscle buffer put in."""
-        links, att, boxes, world, coupling = self._packs
+        links, att, boxes, params, coupling = self._packs
         muscle = links[_MUSCLE][:-1] + (muscle_buf,)  # ``ActiveLinks``' last field, act_buf
-        return links[:_MUSCLE] + (muscle,) + links[_MUSCLE + 1:], att, boxes, world, coupling
+        return links[:_MUSCLE] + (muscle,) + links[_MUSCLE + 1:], att, boxes, params, coupling
 
     @cached_property
     def _packs(self) -> tuple:
@@ -385,10 +386,9 @@ class BodyHybrid(LeggedPackOps, PushedBoxes, SupportedSegments):
                            inc_off=fem.inc_off, perm=s.perm, sky_first=s.sky_first, sky_ptr=s.sky_ptr, sky_L=s.sky_L,
                            fp_ptr=s.fp_ptr, fp_col=s.fp_col, fp_val=s.fp_val, pf_ptr=s.pf_ptr, pf_col=s.pf_col,
                            pf_val=s.pf_val, node_link=self.node_link, f_work=self._f_work, b_work=self._b_work)
-        world = K.World(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr, fric_model=self.fric_model,
-                        fric=self.fric, phys=self.phys)
+        params = K.ChainParams(fric_model=self.fric_model, fric=self.fric, phys=self.phys)
         return (plain(links), plain(K.Attachment(fixed=s.fixed, att_body=self.att_body, att_local=self.att_local)),
-                plain(boxes_of(self.rigid)), plain(world), plain(coupling_of(self.scratch)))
+                plain(boxes_of(self.rigid)), plain(params), plain(coupling_of(self.scratch)))
 
     def legged_pack(self) -> "HybridLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments
@@ -399,7 +399,7 @@ class BodyHybrid(LeggedPackOps, PushedBoxes, SupportedSegments):
     def _carried(self):
         """The boxes' ``carried_boxes.CarriedBoxes`` (legged_pack, push_support)."""
         return carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
-                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[K.DT], self.stance)
+                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.dt, self.stance)
 
     @cached_property
     def _no_muscle(self) -> np.ndarray:
@@ -633,8 +633,8 @@ assert K.ActiveLinks._fields[-1] == "act_buf"
 HybridDynamicState = namedtuple("HybridDynamicState", "x v q_ws rigid_c rigid_q rigid_v rigid_w impulse_cache "
                                 "kinematic acc dm_inv_eff coef")
 
-# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain ``STEP``'s arguments
-# without n_steps; the registered functions below are the hybrid's legged operations on both paths
+# the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain ``STEP``'s body
+# arguments (without world, dt and n_steps, which the fused walk gives); the registered functions below are the hybrid's legged operations on both paths
 HybridLegs = namedtuple("HybridLegs", "boxes chain")
 
 

@@ -62,6 +62,7 @@ import numpy as np
 from numba import njit
 
 from ...world.terrain_kernels import clearance, clearance_cell, clearance_view, distance_at_least
+from ...world.world import StepWorld
 from ..contact_kernels import advance_point
 from ..fem.kernels import element_forces, gather_node_force, semi_implicit_velocity
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -70,9 +71,10 @@ from ..fem.body_kernels import active_coefficients
 # the phys layout, the statistics and the rigid segments' step are the rigid segment chain's (``bodies.rigid_chain``,
 # shared with the legged mass-spring body), this kernel's link element being FEM; imported here as its own
 from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, ACC_SLOW_TETS, BOUNCE_THRESHOLD,  # noqa: F401
-                           DT, MAX_PEN, MAX_SPEED, MUSCLE_GAIN, MUSCLES_ON, N_ACC, N_CORNERS, N_PHYS, POS_BETA,
+                           MAX_PEN, MAX_SPEED, MUSCLE_GAIN, MUSCLES_ON, N_ACC, N_CORNERS, N_PHYS, POS_BETA,
                            POS_ITERATIONS, R_N, R_T, RIGID_ANISO, RIGID_MU, RIGID_RESTITUTION, SLOP, VEL_ITERATIONS,
-                           VEL_TOLERANCE, VOLUME, Attachment, Boxes, Coupling, World, advance_chain, chain_scalars,
+                           VEL_TOLERANCE, VOLUME, Attachment, Boxes, ChainParams, Coupling, advance_chain,
+                           chain_scalars,
                            follow_boxes,
                            link_spines, place_attached_nodes, place_on_box, register_link, rigid_segments_step)
 
@@ -95,17 +97,17 @@ FEMLinks = namedtuple("FEMLinks", "x v n_free tets Dm_inv coef muscle mass q_ws 
 ActiveLinks = namedtuple("ActiveLinks", "Dm_inv_rest vol mu lam tet_link tet_y tet_z act_buf")
 
 
-def _fem_links_step(L, A, B, W, C, acc, step, flat, ground):
+def _fem_links_step(L, A, B, M, W, C, acc, dt, step, flat, ground):
     """``rigid_chain.link_step`` of the FEM links: step 1 of the module docstring."""
     x, v, n_free, tets, coef, mass, q_ws = L.x, L.v, L.n_free, L.tets, L.coef, L.mass, L.q_ws
     inc_ptr, inc_off, perm, pf_ptr, pf_col, pf_val = L.inc_ptr, L.inc_off, L.perm, L.pf_ptr, L.pf_col, L.pf_val
     node_link, f_work, b_work, F_work, H_work = L.node_link, L.f_work, L.b_work, L.F_work, L.H_work
     fixed, att_body = A.fixed, A.att_body
     kinematic = B.kinematic
-    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, M.fric_model, M.fric, M.phys
     f_att, x_att, x_pred, spine = C.f_att, C.x_att, C.x_pred, C.spine
     n_fixed = fixed.shape[0]
-    dt, r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
+    r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
     vmax2 = vmax * vmax
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     status = OK
@@ -222,13 +224,14 @@ register_link(FEMLinks, _fem_links_step)
 # inline: the fused legged walk's step is this function with n = 1 (``legged_chunk.chain_step``), inlined into its
 # chunk, so no kernel of its own sits between the chain and the chunk on a cold start
 @njit(cache=True, error_model="numpy", inline="always")
-def advance(links, att, boxes, world, coupling, acc, n_steps):
-    """The hybrid's one step function (its ``BodySpec.step``): ``rigid_chain.advance_chain`` of the FEM-linked chain,
-    from Python (``BodyHybrid.advance``) and in the fused legged walk: the records ``FEMLinks``, ``Attachment``,
-    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; acc (N_ACC,)
-    ACCUMULATES; returns (steps, status)."""
-    return advance_chain(FEMLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling), acc,
-                         n_steps)
+def advance(links, att, boxes, params, coupling, acc, world, dt, n_steps):
+    """The hybrid's one step function (its ``BodySpec.step``): n_steps of dt [s] of ``rigid_chain.advance_chain`` of
+    the FEM-linked chain in world, from Python (``BodyHybrid.advance``) and in the fused legged walk: the body's
+    records ``FEMLinks``, ``Attachment``, ``Boxes``, ``ChainParams`` and ``Coupling`` and the run's world
+    (``world.world.StepWorld``) as plain tuples (``core.kernel_records``), named here; acc (N_ACC,) ACCUMULATES;
+    returns (steps, status).  dt must be the one the links' factor of (M + dt D) was built for (the body's)."""
+    return advance_chain(FEMLinks(*links), Attachment(*att), Boxes(*boxes), ChainParams(*params),
+                         Coupling(*coupling), acc, StepWorld(*world), dt, n_steps)
 
 
 @njit(cache=True, error_model="numpy", inline="always")

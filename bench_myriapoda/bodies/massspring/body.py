@@ -33,7 +33,10 @@ from . import analytic_systems as AS
 from . import benchmarks
 from . import kernels as K
 from .lattice import CUBE_FAMILIES, build_lattice, face_stride, spring_families
-from .myriapod import BodyRigidSpringChain, SpringChainLegs  # the legged chain (make_*)
+from .myriapod import STEP, BodyRigidSpringChain, SpringChainLegs  # the legged chain (make_*)
+
+# The legless lattice's one step function (``BodySpec.legless_step``): ``advance(..., world, dt, n_steps)``
+LEGLESS_STEP = K.advance
 
 
 # Miller 1988 Sec. 5: spring constant k and damping D per unit mass, and substeps per frame
@@ -127,10 +130,12 @@ class BodyMassSpring(NodeSegments):
         self.world = world
         self.terr_kind, self.terr = self.world.terrain
         self.fric_model, self.fric = friction_params(case.friction)
+        # g [m/s^2] of the world the step is given (``energy``'s potential; the step reads it from the world)
+        self.gravity_m_s2 = world.scenario.gravity_m_s2
+        self.dt = float(case.dt)
         phys = np.zeros(K.N_PHYS)
-        phys[K.GRAVITY] = case.scenario.gravity_m_s2
         phys[K.VOLUME] = 1.0 if case.gait.volume_conserving else 0.0
-        contact_scalars(phys, (K.DT, K.R_N, K.R_T, K.MAX_SPEED, K.MAX_PEN), case, case.dt)
+        contact_scalars(phys, (K.R_N, K.R_T, K.MAX_SPEED, K.MAX_PEN), case)
         phys[K.INTEGRATOR] = K.EULER if cfg.integrator == "euler" else K.SYMPLECTIC
         self.phys = phys
         self.x = place_points(lat.rest_nodes, case, self.world)
@@ -166,10 +171,10 @@ class BodyMassSpring(NodeSegments):
         Without ``act`` the muscles are at rest (a passive body)."""
         if act is None:
             act = self._rest_actuation
-        return K.advance(self.x, self.v, self.inv_mass, self.families.params, act.muscle,
-                         self.fric_model, self.fric, self.terr_kind, self.terr, self.phys, n_steps,
-                         (self._xc, self._vc, self._fc, self._st, self._fs, self._face_scale, self._spine),
-                         self._act, self.acc)
+        return LEGLESS_STEP(self.x, self.v, self.inv_mass, self.families.params, act.muscle, self.fric_model,
+                            self.fric, self.phys,
+                            (self._xc, self._vc, self._fc, self._st, self._fs, self._face_scale, self._spine),
+                            self._act, self.acc, self.world.step_world, self.dt, n_steps)
 
     def compile(self) -> None:
         """Trigger (or load from cache) the JIT compilation without changing the state."""
@@ -212,7 +217,7 @@ class BodyMassSpring(NodeSegments):
         K.lattice_rest_lengths(self._act, self.phys[K.VOLUME] != 0.0, lat.kind, lat.seg, lat.corner_a,
                                lat.corner_b, lat.L0, lat.Lc, self._face_scale, self._stretch, self._rest)
         return K.lattice_energy(self.x, self.v, self.mass, lat.springs, self.stiffness, self._rest,
-                                self.phys[K.GRAVITY])
+                                self.gravity_m_s2)
 
     def extra_metrics(self) -> dict[str, float]:
         """Backend-specific metrics (none beyond the common ones for the lattice)."""
@@ -301,9 +306,9 @@ BACKEND = BodySpec(
     surface_kinds=SURFACE_KINDS,
     # what validation's analytic checks measure of the lattice (analytic_systems.py); body.damping=0 takes its
     # springs' damping off for the undamped stable-dt limit
-    # the legged chain's pack, whose registered functions are its legged operations (bodies.legged_chunk); no
-    # ``step``: this spec builds two body models (a legless one and the legged chain, whose module names its STEP)
-    legged_pack=SpringChainLegs,
+    # its two body models' steps, the legged chain's and the legless lattice's (core.specs.BodySpec), and the legged
+    # chain's pack, whose registered functions are its legged operations (bodies.legged_chunk)
+    step=STEP, legless_step=LEGLESS_STEP, legged_pack=SpringChainLegs,
     probes=BodyProbes(rigid_motion_residual=AS.rigid_motion_residual, rigid_motion_scale="k L",
                       omega_max=AS.omega_max, undamped=("body.damping=0",),
                       **point_mass_momentum_probes(lambda body: body.mass)))

@@ -66,6 +66,7 @@ from numba.extending import intrinsic
 from numba.np.numpy_support import carray
 
 from ...world.terrain_kernels import H_NOBST, PLANE, SLOPE, signed_distance, surface_normal
+from ...world.world import StepWorld
 from ..contact_kernels import collide_path, contact_friction, reflect_beyond, reflect_velocity
 from ..friction_kernels import CONTACT_DISTANCE, COULOMB, MU_B, MU_F, MU_T, MUS_B, MUS_F, MUS_T, STICK
 from ..step_status import (ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, DEEP_PENETRATION, NONFINITE, OK,  # noqa: F401
@@ -75,9 +76,10 @@ from .column_loop import family_springs_chunk, node_sums_chunk
 from .lattice import (AXIAL, CROSS, CUBE_FAMILIES, CUBE_PLAN, FAM_A, FAM_B, FAM_CA, FAM_CB, FAM_KIND, FAM_SHIFT,
                       PAR_D, PAR_K, PAR_L0, PAR_LC, SIDE_FACES)
 
-# scalar parameter vector layout (``phys``)
-GRAVITY, DT, RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(9)
-N_PHYS = 10
+# scalar parameter vector layout (``phys``): the body's own constants.  Gravity and the time step are not here: the
+# world (``world.world.StepWorld``) and dt are plain arguments of the step (``advance``).
+RAMP_S, VOLUME, R_N, R_T, MAX_SPEED, MAX_PEN, INTEGRATOR = range(7)
+N_PHYS = 8
 SYMPLECTIC, EULER = 0, 1
 
 
@@ -521,25 +523,26 @@ def coulomb_friction_batch(p, nx, ny, nz, vx, vy, vz, sx, sy, sz, jn, count):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _node_scalars(phys, fric):
+def _node_scalars(phys, fric, g_dt):
     """The node blocks' step constants: (gravity [m/s^2], dt [s], r_n, r_t [-], Euler integrator (bool), contact
-    distance [m], max penetration [m], max speed^2 [m^2/s^2]) from phys and fric."""
-    return (phys[GRAVITY], phys[DT], phys[R_N], phys[R_T], phys[INTEGRATOR] == EULER, fric[CONTACT_DISTANCE],
+    distance [m], max penetration [m], max speed^2 [m^2/s^2]) from phys, fric and g_dt = (g [m/s^2], dt [s]), the
+    step's world and time step (``advance``'s arguments)."""
+    return (g_dt[0], g_dt[1], phys[R_N], phys[R_T], phys[INTEGRATOR] == EULER, fric[CONTACT_DISTANCE],
             phys[MAX_PEN], phys[MAX_SPEED] * phys[MAX_SPEED])
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric, terr_kind, terr, phys, acc):
+def _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric, terr_kind, terr, phys, acc, g_dt):
     """One step of every free node (any friction model and terrain): ``advance``'s node block.
 
     Velocity update from the forces fc, contact friction (under ``stick`` only for the corners of
     segments in ``seg_held``), position update, Miller's collision and the blow-up checks, node by
-    node.  xc, vc, fc (3, 4, >= n_faces); inv_mass (n_nodes,).  Returns (nodes within the contact
-    distance, status).
+    node.  xc, vc, fc (3, 4, >= n_faces); inv_mass (n_nodes,); g_dt (g [m/s^2], dt [s]).  Returns (nodes within
+    the contact distance, status).
     """
     n_faces = inv_mass.shape[0] // 4
     n_seg = n_faces - 1
-    g, dt, r_n, r_t, euler, contact_dist, _, max_speed2 = _node_scalars(phys, fric)
+    g, dt, r_n, r_t, euler, contact_dist, _, max_speed2 = _node_scalars(phys, fric, g_dt)
     n_contact = 0
     status = OK
     for f in range(n_faces):
@@ -684,14 +687,14 @@ def _flat_ground(terr_kind, terr):
 
 
 @njit(cache=True, error_model="numpy")
-def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground, phys, acc):
+def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground, phys, acc, g_dt):
     """``_nodes_coulomb_flat`` on flat arrays: xf, vf (axis stride xd), ff (axis stride fd), im (4 stride,),
     wf the work array taken flat (row length wl; the spine vectors of the faces already in rows B_SX, B_SY,
     B_SZ), cd (4 stride,) int64; ground: ``_flat_ground``'s constants of the plane or slope, computed once per
-    ``advance`` call (a sine, a cosine and the normal's call per step were a fixed cost of the step).
-    Returns (nodes within the contact distance, status)."""
+    ``advance`` call (a sine, a cosine and the normal's call per step were a fixed cost of the step); g_dt
+    (g [m/s^2], dt [s]).  Returns (nodes within the contact distance, status)."""
     n_flat = 4 * stride
-    g, dt, r_n, r_t, euler, contact_dist, max_pen, max_speed2 = _node_scalars(phys, fric)
+    g, dt, r_n, r_t, euler, contact_dist, max_pen, max_speed2 = _node_scalars(phys, fric, g_dt)
     plane, h, ms, cs, nx, ny, nz = ground
     xd2, fd2 = xd + xd, fd + fd
     ovx, ovy, ovz, ophi = np.uint64(W_VX) * wl, np.uint64(W_VY) * wl, np.uint64(W_VZ) * wl, np.uint64(W_PHI) * wl
@@ -752,7 +755,7 @@ def _node_rows(xf, vf, ff, im, wf, cd, n_faces, stride, xd, fd, wl, fric, ground
 
 
 @njit(cache=True, error_model="numpy")
-def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, code):
+def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc, work, code, g_dt):
     """One step of every free node under COULOMB friction on a plane or slope without obstacles.
 
     ``_nodes_general``'s arithmetic, operation by operation, in three passes that vectorise along
@@ -768,7 +771,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     The step's status is that of the last node in node order with a problem, as in the node loop.
     xc, vc, fc (3, 4, stride) with stride >= n_faces (padding columns are held nodes: imc 0);
     imc (4, stride): inverse masses [1/kg], corner-major (0: held in place); spine (n_faces, 3);
-    work (N_WORK, >= 4 stride); code (4, stride) int64 scratch.
+    work (N_WORK, >= 4 stride); code (4, stride) int64 scratch; g_dt (g [m/s^2], dt [s]).
     Returns (nodes within the contact distance, status).
     """
     n_faces = spine.shape[0]
@@ -779,7 +782,7 @@ def _nodes_coulomb_flat(xc, vc, fc, imc, spine, fric, terr_kind, terr, phys, acc
     return _node_rows(xc.reshape(xc.size), vc.reshape(vc.size), fc.reshape(fc.size), imc.reshape(imc.size),
                       work.reshape(work.size), code.reshape(code.size), n_faces, stride,
                       np.uint64(xc.shape[1] * stride), np.uint64(fc.shape[1] * stride), np.uint64(wl),
-                      fric, _flat_ground(terr_kind, terr), phys, acc)
+                      fric, _flat_ground(terr_kind, terr), phys, acc, g_dt)
 
 
 # ``advance``'s work arrays, packed (numba compiles a namedtuple of arrays as a struct of them).  The body hands
@@ -789,8 +792,10 @@ LatticeWork = namedtuple("LatticeWork", "xc vc fc st fs face_scale spine")
 
 
 @njit(cache=True, error_model="numpy")
-def advance(x, v, inv_mass, fparams, act_buf, fric_model, fric, terr_kind, terr, phys, n_steps, work, act, acc):
-    """Advance the lattice ``n_steps`` steps; return (steps done, status).
+def advance(x, v, inv_mass, fparams, act_buf, fric_model, fric, phys, work, act, acc, world, dt, n_steps):
+    """Advance the lattice ``n_steps`` steps of dt [s] in world (the run's ``world.world.StepWorld`` as a plain
+    tuple: gravity, terrain); return (steps done, status).  The legless lattice's one step function
+    (``BodySpec.legless_step``).
 
     State x, v: (n_nodes, 3) [m], [m/s] are updated in place.  fparams: the lattice's
     ``SpringFamilies.params`` (4, 18, stride), its families those of ``lattice.CUBE_FAMILIES``
@@ -804,6 +809,9 @@ def advance(x, v, inv_mass, fparams, act_buf, fric_model, fric, terr_kind, terr,
     A step that ends in a blow-up stops the loop and returns its status code.
     """
     xc, vc, fc, st, fs, face_scale, spine = work
+    W = StepWorld(*world)
+    terr_kind, terr = W.terr_kind, W.terr
+    g_dt = (-W.gravity[1], dt)  # g [m/s^2] (the world's gravity is (0, -g, 0)) and the time step
     n_nodes = x.shape[0]
     n_faces = n_nodes // 4
     stride = xc.shape[2]
@@ -861,10 +869,10 @@ def advance(x, v, inv_mass, fparams, act_buf, fric_model, fric, terr_kind, terr,
         if batched:
             spine_rows(xc, n_faces, work, osx, wlu)
             n_contact, status = _node_rows(xf, vf, ff, imc, work, code, n_faces, stride, xd, fd, wlu, fric, ground,
-                                           phys, acc)
+                                           phys, acc, g_dt)
         else:
             n_contact, status = _nodes_general(xc, vc, fc, inv_mass, spine, stick, seg_held, fric_model, fric,
-                                               terr_kind, terr, phys, acc)
+                                               terr_kind, terr, phys, acc, g_dt)
         acc[ACC_CONTACT_SUM] += n_contact / n_nodes
         acc[ACC_STEPS] += 1.0
         if status != OK:

@@ -48,7 +48,7 @@ from numba import njit
 from .. import rigid_kernels as rk
 from ..contact_kernels import NOT_CLEAR, advance_point, advance_point_if_clear
 from ..friction_kernels import friction_params
-from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, DT, N_ACC, Attachment, Boxes, Coupling, World,
+from ..rigid_chain import (ACC_RES_COUNT, ACC_RES_MAX, ACC_RES_SUM, N_ACC, Attachment, Boxes, ChainParams, Coupling,
                            advance_chain, boxes_of, chain_phys, chain_scalars, coupling_of, link_spines,
                            place_attached_nodes, register_link)
 from ..carried_boxes import (PushedBoxes, box_chain_centers, box_poses, carried_boxes, carry_boxes,
@@ -63,6 +63,7 @@ from .lattice import LATTICE_SURFACE, lattice_surface_faces
 from ..segment_chain import CouplingScratch, LeggedSegments, SegmentChainLayout, chain_sizes
 from ..step_status import ACC_CONTACT_SUM, ACC_MAX_PEN, ACC_STEPS, OK
 from ..step_status import STATUS_TEXT
+from ...world.world import StepWorld
 from .kernels import spring_forces
 from .lattice import build_lattice
 
@@ -138,16 +139,16 @@ def build_chain(lay: SegmentChainLayout, density: float) -> ChainMesh:
 SpringLinks = namedtuple("SpringLinks", "x v n_free mass free node_link springs stiffness damping rest f_work")
 
 
-def _spring_links_step(L, A, B, W, C, acc, step, flat, ground):
+def _spring_links_step(L, A, B, M, W, C, acc, dt, step, flat, ground):
     """``rigid_chain.link_step`` of the spring links: step 1 of the module docstring (spring forces at
     (x^n, v^n); free nodes: v += dt (f/m + g), ground contact, x += dt v)."""
     x, v, n_free, mass, free, node_link, f_work = L.x, L.v, L.n_free, L.mass, L.free, L.node_link, L.f_work
     springs, stiffness, damping, rest = L.springs, L.stiffness, L.damping, L.rest
     fixed = A.fixed
-    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, W.fric_model, W.fric, W.phys
+    gravity, terr_kind, terr, fric_model, fric, phys = W.gravity, W.terr_kind, W.terr, M.fric_model, M.fric, M.phys
     f_att, x_att, x_pred, spine = C.f_att, C.x_att, C.x_pred, C.spine
     n_fixed = fixed.shape[0]
-    dt, r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
+    r_n, r_t, max_pen, vmax, contact_dist = chain_scalars(phys, fric)
     vmax2 = vmax * vmax
     gx, gy, gz = gravity[0], gravity[1], gravity[2]
     status = OK
@@ -191,19 +192,21 @@ register_link(SpringLinks, _spring_links_step)
 # inline: the fused legged walk's step is this function with n = 1 (``legged_chunk.chain_step``), inlined into its
 # chunk, so no kernel of its own sits between the chain and the chunk on a cold start
 @njit(cache=True, error_model="numpy", inline="always")
-def advance_spring_chain(links, att, boxes, world, coupling, acc, n_steps):
-    """The legged chain's one step function: ``rigid_chain.advance_chain`` of the spring-linked chain, from Python
-    (``BodyRigidSpringChain.advance``) and in the fused legged walk: the records ``SpringLinks``, ``Attachment``,
-    ``Boxes``, ``World`` and ``Coupling`` as plain tuples (``core.kernel_records``), named here; acc (N_ACC,)
-    ACCUMULATES; returns (steps, status)."""
-    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), World(*world), Coupling(*coupling),
-                         acc, n_steps)
+def advance_spring_chain(links, att, boxes, params, coupling, acc, world, dt, n_steps):
+    """The legged chain's one step function: n_steps of dt [s] of ``rigid_chain.advance_chain`` of the spring-linked
+    chain in world, from Python (``BodyRigidSpringChain.advance``) and in the fused legged walk: the body's records
+    ``SpringLinks``, ``Attachment``, ``Boxes``, ``ChainParams`` and ``Coupling`` and the run's world
+    (``world.world.StepWorld``) as plain tuples (``core.kernel_records``), named here; acc (N_ACC,) ACCUMULATES;
+    returns (steps, status)."""
+    return advance_chain(SpringLinks(*links), Attachment(*att), Boxes(*boxes), ChainParams(*params),
+                         Coupling(*coupling), acc, StepWorld(*world), dt, n_steps)
 
 
 # The legged chain's one step function: ``advance`` calls it with a chunk's n steps, the fused legged walk with one
 # (``legged_chunk.chain_step``)
 STEP = advance_spring_chain
-STEP_CHAIN_ITEMS = 6  # STEP's arguments before n_steps: links, att, boxes, world, coupling, acc (the pack's chain)
+STEP_CHAIN_ITEMS = 6  # STEP's body arguments: links, att, boxes, params, coupling, acc (the pack's chain); then world,
+#                       dt, n_steps, given by whoever runs it
 
 
 class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
@@ -261,7 +264,7 @@ class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
 
         mu = case.friction.mu_transverse if cfg.rigid_friction_mu < 0.0 else cfg.rigid_friction_mu
         self.contact = contact = ContactSettings(friction=mu, restitution=0.0)
-        self.phys = chain_phys(case, self.dt, contact)
+        self.phys = chain_phys(case, contact)
         n_nodes, n_fixed, n_rigid = len(self.x), len(self.fixed), lay.n_rigid
         self._f_work = np.zeros((n_nodes, 3))
         self.scratch = CouplingScratch.new(n_fixed, n_rigid, rk.N_CORNERS)
@@ -279,20 +282,19 @@ class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
     def advance(self, t0: float, n_steps: int, act: Actuation | None = None) -> tuple[int, int]:
         """Run ``n_steps`` coupled steps in one kernel call; return (steps done, status code). t0 unused;
         the links have no muscles (the supported segments are moved by ``apply_support``)."""
-        return STEP(*self._chain_args, self.acc, int(n_steps))
+        return STEP(*self._chain_args, self.acc, self.world.step_world, self.dt, int(n_steps))
 
     @cached_property
     def _chain_args(self) -> tuple:
         """``advance_spring_chain``'s records (``SpringLinks``, ``rigid_chain``'s ``Attachment``, ``Boxes``,
-        ``World``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), built once by field
+        ``ChainParams``, ``Coupling``) as plain tuples (``core.kernel_records``: the call's cost), built once by field
         name: they refer to the body's own arrays, which are changed in place only."""
         links = SpringLinks(x=self.x, v=self.v, n_free=len(self.free), mass=self.mass, free=self.free,
                             node_link=self.mesh.node_link, springs=self.springs, stiffness=self.stiffness,
                             damping=self.damping, rest=self.rest, f_work=self._f_work)
-        world = World(gravity=self.gravity, terr_kind=self.terr_kind, terr=self.terr, fric_model=self.fric_model,
-                      fric=self.fric, phys=self.phys)
+        params = ChainParams(fric_model=self.fric_model, fric=self.fric, phys=self.phys)
         return (plain(links), plain(Attachment(fixed=self.fixed, att_body=self.att_body, att_local=self.att_local)),
-                plain(boxes_of(self.rigid)), plain(world), plain(coupling_of(self.scratch)))
+                plain(boxes_of(self.rigid)), plain(params), plain(coupling_of(self.scratch)))
 
     def legged_pack(self) -> "SpringChainLegs":
         """The fused legged walk's pack (``legged_chunk``): the carried boxes and the step's arguments."""
@@ -301,7 +303,7 @@ class BodyRigidSpringChain(LeggedPackOps, PushedBoxes, LeggedSegments):
     def _carried(self):
         """The boxes' ``carried_boxes.CarriedBoxes`` (legged_pack, push_support)."""
         return carried_boxes(self.rigid, self._held, self.x, self.v, self.fixed, self.att_body, self.att_local,
-                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.phys[DT], self.stance)
+                             self.mesh.link_nodes, self.scratch.Rb, self.scratch.qtmp, self.dt, self.stance)
 
     def _state(self):
         rb = self.rigid
@@ -412,7 +414,7 @@ __all__ = ["BodyRigidSpringChain", "advance_chain", "build_chain", "chain_layout
 
 
 # the fused legged walk's pack (``legged_chunk``): boxes a ``carried_boxes.CarriedBoxes``, chain ``STEP``'s
-# arguments without n_steps; the registered functions below are the chain's legged operations on both paths
+# body arguments (without world, dt and n_steps, which the fused walk gives); the registered functions below are the chain's legged operations on both paths
 SpringChainLegs = namedtuple("SpringChainLegs", "boxes chain")
 
 
