@@ -1,49 +1,12 @@
 """bench-myriapoda: a benchmark suite for simulated myriapods, worms and snakes."""
 from __future__ import annotations
 
-import hashlib
 import os
-from pathlib import Path
+
+# First, for its effect: numba's cache directory, keyed by the hash of the sources, set before anything imports numba.
+from .core import source_hash  # noqa: F401
 
 __version__ = "0.1.0"
-
-
-def _source_hash() -> str:
-    """The hash (16 hex digits) of every source file of this package, names and contents."""
-    h = hashlib.sha256()
-    root = Path(__file__).resolve().parent
-    for p in sorted(root.rglob("*.py")):
-        h.update(str(p.relative_to(root)).encode())
-        h.update(p.read_bytes())
-    return h.hexdigest()[:16]
-
-
-SOURCE_HASH = _source_hash()  # keys what is built from the code and kept on disk: numba's cache, mesh terrains
-
-
-def _numba_cache_dir() -> str:
-    """A numba cache directory keyed by the hash of every source file of this package.
-
-    numba's on-disk cache (``cache=True``) is invalidated only by changes to the
-    file that defines a function, not to the files of the functions it calls, so
-    editing a shared kernel (e.g. ``contact_kernels.py``) would leave callers in
-    other modules running stale machine code.  Keying the whole cache on all
-    sources makes any edit start from a clean cache.
-    """
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return os.path.join(base, "bench-myriapoda", "numba", SOURCE_HASH)
-
-
-NUMBA_CACHE_DIR_GIVEN = "NUMBA_CACHE_DIR" in os.environ  # the user's own (checked by core.numba_env), not ours
-if not NUMBA_CACHE_DIR_GIVEN:  # a user's own choice wins
-    os.environ["NUMBA_CACHE_DIR"] = _numba_cache_dir()
-    try:  # numba may already be imported: its config read the environment then
-        import sys
-
-        if "numba" in sys.modules:
-            sys.modules["numba"].config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
-    except AttributeError:
-        pass
 
 # Cold start (issue 13): numba's type inference tries many typing templates per operation and builds an error
 # for each one that does not match (about 65,000 in one compile of the hybrid chain's kernels); with colorama
@@ -55,7 +18,7 @@ os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
 
 
 # The Python API (api.py), imported on first use: `import bench_myriapoda` stays light (no numba,
-# no pandas) and the numba cache directory above is set before anything imports numba.
+# no pandas) and numba's cache directory is set (core.source_hash) before anything imports numba.
 _API = ("run", "run_matrix", "load_results", "resolve", "Result", "Series")
 
 

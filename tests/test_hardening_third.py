@@ -341,9 +341,9 @@ def test_a_numba_variable_numba_would_ignore_or_trip_on_is_one_line(fresh, capsy
 
 
 def test_a_numba_cache_dir_that_is_not_a_directory_is_one_line(fresh, capsys, monkeypatch):
-    import bench_myriapoda
+    from bench_myriapoda.core import source_hash
 
-    monkeypatch.setattr(bench_myriapoda, "NUMBA_CACHE_DIR_GIVEN", True)  # as if set before the suite started
+    monkeypatch.setattr(source_hash, "NUMBA_CACHE_DIR_GIVEN", True)  # as if set before the suite started
     monkeypatch.setenv("NUMBA_CACHE_DIR", "/dev/null")
     bad(capsys, ["keys"], "NUMBA_CACHE_DIR", "/dev/null", "not a directory", where=fresh)
 
