@@ -13,6 +13,7 @@ import numba
 from numba.core.caching import CacheImpl
 
 import bench_myriapoda
+from bench_myriapoda.core import source_hash
 from bench_myriapoda.jit.cache_locator import SUBDIR, PackageRelativeCacheLocator, package_relative_dir
 
 ROOT = Path(bench_myriapoda.__file__).resolve().parent
@@ -21,7 +22,7 @@ ROOT = Path(bench_myriapoda.__file__).resolve().parent
 def test_the_suite_installs_its_locator_first_and_keeps_numbas_own():
     names = numba.config.CACHE_LOCATOR_CLASSES.split(",")
     assert names[0] == "bench_myriapoda.jit.cache_locator.PackageRelativeCacheLocator"
-    assert names[1:] == list(bench_myriapoda.NUMBA_LOCATORS)
+    assert names[1:] == list(source_hash.NUMBA_LOCATORS)
 
 
 def test_a_package_kernel_is_filed_by_its_directory_inside_the_package():

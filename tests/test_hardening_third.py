@@ -341,9 +341,9 @@ def test_a_numba_variable_numba_would_ignore_or_trip_on_is_one_line(fresh, capsy
 
 
 def test_a_numba_cache_dir_that_is_not_a_directory_is_one_line(fresh, capsys, monkeypatch):
-    import bench_myriapoda
+    from bench_myriapoda.core import source_hash
 
-    monkeypatch.setattr(bench_myriapoda, "NUMBA_CACHE_DIR_GIVEN", True)  # as if set before the suite started
+    monkeypatch.setattr(source_hash, "NUMBA_CACHE_DIR_GIVEN", True)  # as if set before the suite started
     monkeypatch.setenv("NUMBA_CACHE_DIR", "/dev/null")
     bad(capsys, ["keys"], "NUMBA_CACHE_DIR", "/dev/null", "not a directory", where=fresh)
 
@@ -352,20 +352,21 @@ def test_a_numba_cache_dir_that_is_not_a_directory_is_one_line(fresh, capsys, mo
                                          ("no_such_module.Locator", ("no_such_module.Locator", "does not import"))])
 def test_a_numba_cache_locator_that_does_not_resolve_is_one_line(fresh, capsys, monkeypatch, value, words):
     """numba resolves NUMBA_CACHE_LOCATOR_CLASSES at the first cached kernel, with a traceback mid-run."""
-    import bench_myriapoda
+    from bench_myriapoda.core import source_hash
 
-    monkeypatch.setattr(bench_myriapoda, "NUMBA_CACHE_LOCATOR_CLASSES_GIVEN", True)  # the user's own, not ours
+    monkeypatch.setattr(source_hash, "NUMBA_CACHE_LOCATOR_CLASSES_GIVEN", True)  # the user's own, not ours
     monkeypatch.setenv("NUMBA_CACHE_LOCATOR_CLASSES", f"UserProvidedCacheLocator,{value}")
     bad(capsys, ["keys"], "NUMBA_CACHE_LOCATOR_CLASSES", *words, where=fresh)
 
 
 def test_valid_numba_settings_pass(tmp_path):
+    from bench_myriapoda.core import source_hash
     from bench_myriapoda.core.numba_env import check_numba_env
 
     check_numba_env({"NUMBA_NUM_THREADS": "1", "NUMBA_DISABLE_JIT": "0", "NUMBA_OPT": "max",
                      "NUMBA_CPU_NAME": "generic", "NUMBA_THREADING_LAYER": "workqueue",
                      "NUMBA_CACHE_DIR": str(tmp_path / "not-yet" / "cache"),
-                     "NUMBA_CACHE_LOCATOR_CLASSES": __import__("bench_myriapoda").CACHE_LOCATOR_CLASSES})
+                     "NUMBA_CACHE_LOCATOR_CLASSES": source_hash.CACHE_LOCATOR_CLASSES})
     with pytest.raises(InputError, match="NUMBA_CACHE_DIR"):
         check_numba_env({"NUMBA_CACHE_DIR": "/dev/null/x"})
 

@@ -184,10 +184,10 @@ def test_the_installed_copy_loads_the_kernels_the_checkout_compiled(installed):
     probe = ("import json, numba, sys, bench_myriapoda as bm; r = bm.run('worm', 'massspring', 'flat', duration=0.05); "
              "ks = {id(o): o for m in list(sys.modules.values()) if m and m.__name__.startswith('bench_myriapoda') "
              "for o in vars(m).values() if isinstance(o, numba.core.dispatcher.Dispatcher)}.values(); "
-             "print(json.dumps([r.status, bm.SOURCE_HASH, bm.__file__, numba.config.CACHE_DIR, "
+             "print(json.dumps([r.status, bm.core.source_hash.SOURCE_HASH, bm.__file__, numba.config.CACHE_DIR, "
              "sum(sum(k.stats.cache_hits.values()) for k in ks), sum(sum(k.stats.cache_misses.values()) for k in ks)]))")
     status, source_hash, file, cache_dir, hits, misses = json.loads(_run([py, "-c", probe], work, env).splitlines()[-1])
     assert status == "ok" and Path(file).is_relative_to(py.parent.parent), file
-    assert source_hash == here.SOURCE_HASH  # the wheel carries the same sources
+    assert source_hash == here.core.source_hash.SOURCE_HASH  # the wheel carries the same sources
     assert cache_dir == numba.config.CACHE_DIR
     assert hits > 0 and misses == 0, (hits, misses)  # the run's entry kernels (8 for this worm), all loaded

@@ -23,7 +23,8 @@ One implementation (issue 42 item 2): the four registered functions are the body
 legged operations, and both paths run them.  The fused walk inlines them into its chunk; a body that
 inherits ``LeggedPackOps`` has no Python version of its own: its ``segment_poses``, ``set_support``,
 ``push_support`` and the legged monitor's sample (``legged_sample``) call them through the small compiled
-entries ``poses_now``, ``support_now`` and ``sample_now`` below, on one pack the body keeps.  Its step is
+entries ``poses_now``, ``support_now`` and ``sample_now`` below, on one pack the body keeps (typed once:
+``LeggedPackOps._legged_run``).  Its step is
 one function too, ``STEP(*P.chain, world, dt, n_steps)`` in its module (the pack's ``chain`` holds the body's own
 arguments, its records; the world and the time step are plain arguments given by whoever runs it; the body's
 ``BodySpec.step``), which ``Body.advance`` calls with the run's world and dt and the chunk's n, and the fused walk,
@@ -46,7 +47,12 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 from numba import njit
+try:  # numba's own (private) fingerprint of a call's argument types: the typed-once entries key on it
+    from numba._dispatcher import compute_fingerprint
+except ImportError:  # a numba without it: every call goes through the dispatcher (slower, the same results)
+    compute_fingerprint = None
 from numba.core import types
+from numba.core.typing.typeof import Purpose, typeof
 from numba.extending import overload
 
 
@@ -246,15 +252,47 @@ class LeggedPackOps:
         """The pack the Python path's operations run on, built once (its arrays are the body's, changed in place
         only; its scratch is the pack's own, so the poses ``segment_poses`` senses are what ``set_support``
         carries from, as in the fused walk).  Its ``chain`` (the step's arguments) is left empty: the Python path
-        steps through ``Body.advance``, and numba's dispatch types every array of a pack passed from Python
-        (about 10 us a call for the hybrid's full pack, half that without its chain)."""
+        steps through ``Body.advance``, and ``_legged_run`` types the pack once, not on every call."""
         P = self.legged_pack()
         return P._replace(chain=()) if "chain" in P._fields else P
+
+    @cached_property
+    def _legged_entries(self) -> dict:
+        """(compiled entry, the fingerprint of the arguments after the pack) -> the entry's machine code for them
+        and this body's pack (``_legged_run``)."""
+        return {}
+
+    def _legged_run(self, entry, *args):
+        """``entry(legged_ops_pack, *args)``, the compiled entry's machine code for these argument types called
+        directly.
+
+        Why: numba's dispatcher finds a call's signature from the type fingerprint of every argument, computed on
+        every call from Python leaf by leaf through nested tuples: the hybrid's pack (33 leaves, a 444-byte
+        fingerprint) took about 5 to 10 us a call, the cost of the Python path's poses, support and sample (the
+        poses themselves, compiled, take 0.06 us).  The pack never changes type (a tuple built once, of arrays
+        changed in place only), so it is typed once, when an entry is first run for the types of the other
+        arguments; those few are keyed by numba's own C fingerprint (the dispatcher's key: dtype, number of
+        dimensions, layout, read-only), so an argument of another type resolves its own signature, as a
+        dispatched call would (a value it has no fingerprint for goes through the dispatcher).  The signature is
+        loaded or compiled by the dispatcher's ``compile`` (numba's cache, the compile lock), the one a dispatched
+        call would take: the same machine code."""
+        P = self.legged_ops_pack
+        if compute_fingerprint is None:
+            return entry(P, *args)
+        try:
+            key = (entry, compute_fingerprint(args))
+        except NotImplementedError:  # a value numba's C typing does not know (a list): the dispatcher types it
+            return entry(P, *args)
+        run = self._legged_entries.get(key)
+        if run is None:
+            run = entry.compile(tuple(typeof(a, Purpose.argument) for a in (P, *args)))
+            self._legged_entries[key] = run
+        return run(P, *args)
 
     def segment_poses(self) -> tuple[np.ndarray, np.ndarray]:
         """Centres (n_seg, 3) [m] and rotations (n_seg, 3, 3) of the segments: the registered ``poses``, copied
         (the pack's arrays change with the next call)."""
-        c, R = poses_now(self.legged_ops_pack)
+        c, R = self._legged_run(poses_now)
         return c.copy(), R.copy()
 
     def set_support(self, kinematic: np.ndarray, c_T: np.ndarray, R_T: np.ndarray, dt: float) -> None:
@@ -264,25 +302,25 @@ class LeggedPackOps:
         if dt != self.dt:
             raise ValueError(f"set_support: dt = {dt} s is not the body's time step {self.dt} s, the one its "
                              "support kernel carries over")
-        support_now(self.legged_ops_pack, np.ascontiguousarray(kinematic, dtype=np.bool_),
-                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
-                    _NO_STATES, _NO_TIPS, False)
+        self._legged_run(support_now, np.ascontiguousarray(kinematic, dtype=np.bool_),
+                         np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                         _NO_STATES, _NO_TIPS, False)
 
     def push_support(self, supported, c_T, R_T, states, tips) -> None:
         """The support with the feet this step (the registered ``carry_feet``; in dynamic stance,
         ``bodies.dynamic_stance``, the STANCE legs push): supported (n_seg,) bool, the targets c_T (n_seg, 3) [m]
         and R_T (n_seg, 3, 3), the leg states (n_legs,) int64 and the feet tips (n_legs, 3) [m], UPDATED where a
         foot slides."""
-        support_now(self.legged_ops_pack, np.ascontiguousarray(supported, dtype=np.bool_),
-                    np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
-                    states, tips, True)
+        self._legged_run(support_now, np.ascontiguousarray(supported, dtype=np.bool_),
+                         np.ascontiguousarray(c_T, dtype=np.float64), np.ascontiguousarray(R_T, dtype=np.float64),
+                         states, tips, True)
 
     def legged_sample(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The legged monitor's sample after the support (the registered ``sample``): segment centres c (n_seg, 3)
         [m], rotations R (n_seg, 3, 3) and centres (2 n_seg - 1, 3) [m] of segments and links in body order."""
         n = self.n_segments
         c, R, links = np.empty((n, 3)), np.empty((n, 3, 3)), np.empty((n - 1, 3))
-        sample_now(self.legged_ops_pack, c, R, links)
+        self._legged_run(sample_now, c, R, links)
         centres = np.empty((2 * n - 1, 3))
         centres[0::2] = c
         centres[1::2] = links

@@ -15,6 +15,7 @@ import sys
 import tempfile
 from collections.abc import Mapping
 
+from . import source_hash
 from .errors import InputError
 
 THREADING_LAYERS = ("default", "safe", "forksafe", "threadsafe", "tbb", "omp", "workqueue")
@@ -47,16 +48,13 @@ def check_numba_env(env: Mapping[str, str] | None = None) -> None:
     if layer is not None and layer not in THREADING_LAYERS:
         raise InputError("NUMBA_THREADING_LAYER", None, f"{layer!r:.40} is not allowed; must be one of "
                                                         f"{', '.join(THREADING_LAYERS)}, or unset")
-    from .. import NUMBA_CACHE_DIR_GIVEN
-
-    if "NUMBA_CACHE_DIR" in env and (NUMBA_CACHE_DIR_GIVEN or env is not os.environ):  # not the suite's default
+    if "NUMBA_CACHE_DIR" in env and (source_hash.NUMBA_CACHE_DIR_GIVEN or env is not os.environ):  # not our default
         _check_cache_dir(env["NUMBA_CACHE_DIR"])
     cpu = env.get("NUMBA_CPU_NAME")
     if cpu:  # empty: numba's default, the host's CPU
         _check_cpu_name(cpu)
-    from .. import NUMBA_CACHE_LOCATOR_CLASSES_GIVEN
-
-    if "NUMBA_CACHE_LOCATOR_CLASSES" in env and (NUMBA_CACHE_LOCATOR_CLASSES_GIVEN or env is not os.environ):
+    if "NUMBA_CACHE_LOCATOR_CLASSES" in env and (source_hash.NUMBA_CACHE_LOCATOR_CLASSES_GIVEN
+                                                 or env is not os.environ):  # not our default
         _check_locator_classes(env["NUMBA_CACHE_LOCATOR_CLASSES"])
 
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..core.config import Case
+from ..core.source_hash import SOURCE_HASH
 from ..jit.worker_start import worker_context
 from .runner import run_case, run_world
 
@@ -103,12 +104,8 @@ TIMED_REPEATS = 3  # runs of the trial case at its default dt, timed: the scorec
 
 
 def source_hash() -> str:
-    """The hash of every source file of the package (the key of its numba cache directory, ``_numba_cache_dir``)."""
-    from pathlib import Path
-
-    from .. import _numba_cache_dir
-
-    return Path(_numba_cache_dir()).name
+    """The hash of every source file of the package (the key of its numba cache directory, ``core.source_hash``)."""
+    return SOURCE_HASH
 
 
 def bracket_case(case: Case) -> Case:

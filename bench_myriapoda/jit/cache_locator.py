@@ -3,13 +3,13 @@
 numba files a cached kernel under ``NUMBA_CACHE_DIR/<dir>_<sha1 of the source file's absolute directory>``, so
 the same code at another path compiles every kernel again (about 40 to 100 CPU s per body group): a wheel
 installed next to a checkout, a second git worktree of the same commit, a venv rebuilt elsewhere.  A path tells
-two builds apart no better than the hash of every source file of the package (``bench_myriapoda.SOURCE_HASH``)
+two builds apart no better than the hash of every source file of the package (``core.source_hash.SOURCE_HASH``)
 does, and numba (0.68, the version this was written against) stamps each cache index with the hash of its source
 file's content.  So here a package kernel is filed under ``NUMBA_CACHE_DIR/package-<sources' hash>/<its
 directory relative to the package>``, the same for every copy of the same code.  A function outside the package
 (a user's plugin, a test file) is left to numba's own locators.
 
-Installed by ``bench_myriapoda/__init__.py`` through numba's ``NUMBA_CACHE_LOCATOR_CLASSES`` (a user's own
+Installed by ``core/source_hash.py`` (imported first by the package) through numba's ``NUMBA_CACHE_LOCATOR_CLASSES`` (a user's own
 setting wins).  A numba without that setting ignores it and keeps its path-keyed cache: slower, never wrong.
 """
 from __future__ import annotations
@@ -19,7 +19,7 @@ from pathlib import Path
 
 from numba.core import config
 
-from .. import SOURCE_HASH
+from ..core.source_hash import SOURCE_HASH
 
 try:  # numba's public name (the one NUMBA_CACHE_LOCATOR_CLASSES resolves)
     from numba.core.caching import UserProvidedCacheLocator

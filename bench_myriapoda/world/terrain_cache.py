@@ -8,7 +8,7 @@ settings and the code that builds it, so it is stored under a key made of all of
 process on the same machine.
 
 The key holds: the mesh's vertices and faces (bytes, after scale and translation), the cell size and bands, the
-hash of every source file of the package (``bench_myriapoda.SOURCE_HASH``: any code change builds afresh, as the
+hash of every source file of the package (``core.source_hash.SOURCE_HASH``: any code change builds afresh, as the
 JIT cache does), and the code generation target (the host CPU's name and features and the ``NUMBA_CPU_NAME`` /
 ``NUMBA_CPU_FEATURES`` a user set: a vector computed for one target is never served to another, so a run that asks
 for another target, as ``.ci/run``'s second golden pass does, computes its own).
@@ -27,6 +27,7 @@ from collections.abc import Callable, Iterable
 import numpy as np
 
 from ..core.paths import cache_root
+from ..core.source_hash import SOURCE_HASH
 
 FORMAT = 1  # bump when the stored layout changes
 
@@ -49,8 +50,6 @@ def _target() -> bytes:
 
 def key(arrays: Iterable[np.ndarray], settings: Iterable[float | str]) -> str:
     """The cache key (hex) of a mesh's arrays (their dtype, shape and bytes) and its grid settings."""
-    from .. import SOURCE_HASH
-
     h = hashlib.sha256()
     h.update(f"format {FORMAT} source {SOURCE_HASH}".encode())
     h.update(_target())
