@@ -4,8 +4,8 @@ case over the step budget) before anything runs or is written, and never loses a
 its store failed.
 
 Every refusal is checked the same way: ``InputError`` (or exit 2) with one line naming the argument, within
-``BOUND_S`` (an interval timer in this process, a subprocess timeout for the command line: no timing is
-asserted), and nothing written in the test's folder.  The simulations are the cheapest there are: the worm
+``BOUND_S`` (an interval timer in this process; for the command line, its CPU time, with a wall-time guard against
+a hang: ``cli``), and nothing written in the test's folder.  The simulations are the cheapest there are: the worm
 on the mass-spring body for 0.05 s.
 """
 from __future__ import annotations
@@ -14,6 +14,7 @@ import contextlib
 import json
 import os
 import pathlib
+import resource
 import signal
 import sqlite3
 import subprocess
@@ -32,6 +33,7 @@ from bench_myriapoda.harness.store import check_store, connect
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ("worm", "massspring", "flat")
 BOUND_S = 10
+HANG_S = 60  # wall-time guard of a command line checked by its CPU time (``cli``)
 TRIGGER = "CREATE TRIGGER no_more BEFORE INSERT ON runs BEGIN SELECT RAISE(ABORT, 'refused by a trigger'); END;"
 RUN = ["run", "--creature", "worm", "--body", "massspring", "--scenario", "flat", "--duration", "0.05"]
 
@@ -98,11 +100,23 @@ def after_the_run(monkeypatch, action):
     monkeypatch.setattr(runner, "run_case", run_then)
 
 
-def cli(args: list, cwd: Path, timeout: float = BOUND_S, env: dict | None = None) -> subprocess.CompletedProcess:
-    """The command line in a fresh interpreter, bytes out (a non-UTF-8 name stays as it is)."""
+def cli(args: list, cwd: Path, timeout: float | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
+    """The command line in a fresh interpreter, bytes out (a non-UTF-8 name stays as it is).
+
+    Without ``timeout``: the command's CPU time (user + system) must stay within BOUND_S, and its wall time within
+    HANG_S, a guard against a hang.  CPU time, because a loaded machine (three test workers on two cores, other
+    jobs beside them) stretched the interpreter's start-up alone past 10 s of wall time; a refusal before the run
+    costs about 1 CPU s.  With ``timeout`` [s]: a wall-time limit only (a command that runs a simulation, or one
+    whose fault was waiting: SQLite's 60 s busy timeout)."""
     code = "import sys; from bench_myriapoda.cli import main; sys.exit(main())"
-    return subprocess.run([sys.executable, "-c", code, *args], cwd=cwd, capture_output=True, timeout=timeout,
-                          env={**os.environ, **(env or {})})
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    p = subprocess.run([sys.executable, "-c", code, *args], cwd=cwd, capture_output=True,
+                       timeout=HANG_S if timeout is None else timeout, env={**os.environ, **(env or {})})
+    if timeout is None:  # this worker runs its tests one at a time: the only child reaped in between is this one
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+        assert cpu <= BOUND_S, f"{args[:3]}: {cpu:.1f} CPU s, over {BOUND_S} s"
+    return p
 
 
 def one_error_line(p: subprocess.CompletedProcess, code: int, *words: str) -> str:
@@ -364,7 +378,8 @@ def test_a_store_locked_by_another_writer_is_refused_within_seconds(fresh, monke
     no_simulation(monkeypatch)
     with another_writer(store, "BEGIN IMMEDIATE"):  # for longer than any insert takes
         refused(lambda: bm.run(*CASE, duration=0.05, store=store), "store", "locked")
-        one_error_line(cli([*RUN, "--store", str(store)], fresh), 2, "--store", "locked")
+        # wall time: the fault was waiting out SQLite's 60 s busy timeout (no CPU), so the bound is on waiting
+        one_error_line(cli([*RUN, "--store", str(store)], fresh, timeout=30), 2, "--store", "locked")
     with another_writer(store, "BEGIN EXCLUSIVE"):  # a writer committing: even reading waits; no check hangs
         refused(lambda: check_store(store, "--store", write=False), "--store", "locked")
     assert rows(store) == 0
