@@ -476,11 +476,21 @@ class LoopGuard:
     while the loop commands ``GUARD_TWIST_COMMAND_RATIO`` times the feed-forward puts the run in the calibrated open
     loop for good (resumed at half the gains, the loop rolled the same body again a second later).
 
+    And the muscles' load (``GUARD_STRENGTH_MARGIN``): a loop can wind its command up under the muscle's strength,
+    unclipped and with the bend short of or at the command, until the body itself fails.  The hybrid's FEM links blew
+    up ("runaway speed") at commands of 0.276 to 0.287 under a strength of 0.3 in three cells of the tracking map, and
+    its calibrated open loop did so too when commanded to 0.30 (it ran at half the time step): the last of the
+    muscle's strength is more than those links carry at their step.  A command beyond ``GUARD_STRENGTH_MARGIN`` of the
+    strength and beyond ``GUARD_STRENGTH_OVER_FEED_FORWARD`` times the feed-forward's peak (the loop's doing: a
+    commanded wave that needs that strain of itself is the command's, and a muscle too weak for the load is clipped
+    at its strength below it and flagged) backs the loop off as the amplitude test does, read from the first tick
+    (the start ramp included: the muscles' load is not the shape's).
+
     While it holds the loop off, the open loop's amplitude is trimmed (``trim``, ``GUARD_TRIM_PER_CYCLE``): a body
     whose swing the loop drove past the command can keep it after the loop lets go (under Miller's friction at a small
     bend the lattice kept 2.94 of 2 in the open loop the loop left to it, where the open loop from the start reached
-    2.39), so after a back-off for a bend beyond the command (the amplitude or the saturation test) the open loop's
-    command is lowered, never raised above the feed-forward, until the centre line bends no more than commanded.
+    2.39), so after a back-off for a bend beyond the command (the amplitude, saturation or strength test) the open
+    loop's command is lowered, never raised above the feed-forward, until the centre line bends no more than commanded.
     When the loop resumes, the trim is handed to its amplitude integral (the command does not jump), and it goes on
     from there at the next back-off.
     The run's ``shape_control_backoffs``, ``shape_control_gain_scale``, ``shape_control_open_loop_trim`` and
@@ -796,6 +806,7 @@ class ShapeTracker:
                     f"the feed-forward by the measured bend")
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
-                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, segments twisted out of "
-                f"the plane, or the waveform's harmonics beyond the open loop's) and was backed off (to the calibrated "
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, a muscle driven beyond "
+                f"{GUARD_STRENGTH_MARGIN:g} of it, segments twisted out of the plane, or the waveform's harmonics "
+                f"beyond the open loop's) and was backed off (to the calibrated "
                 f"open loop for a period, or its integrals off) at t = {when} s; it {end}")
