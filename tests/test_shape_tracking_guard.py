@@ -226,6 +226,20 @@ def test_the_hybrid_blow_up_of_the_tracking_map_is_not_the_open_loops(monkeypatc
     assert loose.status == "unstable" and loose.metrics["shape_control_backoffs"] == 0.0, loose.message
 
 
+@pytest.mark.parametrize("body", ["massspring", "hybrid"])
+def test_a_run_the_strength_test_never_trips_is_bit_for_bit_what_it_was(body, monkeypatch):
+    """The default snake (3 s) with the strength test as it is and switched off (its margin at the whole strength: a
+    clipped command never passes it): no back-off either way, and the same trajectory to the last bit."""
+    from bench_myriapoda.controllers import shape_tracking
+
+    case = resolve_case("snake", body, "flat", "lateral-undulation", duration=3.0)
+    on = run_case(case)
+    monkeypatch.setattr(shape_tracking, "GUARD_STRENGTH_MARGIN", 1.0)
+    off = run_case(case)
+    assert on.status == off.status == "ok" and on.metrics["shape_control_backoffs"] == 0.0
+    np.testing.assert_array_equal(on.series.segment_centers, off.series.segment_centers)
+
+
 @pytest.mark.parametrize("creature, gait", [("snake", "sidewinding"), ("worm", "rectilinear")])
 def test_the_sidewinder_and_the_worm_run_as_before_the_guard(creature, gait):
     """The sidewinder keeps the open loop (models/snake.toml) and the worm commands no curvature: neither closes the
