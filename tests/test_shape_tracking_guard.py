@@ -5,7 +5,8 @@ mu_f 0.1 / mu_b 0.3 / mu_t 0.5): the lattice coiled to four times the commanded 
 their strength and ended ``ok``; the hybrid blew up.  ``controllers.shape_tracking.LoopGuard`` backs the loop off
 to the calibrated open loop when the body bends 20 % beyond the command or most muscles are held at their
 strength, resumes at half the gains, and after two back-offs stays open loop; when the waveform's harmonic content
-grows past 0.15 and the open loop's own (``WaveformWatch``) it switches the loop's integrals off.  A run where it
+grows past 0.15 and the open loop's own (``WaveformWatch``) it switches the loop's integrals off; when the loop drives
+a muscle beyond 0.85 of its strength (the hybrid's FEM links failed at 0.28 of 0.3) it backs off too.  A run where it
 acted in the measured window, or that ended in the open loop or without its integrals, ends ``controller_unstable``.
 
 The property test runs the lattice over the key space a user can reach (wavelength 0.3-1.5 body lengths, curvature
@@ -202,17 +203,41 @@ def test_the_fem_and_hybrid_snakes_never_run_away_over_the_key_space(body):
     check()
 
 
-@pytest.mark.xfail(strict=True, reason="the loop drives the hybrid's FEM links to a blow-up before any of the guard's "
-                   "tests sees it (docs/explanation/shape-tracking-map.md, 'The fem and hybrid map'; issue 44)")
-def test_the_hybrid_blow_up_of_the_tracking_map_is_not_the_open_loops():
+def test_the_hybrid_blow_up_of_the_tracking_map_is_not_the_open_loops(monkeypatch):
     """A cell of the tracking map (the default snake, Coulomb friction mu_f 0.1, mu_b 0.3, mu_t 1.0, wavelength 1.5
-    BL; 4 s) where the hybrid blew up in the closed loop ("runaway speed" at 2.14 s, bend 3.7 of 10, no back-off) and
-    ran to the end in the calibrated open loop (``ok``, flagged, 1.7 of 10).  Known, not solved: strict, so that the
-    day the guard catches it this test says so."""
+    BL; 4 s) where the hybrid blew up in the closed loop ("runaway speed" at 2.14 s, bend 3.7 of 10, no back-off: the
+    loop had wound its command up to 0.287, under the muscle's strength of 0.3, and the FEM links failed) and runs to
+    the end in the calibrated open loop (``ok``, flagged, 1.7 of 10).  The guard's strength test
+    (``GUARD_STRENGTH_MARGIN``) backs the loop off before the links fail (at 1.95 s): the run ends, flagged; and it is
+    that test that does it: without it the same run blows up as before."""
+    from bench_myriapoda.controllers import shape_tracking
+
     overrides = ["friction.model=coulomb", "friction.mu_forward=0.1", "friction.mu_backward=0.3",
                  "friction.mu_transverse=1.0", "gait.wavelength_bl=1.5"]
     case = resolve_case("snake", "hybrid", "flat", "lateral-undulation", duration=4.0, overrides=overrides)
-    check_no_runaway(run_case(case), 10.0)
+    r = run_case(case)
+    check_no_runaway(r, 10.0)
+    m = r.metrics
+    assert m["shape_control_backoffs"] >= 1 and m["shape_control_backoff_s"] < 2.14, (r.status, r.message, m)
+    own = open_loop_of(case)
+    assert own.status == "ok" and own.metrics["shape_not_achieved"] == 1.0, own.message
+    monkeypatch.setattr(shape_tracking, "GUARD_STRENGTH_MARGIN", 1.0)  # no command passes the strength: the test off
+    loose = run_case(case)
+    assert loose.status == "unstable" and loose.metrics["shape_control_backoffs"] == 0.0, loose.message
+
+
+@pytest.mark.parametrize("body", ["massspring", "hybrid"])
+def test_a_run_the_strength_test_never_trips_is_bit_for_bit_what_it_was(body, monkeypatch):
+    """The default snake (3 s) with the strength test as it is and switched off (its margin at the whole strength: a
+    clipped command never passes it): no back-off either way, and the same trajectory to the last bit."""
+    from bench_myriapoda.controllers import shape_tracking
+
+    case = resolve_case("snake", body, "flat", "lateral-undulation", duration=3.0)
+    on = run_case(case)
+    monkeypatch.setattr(shape_tracking, "GUARD_STRENGTH_MARGIN", 1.0)
+    off = run_case(case)
+    assert on.status == off.status == "ok" and on.metrics["shape_control_backoffs"] == 0.0
+    np.testing.assert_array_equal(on.series.segment_centers, off.series.segment_centers)
 
 
 @pytest.mark.parametrize("creature, gait", [("snake", "sidewinding"), ("worm", "rectilinear")])

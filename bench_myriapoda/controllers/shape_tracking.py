@@ -327,6 +327,17 @@ GUARD_MAX_BACKOFFS = 2
 # its own accord, and switching to the open loop there only jolts it
 GUARD_TWIST_DEG = 15.0
 GUARD_TWIST_COMMAND_RATIO = 1.5
+# The guard's strength test (``LoopGuard``): the loop commands a muscle beyond GUARD_STRENGTH_MARGIN of its strength
+# (``gait.max_muscle_strain``) and beyond GUARD_STRENGTH_OVER_FEED_FORWARD times the feed-forward's own peak (the
+# loop's doing, not the commanded wave's), at any tick, the start ramp included.  The hybrid's FEM links blew up at
+# commands of 0.276 to 0.287 peak under a strength of 0.3, in three cells of the tracking map as unlike as the loop
+# winding up against mu_t 1.0 (1.5 BL, 2.14 s), a body flailing on nearly isotropic friction (1 BL, mu_t 0.2,
+# 5.75 s) and a loop that tracked (shape error 0.08) while its integrals crept from 0.14 to 0.28 (curvature 10,
+# 0.5 Hz, 36.0 s); the calibrated open loop commanded to 0.30 (curvature 25) blew up the same way (1.73 s), and ran
+# at half the time step (docs/explanation/shape-tracking-map.md).  The slithering grid's most demanding cell (the
+# hybrid at mu_t / mu_f 10) peaks at 0.165
+GUARD_STRENGTH_MARGIN = 0.85
+GUARD_STRENGTH_OVER_FEED_FORWARD = 1.5
 # The guard's waveform test (``WaveformWatch``): the centre line's bend, demodulated over the last whole period at
 # every interior centre, carries more than GUARD_HARMONIC of the commanded amplitude in the wave's temporal harmonics
 # 2 to GUARD_HARMONICS (the run's ``shape_harmonic_content``, on line; the issue's bound is 0.20), more than
@@ -465,11 +476,21 @@ class LoopGuard:
     while the loop commands ``GUARD_TWIST_COMMAND_RATIO`` times the feed-forward puts the run in the calibrated open
     loop for good (resumed at half the gains, the loop rolled the same body again a second later).
 
+    And the muscles' load (``GUARD_STRENGTH_MARGIN``): a loop can wind its command up under the muscle's strength,
+    unclipped and with the bend short of or at the command, until the body itself fails.  The hybrid's FEM links blew
+    up ("runaway speed") at commands of 0.276 to 0.287 under a strength of 0.3 in three cells of the tracking map, and
+    its calibrated open loop did so too when commanded to 0.30 (it ran at half the time step): the last of the
+    muscle's strength is more than those links carry at their step.  A command beyond ``GUARD_STRENGTH_MARGIN`` of the
+    strength and beyond ``GUARD_STRENGTH_OVER_FEED_FORWARD`` times the feed-forward's peak (the loop's doing: a
+    commanded wave that needs that strain of itself is the command's, and a muscle too weak for the load is clipped
+    at its strength below it and flagged) backs the loop off as the amplitude test does, read from the first tick
+    (the start ramp included: the muscles' load is not the shape's).
+
     While it holds the loop off, the open loop's amplitude is trimmed (``trim``, ``GUARD_TRIM_PER_CYCLE``): a body
     whose swing the loop drove past the command can keep it after the loop lets go (under Miller's friction at a small
     bend the lattice kept 2.94 of 2 in the open loop the loop left to it, where the open loop from the start reached
-    2.39), so after a back-off for a bend beyond the command (the amplitude or the saturation test) the open loop's
-    command is lowered, never raised above the feed-forward, until the centre line bends no more than commanded.
+    2.39), so after a back-off for a bend beyond the command (the amplitude, saturation or strength test) the open
+    loop's command is lowered, never raised above the feed-forward, until the centre line bends no more than commanded.
     When the loop resumes, the trim is handed to its amplitude integral (the command does not jump), and it goes on
     from there at the next back-off.
     The run's ``shape_control_backoffs``, ``shape_control_gain_scale``, ``shape_control_open_loop_trim`` and
@@ -550,7 +571,12 @@ class LoopGuard:
         # then: it costs a few microseconds a tick)
         twisted = (seg_rot is not None and self.p_out > GUARD_TWIST_COMMAND_RATIO ** 2 * self.p_cmd
                    and segment_twist_deg(seg_rot) > GUARD_TWIST_DEG)
-        if r < 1.0 and not twisted:
+        # a muscle driven by the loop into the last margin of its strength (``GUARD_STRENGTH_MARGIN``): read during the
+        # ramp too, it is the body's load, not the shape's
+        peak = float(np.max(np.abs(lateral))) if lateral.size else 0.0
+        strained = (peak > GUARD_STRENGTH_MARGIN * umax
+                    and peak > GUARD_STRENGTH_OVER_FEED_FORWARD * r * abs(amp))
+        if r < 1.0 and not (twisted or strained):
             return False
         harmonic = float("nan")
         if bend is not None:
@@ -565,12 +591,13 @@ class LoopGuard:
         saturated = self.sat > GUARD_SATURATION and self.p_meas > self.p_cmd
         # the waveform: the bend's harmonics over the last period beyond the open loop's own (``WaveformWatch``)
         distorted = harmonic > self.harmonic_limit and self.waveform.growing()
-        if not (overshoot or saturated or distorted or twisted):
+        if not (overshoot or saturated or distorted or twisted or strained):
             return False
         self.backoffs += 1
         self.times.append(float(t))
         self.reasons.append("segments twisted over" if twisted else "bend over the command" if overshoot else
                             "most muscles saturated" if saturated else
+                            f"a muscle at {peak / umax:.2f} of its strength" if strained else
                             f"harmonic content {harmonic:.2f} > {self.harmonic_limit:.2f}" +
                             ("" if self.integral_off else ": integrals off"))
         self.waveform.clear()
@@ -579,11 +606,11 @@ class LoopGuard:
         # or the waveform the body is short of the command or off its plane, and the trim stays where it is (on the
         # lattice at 0.75 BL, curvature 10, trimming after the twist test's back-off lowered the open loop while the
         # loop's last push passed and left the body at 3.4 of 10, where the untrimmed open loop reached 4.3)
-        self.trimming = (overshoot or saturated) and not twisted
+        self.trimming = (overshoot or saturated or strained) and not twisted
         if twisted:
             self.open_for_good = True
             return True
-        if distorted and not (overshoot or saturated) and not self.integral_off:
+        if distorted and not (overshoot or saturated or strained) and not self.integral_off:
             # the waveform ran away with the bend's amplitude held: the integrals' doing (on the hybrid at 0.3 BL,
             # Miller's friction, mu_t / mu_f 1, the loop without its fundamental's integral tracked, shape error
             # 0.06, and without its proportional term it blew up), so they are switched off and the proportional
@@ -779,6 +806,7 @@ class ShapeTracker:
                     f"the feed-forward by the measured bend")
         return ("controller_unstable",
                 f"controller_unstable: the shape tracker drove the body away from the commanded shape (bend over "
-                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, segments twisted out of "
-                f"the plane, or the waveform's harmonics beyond the open loop's) and was backed off (to the calibrated "
+                f"{GUARD_AMPLITUDE_RATIO:g} x the command, most muscles at max_muscle_strain, a muscle driven beyond "
+                f"{GUARD_STRENGTH_MARGIN:g} of it, segments twisted out of the plane, or the waveform's harmonics "
+                f"beyond the open loop's) and was backed off (to the calibrated "
                 f"open loop for a period, or its integrals off) at t = {when} s; it {end}")
