@@ -17,7 +17,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg  # noqa: F401  (sp.linalg)
 from scipy.spatial.transform import Rotation
 
-from bench_myriapoda.bodies.fem.myriapod import BodyFEMChain
+from bench_myriapoda.bodies.fem.myriapod import K_SUPPORT, BodyFEMChain
 from bench_myriapoda.bodies.massspring.myriapod import BodyRigidSpringChain
 from bench_myriapoda.controllers.myriapod.controller import MyriapodController
 from bench_myriapoda.harness.runner import Creature
@@ -81,6 +81,7 @@ def _three_supported(b, rng):
 
 # ------------------------------------------------------------------ registration
 def test_the_factories_give_legged_bodies_for_the_centipede():
+    registry.load_all()  # the lookups are filled on first use: this test may be its worker's first to look
     for name, cls in (("massspring", BodyRigidSpringChain), ("fem", BodyFEMChain)):
         spec = registry.BODIES[name]
         assert "legs" in spec.capabilities
@@ -192,7 +193,7 @@ def test_fem_kernel_step_matches_numpy_composition():
     c_T, R_T = _target(c, R, 2, rng)
     c_T, R_T = _target(c_T, R_T, 9, rng)
     b.set_support(sup, c_T, R_T, b.case.dt)
-    fem, dt, kp = b.fem, b.case.dt, b.phys[5]
+    fem, dt, kp = b.fem, b.case.dt, b.phys[K_SUPPORT]
     x0, v0 = b.x.copy(), b.v.copy()
     # reference: f = f_E(x^n) + M g, (M + dt D) v* = M v + dt f, penalty per node, x += dt v
     fem_ref_x = fem.x.copy()
