@@ -479,10 +479,11 @@ def test_batched_node_pass_bitwise_equals_the_general_node_block(scenario, integ
     work = np.zeros((K.N_WORK, n_nodes))
     imc = np.ascontiguousarray(inv_mass.reshape(-1, 4).T)
     code = np.zeros((4, n_nodes // 4), dtype=np.int64)
+    g_dt = (case.scenario.gravity_m_s2, case.dt)  # the step's world and time step (plain arguments, issue 42)
     got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, phys, acc_a,
-                                work, code)
+                                work, code, g_dt)
     ref = K._nodes_general(xb, vb, fc, inv_mass, spine, False, seg_held, body.fric_model, body.fric, body.terr_kind,
-                           body.terr, phys, acc_b)
+                           body.terr, phys, acc_b, g_dt)
     assert got == ref and 0 < got[0] < n_nodes
     assert ref[1] == {"": K.OK, "speed": K.RUNAWAY_SPEED, "nan": K.NONFINITE}[blowup]
     assert np.sum((np.einsum("d,dcf->cf", normal, va) > 0.0) & (np.einsum("d,dcf->cf", normal, vc) < 0.0)) > 2  # collided
@@ -527,15 +528,16 @@ def test_batched_node_pass_with_rows_partly_off_the_ground_bitwise_equals_the_ge
     acc_a, acc_b = np.zeros(body.acc.shape), np.zeros(body.acc.shape)
     work = np.zeros((K.N_WORK, 4 * stride))
     code = np.zeros((4, stride), dtype=np.int64)
+    g_dt = (case.scenario.gravity_m_s2, case.dt)  # the step's world and time step (plain arguments, issue 42)
     got = K._nodes_coulomb_flat(xa, va, fc, imc, spine, body.fric, body.terr_kind, body.terr, body.phys, acc_a,
-                                work, code)
+                                work, code, g_dt)
     ref = K._nodes_general(xb, vb, fc, body.inv_mass, spine, False, np.zeros(n_faces - 1, dtype=np.bool_),
-                           body.fric_model, body.fric, body.terr_kind, body.terr, body.phys, acc_b)
+                           body.fric_model, body.fric, body.terr_kind, body.terr, body.phys, acc_b, g_dt)
     assert got == ref and got[0] == np.sum(x[:, 1] < contact)
     assert np.array_equal(xa.view(np.int64), xb.view(np.int64)) and np.array_equal(va.view(np.int64), vb.view(np.int64))
     assert np.array_equal(acc_a.view(np.int64), acc_b.view(np.int64))
     lifted = (x[:, 1] >= contact).reshape(-1, 4).T  # (4, n_faces): off the ground, no friction
-    dt, g = body.phys[K.DT], body.phys[K.GRAVITY]
+    dt, g = g_dt[1], g_dt[0]
     free_fall = vc[1, :4, :n_faces] + dt * (fc[1, :, :n_faces] * imc[:, :n_faces] - g)
     assert np.array_equal(va[1, :4, :n_faces][lifted], free_fall[lifted])
 
