@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import numba
-from numba.core.caching import CacheImpl
+from numba.core.caching import CompileResultCacheImpl
 
 import bench_myriapoda
 from bench_myriapoda.core import source_hash
@@ -28,7 +28,7 @@ def test_the_suite_installs_its_locator_first_and_keeps_numbas_own():
 def test_a_package_kernel_is_filed_by_its_directory_inside_the_package():
     from bench_myriapoda.bodies.massspring import kernels
 
-    impl = CacheImpl.__subclasses__()[0](kernels.advance.py_func)  # numba's CompileResultCacheImpl
+    impl = CompileResultCacheImpl(kernels.advance.py_func)  # what numba makes for a cache=True kernel
     loc = impl.locator
     assert isinstance(loc, PackageRelativeCacheLocator)
     assert Path(loc.get_cache_path()) == Path(numba.config.CACHE_DIR) / SUBDIR / "bodies" / "massspring"

@@ -88,7 +88,7 @@ def _check_locator_classes(text: str) -> None:
     in the middle of a run) when an entry does not resolve."""
     import importlib
 
-    from numba.core import caching
+    from numba.core import caching  # here, not at the top: only a user's own setting pays numba's import
 
     name = "NUMBA_CACHE_LOCATOR_CLASSES"
     for entry in (e.strip() for e in text.split(",")):
