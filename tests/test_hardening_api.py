@@ -621,3 +621,38 @@ def test_sigterm_ends_a_run_or_a_matrix_start_up_with_130(command, fresh):
             p.kill()
     assert p.returncode == 130, err.decode()
     assert err.decode().strip().endswith("bench-myriapoda: interrupted") and b"Traceback" not in err, err.decode()
+
+
+# An interrupt raised inside an import of a C extension comes out as that import's ImportError (numpy's
+# "PyCapsule_Import could not import module ..."): a fresh-clone run on a loaded machine (f725d9b) sent SIGTERM to
+# `run` while check_numba_env imported numba, and the command ended with that traceback and exit 1.  The import is
+# played here: the signal arrives inside check_numba_env and the KeyboardInterrupt it raises is re-raised as an
+# ImportError from it, as CPython's PyCapsule_Import does.
+INTERRUPTED_IMPORT = """
+import os, signal, sys, time
+from bench_myriapoda.cli import program
+
+def check_numba_env():
+    interrupt = None
+    try:
+        os.kill(os.getpid(), signal.{sig})
+        time.sleep(30)  # the handler raises before this ends
+    except KeyboardInterrupt as exc:
+        interrupt = exc
+        if {chained}:
+            raise ImportError('PyCapsule_Import could not import module "datetime"') from exc
+    raise ImportError('PyCapsule_Import could not import module "datetime"')  # no trace of the interrupt
+
+program.check_numba_env = check_numba_env
+sys.exit(program.main(["list"]))
+"""
+
+
+@pytest.mark.parametrize("sig, chained", [("SIGTERM", True), ("SIGTERM", False), ("SIGINT", True)])
+def test_an_interrupt_that_an_import_turns_into_an_import_error_still_ends_with_130(sig, chained, fresh):
+    """SIGTERM inside main() ends with 130 whatever exception its KeyboardInterrupt became, even one that keeps
+    no trace of it; Ctrl-C (no handler of ours) does when the KeyboardInterrupt is in the exception's chain."""
+    code = INTERRUPTED_IMPORT.format(sig=sig, chained=chained)
+    p = subprocess.run([sys.executable, "-c", code], cwd=fresh, capture_output=True, text=True, timeout=60)
+    assert p.returncode == 130, p.stderr
+    assert p.stderr.strip() == "bench-myriapoda: interrupted", p.stderr

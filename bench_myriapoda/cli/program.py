@@ -20,8 +20,9 @@ PRINT_ERRORS = "bench_myriapoda_file_names"
 
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
+    terminate = sigterm_as_interrupt()
     try:
-        with sigterm_as_interrupt():  # from the start: building the parser imports the body models (~1.3 s)
+        with terminate:  # from the start: building the parser imports the body models (~1.3 s)
             check_numba_env()  # before numba is imported: it reads these variables once, at import
             if "--version" in argv[:1] and len(argv) > 1:  # argparse would print the version and ignore the rest
                 raise InputError("--version", None, f"takes no other arguments; got {' '.join(argv[1:])}")
@@ -44,6 +45,23 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("bench-myriapoda: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except Exception:
+        if not (terminate.received or interrupted_inside()):
+            raise
+        print("bench-myriapoda: interrupted", file=sys.stderr)  # an interrupt turned into another exception
+        return EXIT_INTERRUPTED
+
+
+def interrupted_inside() -> bool:
+    """Whether the exception being handled came from a KeyboardInterrupt (Ctrl-C raised inside an import of a C
+    extension comes out as that import's ImportError, the KeyboardInterrupt as its cause or context)."""
+    exc, seen = sys.exc_info()[1], set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, KeyboardInterrupt):
+            return True
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return False
 
 
 def print_any_file_name() -> None:

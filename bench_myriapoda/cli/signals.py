@@ -10,7 +10,14 @@ class sigterm_as_interrupt:
     stops its workers, keeps what it stored and prints "interrupted"; the old handler is restored after.
     ``main`` holds it around every command: a terminated ``run`` or matrix start-up ends with 130, as
     Ctrl-C does, not -15.  A process forked inside the block (the report's figure pool) dies of SIGTERM
-    as it would without the handler."""
+    as it would without the handler.
+
+    ``received`` tells the caller that SIGTERM ended the block even when the KeyboardInterrupt did not come out as
+    one: raised inside an import of a C extension (numpy's, numba's), it is turned into that import's ImportError
+    ("PyCapsule_Import could not import module ...") -- a terminated ``run`` whose SIGTERM arrived while numba
+    was being imported ended with that traceback and exit 1, not 130."""
+
+    received = False  # SIGTERM arrived inside the block (whatever exception it became on its way out)
 
     def __enter__(self):
         self.pid = os.getpid()
@@ -25,6 +32,7 @@ class sigterm_as_interrupt:
             signal.signal(signal.SIGTERM, signal.SIG_DFL)
             os.kill(os.getpid(), signal.SIGTERM)
             return
+        self.received = True
         raise KeyboardInterrupt
 
     def __exit__(self, *exc):
