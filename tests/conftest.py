@@ -19,6 +19,52 @@ def pytest_configure(config):
     compile_lock.install()
 
 
+_compile_ahead: list = []  # the background compile this process started (tests/compile_ahead.py), at most one
+
+
+def pytest_collection_finish(session):
+    """On a test session that runs the main job (the ``quick_run`` fixture) under pytest-xdist, the first worker to
+    finish collecting starts ``tests/compile_ahead.py`` in the background: one process per core compiles the quick
+    matrix's kernels while the tests start (the module says why and what it saves).  Once per session: the workers
+    share a marker file in their common temporary directory."""
+    import os
+    import subprocess
+    import sys
+
+    from compile_ahead import enabled
+    from newcomer_venv import shared_tmp
+
+    config = session.config
+    if not hasattr(config, "workerinput") or not enabled():
+        return
+    if not any("quick_run" in getattr(item, "fixturenames", ()) for item in session.items):
+        return
+    shared = shared_tmp(config._tmp_path_factory, config)
+    try:
+        os.close(os.open(shared / "compile-ahead.started", os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+    except FileExistsError:
+        return
+    log = open(shared / "compile-ahead.log", "w")
+    script = Path(__file__).with_name("compile_ahead.py")
+    _compile_ahead.append(subprocess.Popen([sys.executable, str(script), str(len(os.sched_getaffinity(0)))],
+                                           stdout=log, stderr=subprocess.STDOUT, start_new_session=True))
+    log.close()
+
+
+def pytest_unconfigure(config):
+    """The background compile ends with the worker that started it (its pool with it: its own process group)."""
+    import os
+    import signal
+
+    for proc in _compile_ahead:
+        if proc.poll() is None:
+            try:
+                os.killpg(proc.pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
+            proc.wait(timeout=30)
+
+
 def pytest_xdist_auto_num_workers(config):
     """``-n auto``: one test process more than the CPUs this process may use.  A cold run's workers wait for
     each other's compiles (``jit.compile_lock``: a second worker needing a kernel the first is compiling
