@@ -644,6 +644,7 @@ def check_numba_env():
     raise ImportError('PyCapsule_Import could not import module "datetime"')  # no trace of the interrupt
 
 program.check_numba_env = check_numba_env
+signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a terminal (a pytest-xdist worker ignores SIGINT)
 sys.exit(program.main(["list"]))
 """
 
