@@ -350,3 +350,27 @@ def test_a_matrix_with_controller_unstable_runs_is_read_by_the_report(tmp_path):
     df = load_matrix_dir(out).df
     assert sorted(df["status"]) == ["controller_unstable", "ok"]
     assert main(["report", str(out)]) == 0 and (out / "index.html").exists()
+
+
+@pytest.mark.parametrize("body", ["massspring", "fem"])
+def test_a_run_shorter_than_half_a_period_identifies_no_plant_and_moves_as_if_it_had(body, monkeypatch):
+    """The default snake for 0.9 s (its period is 2 s): no plant identified (``calibration.uses_the_plant``), no plant
+    metrics, and the same trajectory to the last bit as the same run with the plant identified (the guard's waveform
+    test, the plant's one use in the loop, first checks after a whole period)."""
+    from bench_myriapoda.bodies import curvature_calibration
+    from bench_myriapoda.harness import calibration
+
+    case = resolve_case("snake", body, "flat", "lateral-undulation", duration=0.9)
+    assert case.duration < 0.5 * case.gait.period_s
+    calls = []
+    real = curvature_calibration.plant_response
+    monkeypatch.setattr(calibration, "plant_response", lambda *a, **k: calls.append(1) or real(*a, **k))
+    short = run_case(case)
+    assert calls == [] and not any(k.startswith(("shape_plant", "shape_loop")) for k in short.metrics)
+    monkeypatch.setattr(calibration, "uses_the_plant", lambda c: True)
+    identified = run_case(case)
+    assert calls == [1] and "shape_plant_gain" in identified.metrics
+    assert short.status == identified.status == "ok"
+    np.testing.assert_array_equal(short.series.segment_centers, identified.series.segment_centers)
+    assert {k: v for k, v in short.metrics.items() if not k.startswith(("shape_plant", "shape_loop"))}.keys() \
+        <= identified.metrics.keys()

@@ -194,7 +194,8 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
      "closed-loop shape control only)", "bending gaits"),
     ("shape_plant_gain", "-", "median over the interior segments of the curvature amplitude the calibrated open loop "
      "reached on the case's own ground over the commanded one (identified before the run, "
-     "bodies/curvature_calibration.py plant_response; closed-loop shape control with gait.shape_guard)",
+     "bodies/curvature_calibration.py plant_response; closed-loop shape control with gait.shape_guard; not "
+     "identified for a run shorter than half a gait period, harness/calibration.py uses_the_plant)",
      "bending gaits"),
     ("shape_plant_lag_deg", "deg", "median over the interior segments of the open loop's curvature lag behind the "
      "commanded wave, from the same identification", "bending gaits"),
