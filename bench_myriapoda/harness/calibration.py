@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
-from ..bodies.curvature_calibration import lateral_gain, plant_response
+from ..bodies.curvature_calibration import lateral_gain, operating_plant, plant_response
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
 
@@ -40,6 +40,9 @@ def calibrated_body_info(body, case, world) -> dict[str, Any]:
         info["shape_harmonic_gain_per_cycle"] = float(spec.shape_harmonic_gain_per_cycle)
         if identifies_the_plant(case):
             info["plant_response"] = identified_plant(spec, case, info, world)
+            if derives_the_integral_gain(case):
+                info["operating_plant"] = identified_operating_plant(spec, case, info, world,
+                                                                     info["plant_response"])
     return info
 
 
@@ -55,14 +58,32 @@ def identifies_the_plant(case) -> bool:
     return closes_the_shape_loop(case) and bool(getattr(case.gait, "shape_guard", False))
 
 
+def derives_the_integral_gain(case) -> bool:
+    """True when the loop's fundamental integral gain comes from the measured plant at the loop's operating
+    amplitude (``gait.shape_gain_i_per_cycle`` < 0; ``controllers.shape_tracking.integral_gain_from_plant``)."""
+    return float(getattr(case.gait, "shape_gain_i_per_cycle", 0.0)) < 0.0
+
+
+def _open_loop(case, info):
+    """The calibrated open-loop controller of ``case``'s gait, reset for its body, and the wave it drives."""
+    open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
+    ctrl = registry.GAITS[case.gait.name].controller(open_case)
+    ctrl.reset(open_case, info)
+    return ctrl, ctrl.plant_wave(open_case)
+
+
 def identified_plant(spec, case, info, world) -> dict[str, Any]:
     """The open loop's measured response on the case's own ground (``bodies.curvature_calibration.plant_response``,
     cached): the calibrated open-loop controller of the same gait drives a body of the same case, in the
     run's ``world``."""
-    open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
-    ctrl = registry.GAITS[case.gait.name].controller(open_case)
-    ctrl.reset(open_case, info)
-    wave = ctrl.plant_wave(open_case)
+    ctrl, wave = _open_loop(case, info)
     return plant_response(lambda c: spec.factory(c, world), case, ctrl.fill, wave)
+
+
+def identified_operating_plant(spec, case, info, world, base) -> dict[str, Any]:
+    """The plant at the loop's operating amplitude (``bodies.curvature_calibration.operating_plant``, cached), from
+    ``base``, the feed-forward's identification (``identified_plant``)."""
+    ctrl, wave = _open_loop(case, info)
+    return operating_plant(lambda c: spec.factory(c, world), case, ctrl.fill, wave, base)
 
 
