@@ -176,15 +176,18 @@ PLANT_FIT_CYCLES = 1.0       # periods fitted
 PLANT_SAMPLES_PER_CYCLE = 40
 
 
-def plant_key(case) -> str:
+def plant_key(case, scale: float = 1.0) -> str:
     """sha256 over everything that changes the open loop's response: the body, the creature, the world (scenario,
-    friction), the gait's wave (not its shape-control gains), the time step and the calibrated gain's own key."""
+    friction), the gait's wave (not its shape-control gains), the time step and the calibrated gain's own key; and
+    the command's scale over the feed-forward when it is not 1 (``operating_plant``)."""
     g = case.gait
     wave = {k: v for k, v in dataclasses.asdict(g).items() if not k.startswith(("shape_", "max_muscle"))}
     data = {"format": PLANT_FORMAT, "gain": calibration_key(case), "body": dataclasses.asdict(case.body),
             "creature": dataclasses.asdict(case.creature), "scenario": dataclasses.asdict(case.scenario),
             "friction": dataclasses.asdict(case.friction), "gait": wave, "dt": case.dt, "seed": case.seed,
             "settle": PLANT_SETTLE_CYCLES, "fit": PLANT_FIT_CYCLES, "samples": PLANT_SAMPLES_PER_CYCLE}
+    if scale != 1.0:  # the feed-forward's own identification keeps the key it always had
+        data["scale"] = float(scale)
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 
@@ -218,15 +221,24 @@ def wave_harmonic_content(s: np.ndarray, t: np.ndarray, kappa: np.ndarray, waven
     return float(np.sqrt(np.mean(power)) / abs(commanded))
 
 
-def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple) -> dict[str, Any]:
+def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple,
+                           scale: float = 1.0) -> dict[str, Any]:
     """Identify the open loop's response (the block comment above) on ``make_body(case)`` driven by
-    ``fill(t0, dt, n_rows, act)`` (the calibrated open loop's actuation).  wave: (wavenumber [rad/m], omega [rad/s],
-    phase [rad], commanded ground curvature coefficient [1/m], ramp [s]).  Returns {"s": (n,) [m], "gain": (n,)
-    |G|, "lag_deg": (n,) -arg G [deg], "harmonic_content": the open loop's harmonics 2 to 5 over the command [-]
-    (``wave_harmonic_content``), "status": "ok" or why not}."""
+    ``fill(t0, dt, n_rows, act)`` (the calibrated open loop's actuation) with its LATERAL strain times ``scale``
+    [-] (1: the feed-forward itself; ``operating_plant``), the response read against the scaled command.
+    wave: (wavenumber [rad/m], omega [rad/s], phase [rad], commanded ground curvature coefficient [1/m], ramp [s]).
+    Returns {"s": (n,) [m], "gain": (n,) |G|, "lag_deg": (n,) -arg G [deg], "harmonic_content": the open loop's
+    harmonics 2 to 5 over the command [-] (``wave_harmonic_content``), "status": "ok" or why not}."""
     from ..kinematics.centre_lines import ground_curvature  # noqa: PLC0415 (the metrics' own curvature)
 
     k, om, ph, kappa_cmd, ramp = wave
+    kappa_cmd = kappa_cmd * scale
+    if scale != 1.0:
+        feed_forward = fill
+
+        def fill(t0, dt_, n_rows, act_):  # noqa: E306 (the feed-forward's LATERAL strain, scaled)
+            feed_forward(t0, dt_, n_rows, act_)
+            act_.muscle[:n_rows, :, LATERAL] *= scale
     body = make_body(case)
     body.compile()
     dt = case.dt
@@ -264,9 +276,10 @@ def measure_plant_response(make_body: Callable[[Any], Any], case, fill: Callable
 
 
 def plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple,
-                   cache: bool = True) -> dict[str, Any]:
-    """``measure_plant_response`` of ``case``, measured once and cached by ``plant_key``."""
-    path = calibration_cache_dir() / f"plant-{plant_key(case)}.json"
+                   cache: bool = True, scale: float = 1.0) -> dict[str, Any]:
+    """``measure_plant_response`` of ``case`` (at ``scale`` times the feed-forward), measured once and cached by
+    ``plant_key``."""
+    path = calibration_cache_dir() / f"plant-{plant_key(case, scale)}.json"
     if cache and path.exists():
         try:
             res = json.loads(path.read_text())
@@ -274,7 +287,126 @@ def plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: 
                 return res
         except (OSError, ValueError):
             pass  # a damaged entry is measured again
-    res = {**measure_plant_response(make_body, case, fill, wave), "format": PLANT_FORMAT, "body": case.body.name}
+    res = {**measure_plant_response(make_body, case, fill, wave, scale), "format": PLANT_FORMAT,
+           "body": case.body.name, "scale": float(scale)}
+    if cache:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(res))
+        os.replace(tmp, path)
+    return res
+
+
+# ----------------------------------------------------------------------------- the plant at the loop's own amplitude
+#
+# Under Coulomb friction the open loop's response does not grow in proportion to its command: a bend costs a friction
+# moment that does not grow with the bend, so the body hardly bends until the muscles' moment passes the friction's,
+# and then bends like the free body.  The closed loop commands whatever amplitude makes the body reach the command,
+# so its plant is the body's response at THAT amplitude (a describing function): the amplitude s* times the
+# feed-forward at which the open loop reaches the command, s* |G(s*)| = 1, G(s) the response to s times the
+# feed-forward read against the scaled command (``measure_plant_response``'s ``scale``).  Measured on the lattice's
+# slithering grid (docs/explanation/shape-tracking.md, "How the gains are derived"): at mu_t / mu_f = 3, 5 and 10
+# |G| is 0.58, 0.20 and 0.03 at s = 1 and 0.91, 0.86 and 0.82 at s = 2 (lags 12-13 degrees), so s* lies between 1
+# and 2 there, where |G| changes fourfold to thirtyfold; beyond, |G| is near 1 (0.98-1.05 at s = 4 and 8).
+#
+# ``operating_plant`` finds s* in [OPERATING_S_MIN, OPERATING_S_MAX] from the feed-forward's identification
+# (s = 1, already measured for the margin and the guard) and at most OPERATING_MAX_RUNS more, each a whole
+# identification run (the ramp and two periods): none where the feed-forward already reaches the command within
+# OPERATING_TOL (or overshoots it: s* = 1, the bound), else s = OPERATING_FIRST_S, doubled until the response passes
+# the command (a bracket), then one secant step inside the bracket.  s* is the secant's root of y(s) = s |G(s)| - 1
+# on the last bracket; there |G(s*)| = 1 / s* by definition, and the lag is interpolated linearly in s between the
+# bracket's ends (or read at a run whose y is within OPERATING_TOL of 1).  Cached by the case's plant key.
+
+OPERATING_FORMAT = "operating-plant-v1"
+OPERATING_S_MIN = 1.0
+OPERATING_S_MAX = 8.0
+OPERATING_FIRST_S = 2.0   # past the friction's threshold at mu_t / mu_f 3 to 10 on the lattice's grid (above)
+OPERATING_TOL = 0.1       # |s |G(s)| - 1| within which s is taken as the operating amplitude
+OPERATING_MAX_RUNS = 1    # identification runs beyond the feed-forward's (test time: issue 41, see the docs)
+
+
+def _median_response(res: dict[str, Any]) -> tuple[float, float] | None:
+    """(median |G|, median lag [deg]) of an identification, or None when it is not ok."""
+    if not res or res.get("status") != "ok" or not res.get("gain"):
+        return None
+    return float(np.median(res["gain"])), float(np.median(res["lag_deg"]))
+
+
+def operating_amplitude(points: list[tuple[float, float, float]]) -> tuple[float, float, float] | None:
+    """The operating amplitude from identified points (s [-], median |G(s)| [-], median lag [deg]), s ascending:
+    (s* [-], |G(s*)| [-], lag(s*) [deg]) where y(s) = s |G(s)| reaches 1 (the block comment above), or None when
+    the points do not reach the command (no bracket).  A point whose y is within ``OPERATING_TOL`` of 1 is taken as
+    it is; the first point already at or above 1 (within the tolerance or beyond) gives s* = that s; else the secant
+    of y between the last point below 1 and the first above it."""
+    prev = None
+    for s, g, lag in points:
+        y = s * g
+        if abs(y - 1.0) <= OPERATING_TOL:
+            return s, g, lag
+        if y > 1.0:
+            if prev is None:  # the first point overshoots the command: the bound
+                return s, g, lag
+            s0, g0, lag0 = prev
+            y0 = s0 * g0
+            s_star = s0 + (1.0 - y0) * (s - s0) / (y - y0)
+            w = (s_star - s0) / (s - s0)
+            return s_star, 1.0 / s_star, (1.0 - w) * lag0 + w * lag
+        prev = (s, g, lag)
+    return None
+
+
+def operating_key(case) -> str:
+    """sha256 of the case's plant key (the feed-forward's identification the search starts from) and the search's
+    own constants."""
+    data = {"format": OPERATING_FORMAT, "plant": plant_key(case), "s": [OPERATING_S_MIN, OPERATING_S_MAX,
+            OPERATING_FIRST_S], "tol": OPERATING_TOL, "runs": OPERATING_MAX_RUNS}
+    return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
+
+
+def measure_operating_plant(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple,
+                            base: dict[str, Any], cache: bool = True) -> dict[str, Any]:
+    """Find the operating amplitude (the block comment above) from ``base``, the feed-forward's identification
+    (``plant_response`` at scale 1), and at most ``OPERATING_MAX_RUNS`` more identifications (``plant_response`` at
+    s times the feed-forward, each cached).  Returns {"s_star": s* [-], "gain": |G(s*)| [-], "lag_deg": [deg],
+    "points": [[s, median |G|, median lag], ...] measured, "runs": identifications beyond the feed-forward's,
+    "status": "ok" or why not}."""
+    first = _median_response(base)
+    if first is None:
+        why = base.get("status", "none") if base else "none"
+        return {"status": f"the feed-forward's identification is not ok: {why}", "points": [], "runs": 0}
+    points = [(OPERATING_S_MIN, *first)]
+    runs, s = 0, OPERATING_FIRST_S
+    found = operating_amplitude(points)
+    while found is None and runs < OPERATING_MAX_RUNS and s <= OPERATING_S_MAX:
+        res = _median_response(plant_response(make_body, case, fill, wave, cache=cache, scale=s))
+        runs += 1
+        if res is None:
+            return {"status": f"the identification at {s:g} x the feed-forward is not ok", "points": points,
+                    "runs": runs}
+        points.append((s, *res))
+        found = operating_amplitude(points)
+        s *= 2.0
+    if found is None:
+        y = ", ".join(f"{p[0] * p[1]:.3f} at s = {p[0]:g}" for p in points)
+        return {"status": f"the open loop did not reach the command up to {points[-1][0]:g} x the feed-forward "
+                          f"(s |G(s)|: {y})", "points": points, "runs": runs}
+    s_star, g, lag = found
+    return {"s_star": s_star, "gain": g, "lag_deg": lag, "points": points, "runs": runs, "status": "ok"}
+
+
+def operating_plant(make_body: Callable[[Any], Any], case, fill: Callable, wave: tuple, base: dict[str, Any],
+                    cache: bool = True) -> dict[str, Any]:
+    """``measure_operating_plant`` of ``case``, cached by ``operating_key``."""
+    path = calibration_cache_dir() / f"operating-{operating_key(case)}.json"
+    if cache and path.exists():
+        try:
+            res = json.loads(path.read_text())
+            if res.get("format") == OPERATING_FORMAT:
+                return res
+        except (OSError, ValueError):
+            pass  # a damaged entry is measured again
+    res = {**measure_operating_plant(make_body, case, fill, wave, base, cache=cache), "format": OPERATING_FORMAT,
+           "body": case.body.name, "max_runs": OPERATING_MAX_RUNS}
     if cache:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")

@@ -107,9 +107,13 @@ class MuscleWaveConfig(GaitConfig):
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
                                   "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
                                   "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
-    shape_gain_i_per_cycle: float = rng(2.0, ge=0.0, le=100.0,
+    shape_gain_i_per_cycle: float = rng(2.0, ge=-1.0, le=100.0,
                                         doc="closed_loop: integral gain of the wave's amplitude and phase error per "
-                                            "gait cycle [-] (rate = this x frequency_hz)")
+                                            "gait cycle [-] (rate = this x frequency_hz); -1: from the body's plant "
+                                            "measured at the loop's operating amplitude (with shape_guard; 0.65 / "
+                                            "Re H per cycle, between 0.5 and 4), the constant 2 where that plant is "
+                                            "not found (the run's label shape_gains says which; not the default: "
+                                            "docs/explanation/shape-tracking.md, \"How the gains are derived\")")
     shape_harmonics: list = rng((3.0,), ge=2, le=15, check=_check_harmonics,
                                 doc="closed_loop: temporal harmonics h of the wave frequency whose error each segment also "
                                     "corrects, amplitude and phase, like the fundamental's, when the harmonic gain "
@@ -278,6 +282,11 @@ class MuscleWaveController:
     def metrics(self) -> dict[str, float]:
         """The closed loop's muscle figures (``shape_tracking.ShapeTracker.metrics``); none in open loop."""
         return self.tracker.metrics() if self.tracker is not None and self.tracker.ready else {}
+
+    def labels(self) -> dict[str, str]:
+        """The closed loop's labels (``shape_tracking.ShapeTracker.labels``: where its gains came from); none in
+        open loop."""
+        return self.tracker.labels() if self.tracker is not None and self.tracker.ready else {}
 
     def run_status(self) -> tuple[str, str] | None:
         """(status, message) when the closed loop had to be backed off (``shape_tracking.ShapeTracker.run_status``:

@@ -20,7 +20,9 @@ to a fifth of the command (issue 27).  This tracker closes the loop at ``rate_hz
 3. **correct**: u_i = r A_s sin(theta_i) + a_i sin(theta_i) + b_i cos(theta_i) + K_p e_i, with
    theta_i = k s_i - omega t + phi and A_s = A g the feed-forward (the open loop's own strain).
    (a_i, b_i) integrate the error's in-phase and quadrature components at the wave frequency,
-   da_i/dt = K_i 2 e_i sin(theta_i), db_i/dt = K_i 2 e_i cos(theta_i), K_i = gain per cycle x f:
+   da_i/dt = K_i 2 e_i sin(theta_i), db_i/dt = K_i 2 e_i cos(theta_i), K_i = gain per cycle x f (the gain per cycle
+   ``gait.shape_gain_i_per_cycle``, 2 by default; -1: from the body's plant measured at the loop's operating
+   amplitude, ``integral_gain_from_plant``):
    over a cycle they remove the error in the wave's amplitude and phase, segment by segment, which a
    plain integral of a sinusoidal error cannot (it averages to zero).  The error e_i is first smoothed
    along the body (``smooth_along_body``, ``SMOOTHING_PASSES`` binomial passes): the tracker corrects
@@ -261,7 +263,10 @@ class PlantMargin:
     or less at 35.7 s).  Scheduling the gains by the margin (the open loop where there is none) dropped the grid's
     cells at 5 and 10, and turning the fundamental's update by the median lag (a lead, as step 3b's) took the cells
     at 2 and 3 to shape errors of 0.12 and 0.19 (docs/explanation/shape-tracking.md, "The plant, identified").  The
-    guard (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away."""
+    guard (``LoopGuard``), which watches the closed loop itself, is what keeps the loop from running away.  The plant
+    at the loop's own operating amplitude is another (``bodies.curvature_calibration.operating_plant``): from it
+    ``integral_gain_from_plant`` sets the integral gain where ``gait.shape_gain_i_per_cycle = -1``; the margin here
+    is always that of the feed-forward's plant, at the gains the run used."""
 
     def __init__(self, gain, lag_deg, kp: float = 0.0, ki: float = 0.0, frequency_hz: float = 1.0,
                  smoothing: float = 1.0, harmonic_content: float = float("nan")):
@@ -291,6 +296,45 @@ class PlantMargin:
         convergence per gait cycle."""
         return {"shape_plant_gain": float(np.median(self.gain)), "shape_plant_lag_deg": float(np.median(self.lag_deg)),
                 "shape_loop_margin_deg": self.margin_deg, "shape_loop_rate_per_cycle": self.rate_per_cycle}
+
+
+# The fundamental's integral gain from the body's measured plant (``integral_gain_from_plant``;
+# ``gait.shape_gain_i_per_cycle = -1``).  INTEGRAL_RATE_PER_CYCLE is the convergence per gait cycle the gain is set
+# for: the isotropic snake's, the rate the constant 2 per cycle gave the lattice (K_p = 2) on the slithering grid at
+# mu_t / mu_f = 1, where the loop was built (shape_loop_rate_per_cycle 0.66: the free body's plant, G = 1, smoothed at
+# rho = 0.97, H = rho / (1 + 2 rho) = 0.33).  The gain is clamped to [INTEGRAL_GAIN_MIN_PER_CYCLE,
+# INTEGRAL_GAIN_MAX_PER_CYCLE]: a quarter and twice the constant (15.5 per cycle, from the plant at the
+# feed-forward's amplitude at mu_t / mu_f = 5, lost a cell of the grid).  Where the plant at the operating amplitude
+# is not found, the constant INTEGRAL_GAIN_FALLBACK_PER_CYCLE runs, and the run says so
+INTEGRAL_RATE_PER_CYCLE = 0.65
+INTEGRAL_GAIN_MIN_PER_CYCLE = 0.5
+INTEGRAL_GAIN_MAX_PER_CYCLE = 4.0
+INTEGRAL_GAIN_FALLBACK_PER_CYCLE = 2.0
+
+
+def integral_gain_from_plant(operating, kp: float, smoothing: float) -> tuple[float | None, str]:
+    """The fundamental's integral gain per gait cycle [-] from the plant at the loop's operating amplitude
+    (``bodies.curvature_calibration.operating_plant``: s* [-], |G(s*)| [-], its lag [deg]) at the proportional gain
+    kp [-] and the smoothing's response to the commanded wave [-]: K_i = INTEGRAL_RATE_PER_CYCLE / Re H,
+    H = rho G / (1 + K_p rho G) (``PlantMargin``: the integral's convergence per cycle is K_i Re H), clamped to
+    [INTEGRAL_GAIN_MIN_PER_CYCLE, INTEGRAL_GAIN_MAX_PER_CYCLE].  Returns (gain, where it came from), or (None, why
+    not) when the plant is not there or leaves the integral no convergence (Re H <= 0)."""
+    if not operating or operating.get("status") != "ok":
+        why = operating.get("status", "not identified") if operating else "not identified"
+        return None, f"the plant at the loop's operating amplitude was not found ({why})"
+    g = smoothing * float(operating["gain"]) * complex(math.cos(math.radians(float(operating["lag_deg"]))),
+                                                       -math.sin(math.radians(float(operating["lag_deg"]))))
+    h = g / (1.0 + kp * g)
+    if not h.real > 0.0:
+        return None, (f"the plant at the operating amplitude leaves the integral no convergence (Re H = {h.real:.3f} "
+                      f"at s* = {float(operating['s_star']):.2f})")
+    raw = INTEGRAL_RATE_PER_CYCLE / h.real
+    ki = min(INTEGRAL_GAIN_MAX_PER_CYCLE, max(INTEGRAL_GAIN_MIN_PER_CYCLE, raw))
+    clamp = "" if ki == raw else f", clamped from {raw:.2f}"
+    return ki, (f"K_i {ki:.3f} per cycle from the measured plant at the operating amplitude s* = "
+                f"{float(operating['s_star']):.3f} x the feed-forward (|G| {float(operating['gain']):.3f}, lag "
+                f"{float(operating['lag_deg']):.1f} deg, Re H {h.real:.3f}, {int(operating.get('runs', 0))} "
+                f"identification run(s) beyond the feed-forward's){clamp}")
 
 
 def smoothing_response(pitch_m: float, wavelength_m: float, passes: int = SMOOTHING_PASSES) -> float:
@@ -644,7 +688,12 @@ class ShapeTracker:
         g = case.gait
         self.kp_key = float(g.shape_gain_p)  # < 0: the body's own (``BodySpec.shape_gain_p``), set in ``reset``
         self.kp = max(self.kp_key, 0.0)
-        self.ki = float(g.shape_gain_i_per_cycle) * float(g.frequency_hz)
+        # < 0: from the measured plant at the operating amplitude (``integral_gain_from_plant``), set in ``reset``
+        self.ki_key = float(g.shape_gain_i_per_cycle)
+        self.ki = max(self.ki_key, 0.0) * float(g.frequency_hz)
+        self.ki_per_cycle = max(self.ki_key, 0.0)
+        self.ki_from_plant = False
+        self.ki_source = "gait.shape_gain_i_per_cycle"
         self.umax = float(g.max_muscle_strain)
         self.ramp_s = float(g.ramp_s)
         self.dt_tick = 1.0 / float(g.shape_control_rate_hz)
@@ -670,12 +719,30 @@ class ShapeTracker:
         lead = np.full(self.harmonics.shape[0], self.lead_rad)
         self.lead_cos, self.lead_sin = np.cos(lead), np.sin(lead)
 
+    def _set_integral_gain(self, operating) -> None:
+        """The fundamental's integral gain: the key's (>= 0), else from the measured plant at the loop's operating
+        amplitude (``integral_gain_from_plant``, at this run's K_p and smoothing), else, where that plant was not
+        found, ``INTEGRAL_GAIN_FALLBACK_PER_CYCLE``, and ``ki_source`` says why."""
+        self.operating = operating if operating and operating.get("status") == "ok" else None
+        if self.ki_key >= 0.0:
+            per_cycle, self.ki_from_plant, self.ki_source = self.ki_key, False, "gait.shape_gain_i_per_cycle"
+        else:
+            per_cycle, why = integral_gain_from_plant(operating, self.kp, self.wave_smoothing)
+            self.ki_from_plant = per_cycle is not None
+            if per_cycle is None:
+                per_cycle = INTEGRAL_GAIN_FALLBACK_PER_CYCLE
+                why = f"K_i {per_cycle:g} per cycle, the constant: {why}"
+            self.ki_source = why
+        self.ki_per_cycle = float(per_cycle)
+        self.ki = self.ki_per_cycle * self.frequency_hz
+
     def reset(self, body_info, strain_per_curvature: float) -> None:
         """Prepare for a body: its muscle arc positions, pitch and the calibrated gain [strain per curvature x L]."""
         self.s_muscle = np.ascontiguousarray(body_info["muscle_s"], dtype=np.float64)
         self.pitch = float(body_info["segment_pitch_m"])
         self.strain_per_kappa = LATERAL_GROUND_SIGN * strain_per_curvature * self.body_length
         self.kp = self.kp_key if self.kp_key >= 0.0 else float(body_info.get("shape_gain_p", 0.0))
+        self.kp_source = "gait.shape_gain_p" if self.kp_key >= 0.0 else "the body's (BodySpec.shape_gain_p)"
         self._set_harmonics(self.kh_key if self.kh_key >= 0.0
                             else float(body_info.get("shape_harmonic_gain_per_cycle", 0.0)))
         n = self.s_muscle.shape[0]
@@ -686,6 +753,7 @@ class ShapeTracker:
         pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
         self.wave_smoothing = smoothing_response(pitch_m, wavelength_m)
         self.muscles_per_wave = wavelength_m / pitch_m if pitch_m > 0.0 else math.inf
+        self._set_integral_gain(body_info.get("operating_plant"))
         self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
                                     self.wave_smoothing)
         self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,
@@ -777,6 +845,10 @@ class ShapeTracker:
             {"muscle_saturation_fraction": float(clipped / n), "muscle_strain_peak": float(peak)}
         if self.plant is not None:
             out.update(self.plant.metrics())
+        op = self.operating
+        out.update({"shape_gain_p_used": float(self.kp), "shape_gain_i_per_cycle_used": float(self.ki_per_cycle),
+                    "shape_gain_i_from_plant": 1.0 if self.ki_from_plant else 0.0,
+                    "shape_operating_amplitude": float(op["s_star"]) if op is not None else float("nan")})
         if self.guard is not None:
             gd = self.guard
             out.update({"shape_control_backoffs": float(gd.backoffs),
@@ -784,6 +856,12 @@ class ShapeTracker:
                         "shape_control_open_loop_trim": float(gd.trim_min),
                         "shape_control_backoff_s": gd.times[0] if gd.times else float("nan")})
         return out
+
+    def labels(self) -> dict[str, str]:
+        """{"shape_gains": where the loop's gains came from} (the run's labels: JSON, store)."""
+        ki = f"K_i {self.ki_per_cycle:g} per cycle from gait.shape_gain_i_per_cycle" if self.ki_key >= 0.0 \
+            else self.ki_source
+        return {"shape_gains": f"K_p {self.kp:g} from {self.kp_source}; {ki}"}
 
     def run_status(self) -> tuple[str, str] | None:
         """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
-from ..bodies.curvature_calibration import lateral_gain, plant_response
+from ..bodies.curvature_calibration import lateral_gain, operating_plant, plant_response
 from ..core import registry
 from ..core.protocols import MUSCLES, body_info
 
@@ -42,11 +42,15 @@ def calibrated_body_info(body, case, world) -> dict[str, Any]:
             info["plant_response"] = (identified_plant(spec, case, info, world) if uses_the_plant(case)
                                       else {"status": f"not identified: the run ({case.duration:g} s) is shorter "
                                                       f"than half a gait period ({case.gait.period_s:g} s)"})
+            if derives_the_integral_gain(case):
+                info["operating_plant"] = identified_operating_plant(spec, case, info, world,
+                                                                     info["plant_response"])
     return info
 
 
 def uses_the_plant(case) -> bool:
-    """True when the closed loop's run may use the identified plant: half a gait period or longer.
+    """True when the closed loop's run may use the identified plant: half a gait period or longer, or any run whose
+    integral gain derives from it (``derives_the_integral_gain``: the gain acts from the first tick).
 
     The plant is the guard's (``LoopGuard.set_open_loop_harmonics``: its waveform test, which first checks once a
     whole period of the bend is in its ring) and the metrics' (``PlantMargin``).  Its identification drives the body
@@ -56,7 +60,7 @@ def uses_the_plant(case) -> bool:
     period of control ticks first); half a period keeps clear of a last tick's rounding.  So leaving the plant out
     of a shorter run changes nothing of its motion (``tests/test_shape_tracking_guard.py`` checks it bit for bit);
     it only reports no plant metrics."""
-    return case.duration >= 0.5 * case.gait.period_s
+    return derives_the_integral_gain(case) or case.duration >= 0.5 * case.gait.period_s
 
 
 def closes_the_shape_loop(case) -> bool:
@@ -71,14 +75,32 @@ def identifies_the_plant(case) -> bool:
     return closes_the_shape_loop(case) and bool(getattr(case.gait, "shape_guard", False))
 
 
+def derives_the_integral_gain(case) -> bool:
+    """True when the loop's fundamental integral gain comes from the measured plant at the loop's operating
+    amplitude (``gait.shape_gain_i_per_cycle`` < 0; ``controllers.shape_tracking.integral_gain_from_plant``)."""
+    return float(getattr(case.gait, "shape_gain_i_per_cycle", 0.0)) < 0.0
+
+
+def _open_loop(case, info):
+    """The calibrated open-loop controller of ``case``'s gait, reset for its body, and the wave it drives."""
+    open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
+    ctrl = registry.GAITS[case.gait.name].controller(open_case)
+    ctrl.reset(open_case, info)
+    return ctrl, ctrl.plant_wave(open_case)
+
+
 def identified_plant(spec, case, info, world) -> dict[str, Any]:
     """The open loop's measured response on the case's own ground (``bodies.curvature_calibration.plant_response``,
     cached): the calibrated open-loop controller of the same gait drives a body of the same case, in the
     run's ``world``."""
-    open_case = dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop"))
-    ctrl = registry.GAITS[case.gait.name].controller(open_case)
-    ctrl.reset(open_case, info)
-    wave = ctrl.plant_wave(open_case)
+    ctrl, wave = _open_loop(case, info)
     return plant_response(lambda c: spec.factory(c, world), case, ctrl.fill, wave)
+
+
+def identified_operating_plant(spec, case, info, world, base) -> dict[str, Any]:
+    """The plant at the loop's operating amplitude (``bodies.curvature_calibration.operating_plant``, cached), from
+    ``base``, the feed-forward's identification (``identified_plant``)."""
+    ctrl, wave = _open_loop(case, info)
+    return operating_plant(lambda c: spec.factory(c, world), case, ctrl.fill, wave, base)
 
 

@@ -368,6 +368,9 @@ def run_case(case: Case, progress: Callable[[float], None] | None = None, keep_n
         elif verdict is not None:  # a blow-up stays ``unstable`` (the body's); what the controller did is said too
             message = f"{message}; {verdict[1]}"
         extra = {}
+        controller_labels = getattr(creature.controller, "labels", None)  # e.g. where the shape loop's gains came from
+        if callable(controller_labels) and controller_labels():
+            extra.setdefault("labels", {}).update(controller_labels())
         if monitor is not None:
             metrics.update(monitor.metrics())
             extra.update(monitor.extra())

@@ -207,6 +207,19 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("shape_loop_rate_per_cycle", "-", "the same integral's convergence per gait cycle at the gains used: "
      "`gait.shape_gain_i_per_cycle` x Re H, the median over the segments (e-foldings of a linear plant's error per "
      "cycle; 0 or below: no convergence)", "bending gaits"),
+    ("shape_gain_p_used", "-", "the closed loop's proportional gain the run started with: `gait.shape_gain_p`, or "
+     "the body's own (BodySpec.shape_gain_p) at -1 (closed-loop shape control only)", "bending gaits"),
+    ("shape_gain_i_per_cycle_used", "-", "the closed loop's amplitude-and-phase integral gain per gait cycle the run "
+     "started with: `gait.shape_gain_i_per_cycle`, or at -1 0.65 / Re H from the plant measured at the loop's "
+     "operating amplitude (between 0.5 and 4), or the constant 2 where that plant was not found "
+     "(docs/explanation/shape-tracking.md, \"How the gains are derived\")", "bending gaits"),
+    ("shape_gain_i_from_plant", "0/1", "1 when `shape_gain_i_per_cycle_used` came from the measured plant at the "
+     "loop's operating amplitude, 0 when from the key or the fallback constant (the run's label `shape_gains` says "
+     "which and why)", "bending gaits"),
+    ("shape_operating_amplitude", "-", "the loop's operating amplitude s*, over the feed-forward: where the "
+     "calibrated open loop commanding s* times the feed-forward reaches the commanded curvature, s* |G(s*)| = 1, "
+     "found in [1, 8] at calibration (bodies/curvature_calibration.py operating_plant); NaN when not found or not "
+     "sought", "bending gaits"),
     ("tail_swing_ratio", "-", "RMS lateral excursion of the tail over that of the mid-body (median over the middle "
      "third of the centres) over the steady window, each across the mean body axis less a line fitted in time: 1 for a kinematic snake whose every point "
      "follows the head's path, above 1 for a tail that swishes wider (Miller Sec. 4)", "bending gaits"),
