@@ -140,21 +140,39 @@ def measure_lateral_gain(factory: Callable[[Any, Any], Any], case, world) -> dic
     return {"strain_per_curvature": CAL_STRAIN / (kappa * L), "curvature_m": kappa, "t_rest_s": t}
 
 
+def _read_cached(path: Path, fmt: int | None = None) -> dict[str, Any] | None:
+    """The JSON entry at ``path`` (with ``"format"`` equal to ``fmt`` when given), or None: missing, damaged or of
+    another format (then measured again)."""
+    if not path.exists():
+        return None
+    try:
+        res = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return None
+    return res if isinstance(res, dict) and (fmt is None or res.get("format") == fmt) else None
+
+
+def _write_cached(path: Path, res: dict[str, Any]) -> None:
+    """Write ``res`` to ``path`` atomically: a concurrent reader never sees half a file."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
+    tmp.write_text(json.dumps(res))
+    os.replace(tmp, path)
+
+
 def lateral_gain(factory: Callable[[Any, Any], Any], case, world, cache: bool = True) -> float:
     """Strain per unit of (curvature x body length) of ``case``'s body, measured once and cached
     (``factory``, ``world``: as ``measure_lateral_gain``)."""
     path = calibration_cache_dir() / f"{calibration_key(case)}.json"
-    if cache and path.exists():
+    held = _read_cached(path) if cache else None
+    if held is not None:
         try:
-            return float(json.loads(path.read_text())["strain_per_curvature"])
-        except (OSError, ValueError, KeyError):
+            return float(held["strain_per_curvature"])
+        except (KeyError, TypeError, ValueError):
             pass  # a damaged entry is measured again
     res = measure_lateral_gain(factory, case, world)
     if cache:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
-        tmp.write_text(json.dumps({**res, "body": case.body.name}))
-        os.replace(tmp, path)  # atomic: a concurrent reader never sees half a file
+        _write_cached(path, {**res, "body": case.body.name})
     return float(res["strain_per_curvature"])
 
 
@@ -280,20 +298,13 @@ def plant_response(make_body: Callable[[Any], Any], case, fill: Callable, wave: 
     """``measure_plant_response`` of ``case`` (at ``scale`` times the feed-forward), measured once and cached by
     ``plant_key``."""
     path = calibration_cache_dir() / f"plant-{plant_key(case, scale)}.json"
-    if cache and path.exists():
-        try:
-            res = json.loads(path.read_text())
-            if res.get("format") == PLANT_FORMAT:
-                return res
-        except (OSError, ValueError):
-            pass  # a damaged entry is measured again
+    held = _read_cached(path, PLANT_FORMAT) if cache else None
+    if held is not None:
+        return held
     res = {**measure_plant_response(make_body, case, fill, wave, scale), "format": PLANT_FORMAT,
            "body": case.body.name, "scale": float(scale)}
     if cache:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
-        tmp.write_text(json.dumps(res))
-        os.replace(tmp, path)
+        _write_cached(path, res)
     return res
 
 
@@ -398,18 +409,11 @@ def operating_plant(make_body: Callable[[Any], Any], case, fill: Callable, wave:
                     cache: bool = True) -> dict[str, Any]:
     """``measure_operating_plant`` of ``case``, cached by ``operating_key``."""
     path = calibration_cache_dir() / f"operating-{operating_key(case)}.json"
-    if cache and path.exists():
-        try:
-            res = json.loads(path.read_text())
-            if res.get("format") == OPERATING_FORMAT:
-                return res
-        except (OSError, ValueError):
-            pass  # a damaged entry is measured again
+    held = _read_cached(path, OPERATING_FORMAT) if cache else None
+    if held is not None:
+        return held
     res = {**measure_operating_plant(make_body, case, fill, wave, base, cache=cache), "format": OPERATING_FORMAT,
            "body": case.body.name, "max_runs": OPERATING_MAX_RUNS}
     if cache:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(f"{path.stem}.{os.getpid()}.tmp")
-        tmp.write_text(json.dumps(res))
-        os.replace(tmp, path)
+        _write_cached(path, res)
     return res
