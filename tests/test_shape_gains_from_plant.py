@@ -134,3 +134,75 @@ def test_without_the_plant_the_gain_is_the_constant_and_the_run_says_so():
     assert "the constant" in label and "not found" in label
     keyed = Creature(_grid(5.0, "gait.shape_gain_i_per_cycle=1.5", "gait.shape_guard=false")).controller.tracker
     assert keyed.ki_per_cycle == 1.5 and not keyed.ki_from_plant
+
+
+# ---- the default: deadbeat on the feed-forward's measured plant (gait.shape_gain_i_per_cycle = -2) ----
+
+def _tracker_on(body: str, response, kp: float):
+    """A closed-loop tracker of the slithering grid's snake at the default integral key, reset on a body whose
+    feed-forward's identified response is ``response`` (per-segment gain and lag; None: not identified) and whose
+    own proportional gain is ``kp``; no body is built or run."""
+    import numpy as np
+
+    from bench_myriapoda.controllers.shape_tracking import ShapeTracker
+
+    case = resolve_case("snake", body, "flat", "lateral-undulation", duration=43.0,
+                        overrides=[*GRID, f"friction.mu_transverse={3 * MU_F}"])
+    tracker = ShapeTracker(case)
+    info = {"muscle_s": np.linspace(0.025, 2.475, 50), "segment_pitch_m": 0.05, "shape_gain_p": kp,
+            "shape_harmonic_gain_per_cycle": 1.0}
+    if response is not None:
+        info["plant_response"] = response
+    tracker.reset(info, 0.01)
+    return tracker
+
+
+def _response(gain: float, lag_deg: float) -> dict:
+    return {"status": "ok", "gain": [gain] * 5, "lag_deg": [lag_deg] * 5}
+
+
+def test_the_default_integral_gain_is_deadbeat_on_the_bodys_measured_plant():
+    """The key's default is -2: K_i = 1 / Re H per cycle (``DEADBEAT_RATE_PER_CYCLE``), H = rho G / (1 + K_p rho G),
+    on the feed-forward's identified response where it reaches the command within 10 %.  Two grounds whose measured
+    plants differ give two gains, in the ratio of their Re H (a constant would give one); a body's own K_p moves the
+    gain as H says (2 on the lattice, 0.5 on the fem body, 0.25 on the hybrid); a feed-forward held short by
+    friction, or no identification, runs on the free body's G = 1, and the run's metric and label say so."""
+    from bench_myriapoda.controllers.shape_tracking import DEADBEAT_RATE_PER_CYCLE, deadbeat_integral_gain
+
+    assert resolve_case("snake", "fem", "flat", "lateral-undulation").gait.shape_gain_i_per_cycle == -2.0
+    firm, loose = _tracker_on("fem", _response(0.99, -3.0), 0.5), _tracker_on("fem", _response(0.90, -20.0), 0.5)
+    rho = firm.wave_smoothing
+    for t, (g, lag) in ((firm, (0.99, -3.0)), (loose, (0.90, -20.0))):
+        assert t.ki_from_plant and "measured plant" in t.labels()["shape_gains"]
+        assert t.ki_per_cycle == pytest.approx(DEADBEAT_RATE_PER_CYCLE / _re_h(g, lag, 0.5, rho))
+        assert t.metrics()["shape_gain_i_from_plant"] == 1.0
+        assert t.metrics()["shape_loop_rate_per_cycle"] == pytest.approx(DEADBEAT_RATE_PER_CYCLE)
+    assert loose.ki_per_cycle / firm.ki_per_cycle == pytest.approx(_re_h(0.99, -3.0, 0.5, rho)
+                                                                   / _re_h(0.90, -20.0, 0.5, rho))
+    assert loose.ki_per_cycle > 1.05 * firm.ki_per_cycle
+    by_body = {kp: _tracker_on(body, _response(0.97, -8.0), kp).ki_per_cycle
+               for body, kp in (("massspring", 2.0), ("fem", 0.5), ("hybrid", 0.25))}
+    assert by_body[2.0] > 1.8 * by_body[0.5] and by_body[0.5] > 1.1 * by_body[0.25]
+    short = _tracker_on("massspring", _response(0.2, -28.0), 2.0)
+    assert not short.ki_from_plant and "free body" in short.labels()["shape_gains"]
+    assert short.ki_per_cycle == pytest.approx(DEADBEAT_RATE_PER_CYCLE / _re_h(1.0, 0.0, 2.0, rho))
+    assert _tracker_on("massspring", None, 2.0).ki_per_cycle == short.ki_per_cycle
+    assert deadbeat_integral_gain(_response(0.99, -3.0), 0.5, rho)[0] == firm.ki_per_cycle
+    keyed = Creature(_grid(5.0, "gait.shape_gain_i_per_cycle=2")).controller.tracker
+    assert keyed.ki_per_cycle == 2.0 and not keyed.ki_from_plant
+
+
+def test_the_default_lattice_snake_of_the_grid_takes_its_integral_gain_from_its_identified_plant():
+    """The lattice snake of the slithering grid at mu_t / mu_f = 1 (43 s: the plant is identified, as for every
+    closed-loop run of half a period or more; the body is built, not run): its feed-forward reaches the command, and
+    the default K_i is deadbeat on that identified plant, with no identification beyond it."""
+    import numpy as np
+
+    from bench_myriapoda.controllers.shape_tracking import DEADBEAT_RATE_PER_CYCLE
+
+    tracker = Creature(_grid(1.0, duration=43.0)).controller.tracker
+    assert tracker.operating is None and tracker.plant is not None
+    g, lag = float(np.median(tracker.plant.gain)), float(np.median(tracker.plant.lag_deg))
+    assert g >= 1.0 - cc.OPERATING_TOL and tracker.ki_from_plant, tracker.ki_source
+    assert tracker.ki_per_cycle == pytest.approx(DEADBEAT_RATE_PER_CYCLE / _re_h(g, lag, tracker.kp,
+                                                                                  tracker.wave_smoothing))
