@@ -107,16 +107,12 @@ class MuscleWaveConfig(GaitConfig):
                               doc="closed_loop: proportional gain, strain correction per unit of strain-equivalent "
                                   "curvature error [-]; -1 (default): the body model's own (BodySpec.shape_gain_p: "
                                   "2 on massspring, 0.5 on fem, 0.25 on hybrid)")
-    shape_gain_i_per_cycle: float = rng(-2.0, ge=-2.0, le=100.0,
+    shape_gain_i_per_cycle: float = rng(2.0, ge=-1.0, le=100.0,
                                         doc="closed_loop: integral gain of the wave's amplitude and phase error per "
-                                            "gait cycle [-] (rate = this x frequency_hz); -2 (default): deadbeat on "
-                                            "the body's plant, 1 / Re H per cycle (H = rho G / (1 + K_p rho G), "
-                                            "between 0.5 and 4), G the feed-forward's measured response where it "
-                                            "reaches the command within 10 %, else the free body's G = 1; -1: 0.65 "
-                                            "/ Re H from the plant measured at the loop's operating amplitude (with "
-                                            "shape_guard; one more identification where the feed-forward falls "
-                                            "short), the constant 2 where that plant is not found; a number >= 0: "
-                                            "that constant (the run's label shape_gains says which: "
+                                            "gait cycle [-] (rate = this x frequency_hz); -1: from the body's plant "
+                                            "measured at the loop's operating amplitude (with shape_guard; 0.65 / "
+                                            "Re H per cycle, between 0.5 and 4), the constant 2 where that plant is "
+                                            "not found (the run's label shape_gains says which; not the default: "
                                             "docs/explanation/shape-tracking.md, \"How the gains are derived\")")
     shape_harmonics: list = rng((3.0,), ge=2, le=15, check=_check_harmonics,
                                 doc="closed_loop: temporal harmonics h of the wave frequency whose error each segment also "

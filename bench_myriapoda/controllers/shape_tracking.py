@@ -62,7 +62,6 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ..bodies.curvature_calibration import OPERATING_TOL
 from ..core.kernel_records import plain
 from ..core.protocols import LATERAL_GROUND_SIGN
 from ..kinematics.centre_lines import ground_bend
@@ -336,49 +335,6 @@ def integral_gain_from_plant(operating, kp: float, smoothing: float) -> tuple[fl
                 f"{float(operating['s_star']):.3f} x the feed-forward (|G| {float(operating['gain']):.3f}, lag "
                 f"{float(operating['lag_deg']):.1f} deg, Re H {h.real:.3f}, {int(operating.get('runs', 0))} "
                 f"identification run(s) beyond the feed-forward's){clamp}")
-
-
-# The default integral gain (``gait.shape_gain_i_per_cycle = -2``; ``deadbeat_integral_gain``): the loop's own
-# per-cycle model.  Seen a cycle at a time, the amplitude-and-phase correction X follows X_{n+1} = (1 - K_i H) X_n
-# (``PlantMargin``: H = rho G / (1 + K_p rho G), K_i per cycle); K_i Re H = DEADBEAT_RATE_PER_CYCLE = 1 removes the
-# error in one cycle (deadbeat) and is the fastest gain that does not overshoot in that model.  G is the plant the
-# loop runs on: the feed-forward's identification (s = 1, which every closed-loop run of half a period or more makes
-# for the guard) where the feed-forward reaches the command within ``OPERATING_TOL`` (there it is the operating
-# plant, s* = 1), else the free body's, G = 1: a feed-forward held short by Coulomb friction bends, once the loop has
-# passed the friction's threshold, like the free body (on the lattice's slithering grid s |G(s)| grew by 1.09 to
-# 1.14 per unit of s from s = 2 to 8 at mu_t / mu_f 3 to 10, lags 2 to 13 degrees; Re H at the operating amplitude
-# s* was within 17 % of the free body's on all 14 identified cells of the three bodies).  No identification beyond
-# the feed-forward's.  Clamped like ``integral_gain_from_plant``.
-DEADBEAT_RATE_PER_CYCLE = 1.0
-
-
-def deadbeat_integral_gain(response, kp: float, smoothing: float) -> tuple[float, bool, str]:
-    """The fundamental's integral gain per gait cycle [-] for the default (the block comment above): K_i =
-    DEADBEAT_RATE_PER_CYCLE / Re H, H = rho G / (1 + K_p rho G) at the proportional gain kp [-] and the smoothing's
-    response to the commanded wave rho [-], G the feed-forward's identified response ``response``
-    (``body_info["plant_response"]``: per-segment gain and lag [deg], their medians) where it reaches the command
-    within ``OPERATING_TOL``, else the free body's G = 1.  Returns (gain, True when G is the measured response,
-    where G came from)."""
-    ok = bool(response) and response.get("status") == "ok" and bool(response.get("gain"))
-    if ok:
-        gain, lag = float(np.median(response["gain"])), float(np.median(response["lag_deg"]))
-    if ok and gain >= 1.0 - OPERATING_TOL:
-        g = smoothing * gain * complex(math.cos(math.radians(lag)), -math.sin(math.radians(lag)))
-        source = f"the feed-forward's measured plant (|G| {gain:.3f}, lag {lag:.1f} deg: it reaches the command)"
-        measured = True
-    else:
-        g = complex(smoothing, 0.0)
-        why = (f"the feed-forward reaches {gain:.2f} of the command (|G|, lag {lag:.1f} deg): friction holds it "
-               f"short, and past the friction's threshold the body bends like the free body") if ok else \
-            f"no plant identified ({response.get('status', 'none') if response else 'none'})"
-        source = f"the free body's plant G = 1 ({why})"
-        measured = False
-    h = g / (1.0 + kp * g)
-    raw = DEADBEAT_RATE_PER_CYCLE / h.real if h.real > 0.0 else INTEGRAL_GAIN_MAX_PER_CYCLE
-    ki = min(INTEGRAL_GAIN_MAX_PER_CYCLE, max(INTEGRAL_GAIN_MIN_PER_CYCLE, raw))
-    clamp = "" if ki == raw else f", clamped from {raw:.2f}"
-    return ki, measured, (f"K_i {ki:.3f} per cycle, deadbeat (K_i Re H = {DEADBEAT_RATE_PER_CYCLE:g}, Re H "
-                          f"{h.real:.3f}) on {source}{clamp}")
 
 
 def smoothing_response(pitch_m: float, wavelength_m: float, passes: int = SMOOTHING_PASSES) -> float:
@@ -776,17 +732,13 @@ class ShapeTracker:
         lead = np.full(self.harmonics.shape[0], self.lead_rad)
         self.lead_cos, self.lead_sin = np.cos(lead), np.sin(lead)
 
-    def _set_integral_gain(self, operating, response=None) -> None:
-        """The fundamental's integral gain: the key's (>= 0); at -2 (the default) deadbeat on the feed-forward's
-        measured plant ``response`` or the free body's (``deadbeat_integral_gain``); at -1 from the measured plant at
-        the loop's operating amplitude (``integral_gain_from_plant``, at this run's K_p and smoothing), else, where
-        that plant was not found, ``INTEGRAL_GAIN_FALLBACK_PER_CYCLE``; ``ki_source`` says which and why."""
+    def _set_integral_gain(self, operating) -> None:
+        """The fundamental's integral gain: the key's (>= 0), else from the measured plant at the loop's operating
+        amplitude (``integral_gain_from_plant``, at this run's K_p and smoothing), else, where that plant was not
+        found, ``INTEGRAL_GAIN_FALLBACK_PER_CYCLE``, and ``ki_source`` says why."""
         self.operating = operating if operating and operating.get("status") == "ok" else None
         if self.ki_key >= 0.0:
             per_cycle, self.ki_from_plant, self.ki_source = self.ki_key, False, "gait.shape_gain_i_per_cycle"
-        elif self.ki_key < -1.5:
-            per_cycle, self.ki_from_plant, self.ki_source = deadbeat_integral_gain(response, self.kp,
-                                                                                  self.wave_smoothing)
         else:
             per_cycle, why = integral_gain_from_plant(operating, self.kp, self.wave_smoothing)
             self.ki_from_plant = per_cycle is not None
@@ -814,7 +766,7 @@ class ShapeTracker:
         pitch_m = float(np.median(np.diff(self.s_muscle))) if n > 1 else self.pitch
         self.wave_smoothing = smoothing_response(pitch_m, wavelength_m)
         self.muscles_per_wave = wavelength_m / pitch_m if pitch_m > 0.0 else math.inf
-        self._set_integral_gain(body_info.get("operating_plant"), body_info.get("plant_response"))
+        self._set_integral_gain(body_info.get("operating_plant"))
         self.plant = PlantMargin.of(body_info.get("plant_response"), self.kp, self.ki, self.frequency_hz,
                                     self.wave_smoothing)
         self.gains = TrackGains(ramp_s=self.ramp_s, dt_tick=self.dt_tick, strain_per_kappa=self.strain_per_kappa,

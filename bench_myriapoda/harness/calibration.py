@@ -77,10 +77,8 @@ def identifies_the_plant(case) -> bool:
 
 def derives_the_integral_gain(case) -> bool:
     """True when the loop's fundamental integral gain comes from the measured plant at the loop's operating
-    amplitude (``gait.shape_gain_i_per_cycle`` = -1; ``controllers.shape_tracking.integral_gain_from_plant``).  The
-    default, -2, uses the feed-forward's identification the guard makes anyway, or the free body's plant where there is
-    none (``deadbeat_integral_gain``): it asks for no identification of its own."""
-    return -1.5 < float(getattr(case.gait, "shape_gain_i_per_cycle", 0.0)) < 0.0  # -1; the default -2 needs no more
+    amplitude (``gait.shape_gain_i_per_cycle`` < 0; ``controllers.shape_tracking.integral_gain_from_plant``)."""
+    return float(getattr(case.gait, "shape_gain_i_per_cycle", 0.0)) < 0.0
 
 
 def _open_loop(case, info):
