@@ -374,3 +374,38 @@ def test_a_run_shorter_than_half_a_period_identifies_no_plant_and_moves_as_if_it
     np.testing.assert_array_equal(short.series.segment_centers, identified.series.segment_centers)
     assert {k: v for k, v in short.metrics.items() if not k.startswith(("shape_plant", "shape_loop"))}.keys() \
         <= identified.metrics.keys()
+
+
+def test_a_back_off_the_loop_recovered_from_in_the_warm_up_is_named_in_the_ok_runs_message():
+    """A guard back-off in the warm-up that the loop recovers from before the steady window leaves the run ``ok`` (its
+    measured motion is the closed loop's), but at a fraction of its gains: the run's message says when, why, and that
+    it recovered before the window (``LoopGuard.recovered_in_warmup``).  A back-off whose open-loop period reaches
+    into the window is the window's: ``controller_unstable``."""
+    from bench_myriapoda.controllers.shape_tracking import (GUARD_STRENGTH_MARGIN, LoopGuard, ShapeTracker,
+                                                            TrackState)
+
+    period, dt, umax = 2.0, 1.0 / 250.0, 0.3
+    waves = np.zeros((3, 5))
+    waves[1, :4] = 0.05, 2 * np.pi / 1.25, 2 * np.pi / period, 0.0
+    s = np.linspace(0.05, 2.45, 30)
+    n = s.size
+
+    def tracker_backed_off_at(t_trip):
+        guard = LoopGuard(period, 2.0 * period, dt)
+        quiet = TrackState(a=np.zeros(n), b=np.zeros(n), lateral=np.full(n, 0.05), counts=np.zeros(3),
+                           err=np.zeros(n), tmp=np.zeros(n))
+        strained = quiet._replace(lateral=np.full(n, 0.5 * (1.0 + GUARD_STRENGTH_MARGIN) * umax))
+        assert not guard.watch(t_trip - dt, 0.0, waves, s, quiet, umax)
+        assert guard.watch(t_trip, 0.0, waves, s, strained, umax)  # a muscle beyond the strength margin
+        tracker = ShapeTracker(resolve_case("snake", "massspring", "flat", "lateral-undulation", duration=8.0))
+        tracker.guard, tracker.loop_off = guard, False
+        return tracker
+
+    early = tracker_backed_off_at(1.5)  # held off to 3.5 s, resumed before the window (from 4 s)
+    status, message = early.run_status()
+    assert status == "ok"
+    assert "backed off during the warm-up at t = 1.50 s (a muscle at" in message
+    assert "recovered before the steady window (from 4.00 s)" in message and "resumed at 3.50 s at 0.5" in message
+    late = tracker_backed_off_at(2.5)  # held off to 4.5 s: the window's first half second is the open loop's
+    status, message = late.run_status()
+    assert status == "controller_unstable" and "2.50 (a muscle at" in message

@@ -676,9 +676,22 @@ class LoopGuard:
         self.trim_min = min(self.trim_min, self.trim)
 
     def acted_in_window(self) -> bool:
-        """The guard backed off in the steady window (after ``metrics.warmup_cycles``), or ended in the open loop or
-        with the loop's integrals off: the loop measured is not the one commanded."""
-        return self.fallen_back or self.integral_off or any(tt >= self.t_steady for tt in self.times)
+        """The guard backed off in the steady window (after ``metrics.warmup_cycles``), held the loop off into it, or
+        ended in the open loop or with the loop's integrals off: the loop measured is not the one commanded."""
+        return (self.fallen_back or self.integral_off or any(tt >= self.t_steady for tt in self.times)
+                or self.hold_until > self.t_steady)
+
+    def recovered_in_warmup(self) -> str | None:
+        """What the guard did during the warm-up when the loop recovered before the steady window (it backed off, and
+        resumed before ``metrics.warmup_cycles`` were over: ``acted_in_window`` is False): when, why, and the gains it
+        resumed at; None when it never acted or acted in the window.  The run stays ``ok`` (the motion measured is
+        the closed loop's), and its message says so, because the loop it measured runs at a fraction of its gains."""
+        if not self.times or self.acted_in_window():
+            return None
+        when = ", ".join(f"{t:.2f} s ({why})" for t, why in zip(self.times, self.reasons))
+        return (f"the shape loop was backed off during the warm-up at t = {when} and recovered before the steady "
+                f"window (from {self.t_steady:.2f} s): it resumed at {self.hold_until:.2f} s at {self.scale:g} of its "
+                f"gains, which the measured window ran at")
 
 
 class ShapeTracker:
@@ -867,14 +880,21 @@ class ShapeTracker:
         """("controller_unstable", why) when the guard had to back the loop off in the measured window or for good
         (the open loop, or the integrals off): the motion measured there is the open loop's (or a lower gain's, or
         the proportional loop's), because the loop drove the shape away; ("ok", why) when the loop left a commanded
-        wave it cannot see to the calibrated open loop (``LOOP_MIN_SMOOTHING``); None otherwise."""
+        wave it cannot see to the calibrated open loop (``LOOP_MIN_SMOOTHING``), or when the guard backed the loop off
+        during the warm-up and it recovered before the steady window (``LoopGuard.recovered_in_warmup``: when, why,
+        and the gains it resumed at); None otherwise."""
         if self.loop_off:
             return ("ok", f"the shape loop left the commanded wave to the calibrated open loop: "
                           f"{self.muscles_per_wave:.1f} muscle segments a wave, which the loop's smoothing along the "
                           f"body passes at {self.wave_smoothing:.3f}, under {LOOP_MIN_SMOOTHING:g} (it cannot see "
                           f"that wave)")
         gd = self.guard
-        if gd is None or not gd.acted_in_window():
+        if gd is None:
+            return None
+        recovered = gd.recovered_in_warmup()
+        if recovered is not None:
+            return ("ok", recovered)
+        if not gd.acted_in_window():
             return None
         when = ", ".join(f"{t:.2f} ({why})" for t, why in zip(gd.times, gd.reasons))
         end = "stayed in the calibrated open loop" if gd.fallen_back else \
