@@ -6,7 +6,8 @@ their strength and ended ``ok``; the hybrid blew up.  ``controllers.shape_tracki
 to the calibrated open loop when the body bends 20 % beyond the command or most muscles are held at their
 strength, resumes at half the gains, and after two back-offs stays open loop; when the waveform's harmonic content
 grows past 0.15 and the open loop's own (``WaveformWatch``) it switches the loop's integrals off; when the loop drives
-a muscle beyond 0.85 of its strength (the hybrid's FEM links failed at 0.28 of 0.3) it backs off too.  A run where it
+a muscle beyond 0.85 of its strength (the hybrid's FEM links failed at 0.28 of 0.3) it backs off too (in the start
+ramp: to the open loop for good).  A run where it
 acted in the measured window, or that ended in the open loop or without its integrals, ends ``controller_unstable``.
 
 The property test runs the lattice over the key space a user can reach (wavelength 0.3-1.5 body lengths, curvature
@@ -57,12 +58,26 @@ def open_loop_of(case):
     return run_case(dataclasses.replace(case, gait=dataclasses.replace(case.gait, shape_control="open_loop")))
 
 
+def open_loop_at_strength_of(case):
+    """The same case in the calibrated open loop clipped at the muscles' strength (``gait.max_muscle_strain``): the
+    tracker at zero gains and without its guard, the command the guard falls back to.  ``open_loop_of``'s command is
+    not clipped: a commanded wave that needs more than the strength of itself saturates the muscles, and puts the
+    clipped wave's harmonics into the bend, in this open loop too, so that saturation and those harmonics are the
+    command's, not the controller's."""
+    gait = dataclasses.replace(case.gait, shape_gain_p=0.0, shape_gain_i_per_cycle=0.0,
+                               shape_harmonic_gain_per_cycle=0.0, shape_guard=False)
+    return run_case(dataclasses.replace(case, gait=gait))
+
+
 def check_no_runaway(r, commanded: float) -> None:
     """Issue 44's requirements on one run: it ended ``ok`` or ``controller_unstable`` (no blow-up); it tracks within
     10 % or is flagged with the reason; it did not bend 25 % beyond the command nor carry 20 % harmonics because of
-    the controller (beyond that only where the body does so in the calibrated open loop too: then no more than 10 %
-    beyond the open loop's amplitude and 0.05 beyond its harmonics); an ``ok`` run does not hold most muscles at
-    their strength."""
+    the controller (beyond that only where the body does so in the calibrated open loop too, unclipped or at the
+    muscles' strength: then no more than 10 % beyond the open loop's amplitude and 0.05 beyond its harmonics); an
+    ``ok`` run does not hold most muscles at their strength unless the calibrated open loop at that strength does
+    too (a commanded wave beyond the muscles' strength of itself: issue 44's long property test found the fem
+    snake at 0.3 BL, curvature 14, 1 Hz, 12 segments, whose wave the loop leaves to the open loop, clipped at 77 %
+    of its commands, harmonics 0.35, both the open loop's own at that strength)."""
     m = r.metrics
     what = (r.case.body.name, r.status, r.message, {k: m.get(k) for k in (
         "curvature_amplitude", "shape_tracking_error", "shape_harmonic_content", "muscle_saturation_fraction",
@@ -72,13 +87,26 @@ def check_no_runaway(r, commanded: float) -> None:
         assert m["shape_not_achieved"] == 1.0 and "shape_not_achieved" in r.message, what
     else:
         assert m["shape_not_achieved"] == 0.0, what
+    held = None  # the open loop at the muscles' strength, run only where needed
     if m["curvature_amplitude"] > OVERSHOOT_MAX * commanded or m["shape_harmonic_content"] > HARMONIC_MAX:
         own = open_loop_of(r.case).metrics  # only where needed: the body's own overshoot is not the controller's
         what += (("open loop", own["curvature_amplitude"], own["shape_harmonic_content"]),)
-        assert m["curvature_amplitude"] <= max(OVERSHOOT_MAX * commanded, 1.1 * own["curvature_amplitude"]), what
-        assert m["shape_harmonic_content"] <= max(HARMONIC_MAX, own["shape_harmonic_content"] + 0.05), what
+        amplitude, harmonics = own["curvature_amplitude"], own["shape_harmonic_content"]
+        if not (m["curvature_amplitude"] <= max(OVERSHOOT_MAX * commanded, 1.1 * amplitude)
+                and m["shape_harmonic_content"] <= max(HARMONIC_MAX, harmonics + 0.05)):
+            held = open_loop_at_strength_of(r.case).metrics
+            what += (("open loop at strength", held["curvature_amplitude"], held["shape_harmonic_content"],
+                      held["muscle_saturation_fraction"]),)
+            amplitude, harmonics = (max(amplitude, held["curvature_amplitude"]),
+                                    max(harmonics, held["shape_harmonic_content"]))
+        assert m["curvature_amplitude"] <= max(OVERSHOOT_MAX * commanded, 1.1 * amplitude), what
+        assert m["shape_harmonic_content"] <= max(HARMONIC_MAX, harmonics + 0.05), what
     if r.status == "ok":
-        assert not m["muscle_saturation_fraction"] > SATURATED_MOST, what
+        if m["muscle_saturation_fraction"] > SATURATED_MOST:
+            held = held or open_loop_at_strength_of(r.case).metrics
+            what += (("open loop at strength: saturation", held["muscle_saturation_fraction"]),)
+            assert held["muscle_saturation_fraction"] > SATURATED_MOST, what
+            assert m["muscle_saturation_fraction"] <= held["muscle_saturation_fraction"] + 0.05, what
     else:
         assert r.message.startswith("controller_unstable") and m["shape_control_backoffs"] >= 1, what
 
@@ -162,6 +190,35 @@ def test_the_lattice_counterexamples_of_the_key_space_track_or_are_flagged(wavel
                                                                           ratio, segments):
     case = key_space_case("massspring", wavelength, amplitude, frequency, model, ratio, segments)
     check_no_runaway(run_case(case), amplitude)
+
+
+def test_a_wave_beyond_the_muscles_strength_that_the_loop_leaves_to_the_open_loop_is_flagged_not_blamed():
+    """A counterexample of the fem and hybrid property test under BENCH_LONG_TESTS=1: the fem snake at 0.3 BL,
+    curvature 14, 1 Hz, Miller's friction at mu_t / mu_f 1, 12 segments.  Its wave (3.6 muscle segments) is left to
+    the calibrated open loop, whose command is beyond the muscles' strength at most ticks: the run is ``ok`` and
+    flagged with the saturation named, and the saturation and the harmonics are those of the open loop at that
+    strength (``check_no_runaway``), not the controller's."""
+    case = key_space_case("fem", 0.3, 14.0, 1.0, "miller", 1.0, 12)
+    r = run_case(case)
+    check_no_runaway(r, 14.0)
+    assert r.status == "ok" and r.metrics["shape_not_achieved"] == 1.0
+    assert "left the commanded wave to the calibrated open loop" in r.message and "muscle_saturation_fraction" in r.message
+
+
+def test_a_strength_trip_in_the_start_ramp_leaves_the_run_in_the_open_loop_for_good():
+    """A counterexample of the fem and hybrid property test under BENCH_LONG_TESTS=1: the hybrid snake at 1.5 BL,
+    curvature 14, 0.5 Hz, Coulomb friction at mu_t / mu_f 10, 50 segments.  Its loop winds the command past
+    ``GUARD_STRENGTH_MARGIN`` of the strength in the start ramp (0.91 s, ramp 1 s); resumed at half and a quarter of
+    its gains it did so again (3.99, 7.50 s), and the switching left harmonic content 0.78 in the measured window (the
+    open loop's: 0.17).  A strength trip in the ramp now puts the run in the calibrated open loop for good: one
+    back-off, no runaway."""
+    case = key_space_case("hybrid", 1.5, 14.0, 0.5, "coulomb", 10.0, 50)
+    r = run_case(case)
+    check_no_runaway(r, 14.0)
+    m = r.metrics
+    assert r.status == "controller_unstable" and "of its strength" in r.message, r.message
+    assert m["shape_control_backoffs"] == 1.0 and m["shape_control_backoff_s"] < case.gait.ramp_s, m
+    assert m["shape_control_gain_scale"] == 0.0 and "stayed in the calibrated open loop" in r.message, r.message
 
 
 def test_a_swing_the_loop_left_behind_is_trimmed_out_of_the_open_loop(monkeypatch):
