@@ -657,3 +657,46 @@ def test_an_interrupt_that_an_import_turns_into_an_import_error_still_ends_with_
     p = subprocess.run([sys.executable, "-c", code], cwd=fresh, capture_output=True, text=True, timeout=60)
     assert p.returncode == 130, p.stderr
     assert p.stderr.strip() == "bench-myriapoda: interrupted", p.stderr
+
+
+# An interrupt whose handler runs inside a finalizer is printed and ignored by Python ("Exception ignored in: <function
+# ZipFile.__del__ ...> KeyboardInterrupt"): a fresh-clone run of 6ab195c sent SIGTERM to a matrix while a ZipFile was
+# collected, and the matrix went on with its cases and ended with 0.  Played here: the command's work collects an
+# object whose finalizer receives the signal, then goes on for up to 30 s.
+INTERRUPTED_FINALIZER = """
+import os, signal, sys, time
+from bench_myriapoda.cli import program
+
+class Closes:
+    def __del__(self):
+        os.kill(os.getpid(), signal.{sig})
+        sum(range(100000))  # the handler runs here, inside the finalizer
+
+def command(name):
+    def run(args):
+        c = Closes()
+        del c
+        end = time.monotonic() + 30.0
+        while time.monotonic() < end:  # a command's work after the finalizer
+            sum(range(1000))
+        print("finished")
+        return 0
+    return run
+
+import bench_myriapoda.cli.commands as commands
+commands.command = command
+signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a terminal (a pytest-xdist worker ignores SIGINT)
+sys.exit(program.main(["list"]))
+"""
+
+
+@pytest.mark.parametrize("sig", ["SIGTERM", "SIGINT"])
+def test_an_interrupt_that_lands_in_a_finalizer_still_ends_the_command_with_130(sig, fresh):
+    """Python ignores an exception raised in a finalizer; the interrupt is delivered again, after it, so the command
+    stops (well before its 30 s of work) with 130 and one line, and no "Exception ignored" traceback."""
+    code = INTERRUPTED_FINALIZER.format(sig=sig)
+    start = time.monotonic()
+    p = subprocess.run([sys.executable, "-c", code], cwd=fresh, capture_output=True, text=True, timeout=90)
+    assert p.returncode == 130, p.stderr
+    assert p.stderr.strip() == "bench-myriapoda: interrupted" and "finished" not in p.stdout, p.stderr
+    assert time.monotonic() - start < 25.0

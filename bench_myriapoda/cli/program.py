@@ -36,6 +36,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             print_any_file_name()
             code = command(args.command)(args)
             sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at interpreter exit
+        if terminate.received:  # a SIGTERM whose KeyboardInterrupt something swallowed: still a terminated command
+            print("bench-myriapoda: interrupted", file=sys.stderr)
+            return EXIT_INTERRUPTED
         return code
     except BrokenPipeError:
         return closed_pipe()

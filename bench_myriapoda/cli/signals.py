@@ -3,6 +3,9 @@ from __future__ import annotations
 
 import os
 import signal
+import sys
+import threading
+import time
 
 
 class sigterm_as_interrupt:
@@ -25,7 +28,22 @@ class sigterm_as_interrupt:
             self.saved = signal.signal(signal.SIGTERM, self._raise)
         except ValueError:  # not the main thread: leave SIGTERM as it is
             self.saved = None
+        self.saved_hook = sys.unraisablehook
+        sys.unraisablehook = self._unraisable
         return self
+
+    def _unraisable(self, unraisable) -> None:
+        """An interrupt that landed in a finalizer (a ``__del__``, a weakref callback) is delivered again.  Python
+        prints and ignores an exception raised there, so the command went on as if no signal had come: a matrix
+        terminated while ``zipfile.ZipFile.__del__`` ran finished its cases and ended with 0, not 130.  The signal is
+        sent again from a thread a few milliseconds later (sent from here, its handler would raise inside this hook,
+        which Python ignores as well), to land in the code the finalizer interrupted; should it land in a finalizer
+        again, it comes back here."""
+        if isinstance(unraisable.exc_value, KeyboardInterrupt) and os.getpid() == self.pid:
+            sig = signal.SIGTERM if self.received else signal.SIGINT
+            threading.Thread(target=_send_later, args=(self.pid, sig), daemon=True).start()
+            return
+        self.saved_hook(unraisable)
 
     def _raise(self, signum, frame):
         if os.getpid() != self.pid:  # a forked child inherited the handler: end as SIGTERM ends it
@@ -38,4 +56,11 @@ class sigterm_as_interrupt:
     def __exit__(self, *exc):
         if self.saved is not None:
             signal.signal(signal.SIGTERM, self.saved)
+        sys.unraisablehook = self.saved_hook
         return False
+
+
+def _send_later(pid: int, sig: int, delay_s: float = 0.005) -> None:
+    """Send ``sig`` to ``pid`` after ``delay_s`` [s] (``sigterm_as_interrupt._unraisable``)."""
+    time.sleep(delay_s)
+    os.kill(pid, sig)
