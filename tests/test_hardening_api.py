@@ -700,3 +700,16 @@ def test_an_interrupt_that_lands_in_a_finalizer_still_ends_the_command_with_130(
     assert p.returncode == 130, p.stderr
     assert p.stderr.strip() == "bench-myriapoda: interrupted" and "finished" not in p.stdout, p.stderr
     assert time.monotonic() - start < 25.0
+
+
+def test_an_interrupt_sent_again_after_a_command_that_ended_at_once_lands_inside_main(fresh):
+    """The finalizer's command returns at once, before the signal is sent again (a few milliseconds later): it
+    still lands inside ``main`` (which waits for it before restoring the handlers), so main ends with 130 and its
+    caller goes on; delivered after, with SIGTERM's default handler back, it killed the caller (exit 143)."""
+    code = INTERRUPTED_FINALIZER.format(sig="SIGTERM").replace(
+        "end = time.monotonic() + 30.0", "end = time.monotonic()").replace(
+        'sys.exit(program.main(["list"]))',
+        'code = program.main(["list"])\ntime.sleep(0.2)\nprint("caller goes on", code)\nsys.exit(code)')
+    p = subprocess.run([sys.executable, "-c", code], cwd=fresh, capture_output=True, text=True, timeout=90)
+    assert p.returncode == 130, (p.returncode, p.stderr)
+    assert "caller goes on 130" in p.stdout and p.stderr.strip() == "bench-myriapoda: interrupted", p.stderr

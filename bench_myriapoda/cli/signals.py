@@ -30,6 +30,7 @@ class sigterm_as_interrupt:
             self.saved = None
         self.saved_hook = sys.unraisablehook
         sys.unraisablehook = self._unraisable
+        self.resending: list[threading.Thread] = []  # signals sent again (``_unraisable``), not yet delivered
         return self
 
     def _unraisable(self, unraisable) -> None:
@@ -41,7 +42,9 @@ class sigterm_as_interrupt:
         again, it comes back here."""
         if isinstance(unraisable.exc_value, KeyboardInterrupt) and os.getpid() == self.pid:
             sig = signal.SIGTERM if self.received else signal.SIGINT
-            threading.Thread(target=_send_later, args=(self.pid, sig), daemon=True).start()
+            resend = threading.Thread(target=_send_later, args=(self.pid, sig), daemon=True)
+            resend.start()
+            self.resending.append(resend)
             return
         self.saved_hook(unraisable)
 
@@ -54,9 +57,15 @@ class sigterm_as_interrupt:
         raise KeyboardInterrupt
 
     def __exit__(self, *exc):
-        if self.saved is not None:
-            signal.signal(signal.SIGTERM, self.saved)
-        sys.unraisablehook = self.saved_hook
+        try:
+            # a signal sent again lands here, inside the block, when the block ends before it comes (a command that
+            # returns within the few milliseconds): after the handlers are restored it would kill the process (-15)
+            for resend in self.resending:
+                resend.join(timeout=1.0)
+        finally:
+            if self.saved is not None:
+                signal.signal(signal.SIGTERM, self.saved)
+            sys.unraisablehook = self.saved_hook
         return False
 
 

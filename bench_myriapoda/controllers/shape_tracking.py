@@ -533,11 +533,11 @@ class LoopGuard:
     its reference is a fraction r of the wave needs at least 1 / r of it at the whole wave (more bend costs more
     moment, the friction's included), so no lower gain resumes under the margin.  Of the 21 runs of the tracking maps
     whose first strength trip fell in the ramp, none tracked after resuming (20 ended in the open loop after three
-    back-offs, one at half its gains with shape error 0.48).  On the hybrid at 1.5 BL, curvature 14, 0.5 Hz, Coulomb friction at mu_t / mu_f 10 and 50
-    segments the loop tripped in the ramp (0.91 s), and resumed at half and a quarter of its gains it tripped again
-    (3.99, 7.50 s); the switching left harmonic content 0.78 in the measured window (the open loop's: 0.17).  Trips
-    after the ramp resume as the other tests' (a loop creeping up to the margin over tens of seconds tracks at half
-    or a quarter of its gains: docs/explanation/shape-tracking-map.md).
+    back-offs, one at half its gains with shape error 0.48).  On the hybrid at 1.5 BL, curvature 14, 0.5 Hz, Coulomb
+    friction at mu_t / mu_f 10 and 50 segments the loop tripped in the ramp (0.91 s), and resumed at half and a
+    quarter of its gains it tripped again (3.99, 7.50 s); the switching left harmonic content 0.78 in the measured
+    window (the open loop's: 0.17).  Trips after the ramp resume as the other tests' (a loop creeping up to the
+    margin over tens of seconds tracks at half or a quarter of its gains: docs/explanation/shape-tracking-map.md).
 
     While it holds the loop off, the open loop's amplitude is trimmed (``trim``, ``GUARD_TRIM_PER_CYCLE``): a body
     whose swing the loop drove past the command can keep it after the loop lets go (under Miller's friction at a small
